@@ -1,0 +1,58 @@
+/* References for paper A: the uniformly heated granular gas (SPEC §3).
+ *
+ * dT/dt = 2 beta - gamma (1 - alpha^2)/24 ∫∫ B1(|g|) |g|^2 f f, with the
+ * particle mass m = 1 (paper A's units; callers refuse other masses).
+ */
+#ifndef GDSMC_REF_HEATED_H
+#define GDSMC_REF_HEATED_H
+
+#include <stddef.h>
+
+#include "ode.h"
+
+typedef struct ref_heated_params {
+    double alpha;   /* restitution, (0, 1] */
+    double beta;    /* white-noise heating, >= 0 */
+    double gamma;   /* collision rate factor, > 0 */
+    double C;       /* kernel constant: C0 (Maxwell) or C1 (hard spheres) */
+    double T0;      /* initial temperature, > 0 */
+} ref_heated_params;
+
+/* Maxwell molecules: k = gamma pi C0 (1 - alpha^2) (SPEC §3, A.13-14). */
+double ref_heated_maxwell_rate(const ref_heated_params *p);
+/* T_inf = 2 beta / k (A.14); +inf when k = 0 and beta > 0. */
+double ref_heated_maxwell_T_inf(const ref_heated_params *p);
+/* T(t) = T0 e^{-kt} + T_inf (1 - e^{-kt})  (A.13). */
+double ref_heated_maxwell_T(const ref_heated_params *p, double t);
+
+/* Exact expectations of the n-particle DSMC estimators for Maxwell molecules
+ * (SPEC §10: exact finite-n behaviour), for i.i.d. initial velocities from a
+ * Maxwellian at rest with temperature T0.  With X = Σ|v_i - V|^2, collisions
+ * conserve momentum and remove k X on average, heating adds 6 beta (n-1), so
+ * E X(t) = 3 (n-1) T(t); E|Σ v_i|^2 / n = 3 T0 + 6 beta t.  Hence
+ *   E T_centred = (1 - 1/n) T(t),
+ *   E T_raw     = T(t) + (T0 + 2 beta t - T(t)) / n,
+ * where T_centred = (1/3n) Σ|v_i - V|^2 and T_raw = (1/3n) Σ|v_i|^2. */
+double ref_heated_maxwell_T_centred_mean(const ref_heated_params *p, double n, double t);
+double ref_heated_maxwell_T_raw_mean(const ref_heated_params *p, double n, double t);
+
+/* Heated hard spheres (SPEC §3 Ex 5), two closures of the temperature
+ * equation with B1 = 4 pi C1 |g| and <|g|^3> = (32/sqrt(pi)) T^{3/2}:
+ *   MAXWELLIAN: dT/dt = 2 beta - gamma (1-alpha^2)/24 4 pi C1 (32/sqrt(pi)) T^{3/2}
+ *   SONINE:     the same loss times (1 + 3 a2/16), a2 from (C.10), d = 3. */
+typedef enum ref_heated_closure {
+    REF_HEATED_MAXWELLIAN_CLOSURE,
+    REF_HEATED_SONINE_CLOSURE
+} ref_heated_closure;
+
+/* Steady temperature of a closure, in closed form:
+ * T* = (2 beta / (gamma (1-alpha^2)/24 4 pi C1 (32/sqrt(pi)) factor))^{2/3}. */
+double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure closure);
+
+/* Integrate a closure with CVODE at times t[0..nt-1] (t[0] is the initial
+ * time, where T = T0); T_out[m] = T(t[m]).  opt may be NULL (defaults). */
+ref_status ref_heated_hs_T(const ref_heated_params *p, ref_heated_closure closure,
+                           const double *t, size_t nt, const ref_ode_options *opt,
+                           double *T_out, char *msg, size_t msglen);
+
+#endif

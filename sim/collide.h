@@ -1,0 +1,35 @@
+/* The inelastic binary collision rule (SPEC §3, paper A Eq. (3)).
+ *
+ *   v' = (v+w)/2 + (1-alpha)/4 g + (1+alpha)/4 |g| e
+ *   w' = (v+w)/2 - (1-alpha)/4 g - (1+alpha)/4 |g| e,   g = v - w, e on S^2.
+ *
+ * Momentum is conserved exactly (up to round-off); the energy changes by
+ * -(1-alpha^2)/4 (1 - mu) |g|^2 with mu = (g.e)/|g|.  Paper B's binary rule is
+ * the same with alpha = e (SPEC §4).
+ */
+#ifndef GDSMC_SIM_COLLIDE_H
+#define GDSMC_SIM_COLLIDE_H
+
+#include <math.h>
+
+/* Collide velocities v and w (3-vectors, updated in place) with restitution
+ * alpha and unit vector e; gnorm = |v - w| (computed by the caller, who needs
+ * it for the acceptance test anyway). */
+static inline void sim_collide_inelastic(double v[3], double w[3], double alpha,
+                                         double gnorm, const double e[3])
+{
+    const double a = 0.25 * (1.0 - alpha), b = 0.25 * (1.0 + alpha) * gnorm;
+    for (int k = 0; k < 3; k++) {
+        double centre = 0.5 * (v[k] + w[k]);
+        double half = a * (v[k] - w[k]) + b * e[k];
+        v[k] = centre + half;
+        w[k] = centre - half;
+    }
+}
+
+static inline double sim_norm3(const double x[3])
+{
+    return sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+}
+
+#endif

@@ -1,0 +1,172 @@
+/* Binary inelastic collisions, the exact jump scheme of paper A §3 (SPEC §3).
+ *
+ * VHS kernel B = C |g|^lambda with e uniform on S^2, 0 <= lambda <= 1.  The
+ * majorant rate is pi_hat = 2 pi gamma C (n - 1) U_max^lambda; a candidate is
+ * an ordered pair i != j chosen uniformly, accepted with (|g| / U_max)^lambda.
+ *
+ * U_max: paper A bounds |v_i - v_j| <= |v_i - c| + |v_j - c| <= 2 R with
+ * R = max_i |v_i - c| and c the bulk velocity.  Here c is fixed between
+ * output times and R is raised whenever a particle's velocity changes (after
+ * its flow is applied and after a collision), so 2 R bounds every pair the
+ * scheme has seen.  A lazy flow can carry an untouched particle beyond R; that
+ * shows when the pair is drawn (|g| > U_max in use) and is counted as a
+ * majorant violation.  At each output time, with every particle synchronised,
+ * reset() recomputes c and R from scratch, so the majorant also shrinks when
+ * the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
+ * candidate is accepted and the rate never changes.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "collide.h"
+#include "effect.h"
+#include "rng.h"
+#include "run.h"
+
+typedef struct collisions_params {
+    double lambda;      /* VHS exponent */
+    double alpha;       /* restitution */
+    double prefactor;   /* 2 pi gamma C (n - 1) */
+} collisions_params;
+
+typedef struct collisions_state {
+    double centre[3];   /* c */
+    double radius;      /* R = max |v_i - c| seen */
+    double umax;        /* 2 R */
+    double rate;        /* prefactor umax^lambda */
+} collisions_state;
+
+enum kernel_case { KERNEL_MAXWELL, KERNEL_HARD_SPHERES, KERNEL_VHS };
+
+static double majorant_rate(const collisions_params *p, const collisions_state *s)
+{
+    return p->prefactor * pow(s->umax, p->lambda);
+}
+
+static double distance_from(const double v[3], const double c[3])
+{
+    double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
+    return sim_norm3(d);
+}
+
+static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    const size_t n = run->p.n;
+    double c[3] = {0, 0, 0}, r = 0.0;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            c[k] += run->p.v[i][k];
+    for (int k = 0; k < 3; k++)
+        s->centre[k] = c[k] / (double)n;
+    for (size_t i = 0; i < n; i++)
+        r = fmax(r, distance_from(run->p.v[i], s->centre));
+    s->radius = r;
+    s->umax = 2.0 * r;
+    s->rate = p->lambda == 0.0 ? p->prefactor : majorant_rate(p, s);
+    return s->rate;
+}
+
+/* Raise R (and the rate) so that the majorant covers velocity v. */
+static inline void cover(const collisions_params *p, collisions_state *s, const double v[3])
+{
+    double d = distance_from(v, s->centre);
+    if (d > s->radius) {
+        s->radius = d;
+        s->umax = 2.0 * d;
+        s->rate = majorant_rate(p, s);
+    }
+}
+
+/* One candidate collision at time t (paper A Algorithm, steps 2.3-2.10).
+ * kernel and lazy_flow are compile-time constants in each instance below. */
+static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t,
+                                    const enum kernel_case kernel, const int lazy_flow)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    gsl_rng *rng = run->rng;
+    const size_t n = run->p.n;
+
+    size_t i = (size_t)sim_rng_index(rng, n);
+    size_t j = (size_t)sim_rng_index(rng, n - 1);
+    j += (j >= i);   /* uniform over j != i */
+    if (lazy_flow) {
+        sim_run_bring(run, i, t);
+        sim_run_bring(run, j, t);
+    }
+    double *vi = run->p.v[i], *vj = run->p.v[j];
+    double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+    double gnorm = sim_norm3(g);
+    run->counts.candidates++;
+
+    if (kernel != KERNEL_MAXWELL) {
+        if (gnorm > s->umax)
+            run->counts.violations++;
+        if (lazy_flow) {   /* the flow moved i and j since R last covered them */
+            cover(p, s, vi);
+            cover(p, s, vj);
+        }
+        double u = sim_rng_uniform(rng);
+        int fictitious = kernel == KERNEL_HARD_SPHERES ? u * s->umax >= gnorm
+                                                       : u >= pow(gnorm / s->umax, p->lambda);
+        if (fictitious)
+            return s->rate;
+    }
+
+    double unit[3];
+    sim_rng_unit_sphere(rng, unit);
+    sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
+    run->counts.collisions++;
+    if (kernel != KERNEL_MAXWELL) {
+        cover(p, s, vi);
+        cover(p, s, vj);
+    }
+    return s->rate;
+}
+
+#define FIRE_INSTANCE(name, kernel, lazy)                                                    \
+    static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
+    {                                                                                        \
+        return fire_candidate(e, run, state, t, kernel, lazy);                               \
+    }
+FIRE_INSTANCE(fire_maxwell, KERNEL_MAXWELL, 0)
+FIRE_INSTANCE(fire_maxwell_flow, KERNEL_MAXWELL, 1)
+FIRE_INSTANCE(fire_hard_spheres, KERNEL_HARD_SPHERES, 0)
+FIRE_INSTANCE(fire_hard_spheres_flow, KERNEL_HARD_SPHERES, 1)
+FIRE_INSTANCE(fire_vhs, KERNEL_VHS, 0)
+FIRE_INSTANCE(fire_vhs_flow, KERNEL_VHS, 1)
+
+static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow)
+{
+    const collisions_params *p = e->params;
+    if (p->lambda == 0.0)
+        return lazy_flow ? fire_maxwell_flow : fire_maxwell;
+    if (p->lambda == 1.0)
+        return lazy_flow ? fire_hard_spheres_flow : fire_hard_spheres;
+    return lazy_flow ? fire_vhs_flow : fire_vhs;
+}
+
+static const sim_effect_type collisions_type = {
+    .name = "collisions",
+    .state_size = sizeof(collisions_state),
+    .reset = collisions_reset,
+    .select_fire = collisions_select_fire,
+};
+
+sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err)
+{
+    if (scene->collisions.model != SIM_MODEL_IHS)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.model",
+                             "model ehs is not implemented yet (supported: ihs)");
+    collisions_params *p = malloc(sizeof *p);
+    if (p == NULL)
+        return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    p->lambda = scene->collisions.exponent;
+    p->alpha = scene->collisions.restitution;
+    p->prefactor = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
+                   * (double)(scene->particles.n - 1);
+    *effect = (sim_effect){.type = &collisions_type, .params = p};
+    return SIM_OK;
+}

@@ -1,0 +1,36 @@
+/* Observables of one particle system (SPEC §1, names of SPEC §9).
+ *
+ * Every observable is an estimator xi^(n) computed from the n velocities with
+ * weights 1/n; the ensemble layer averages them over N ensembles.  With m the
+ * particle mass, V the numerical bulk velocity and C = v - V:
+ *   T     = (m/3) <|C|^2>            (centred)
+ *   T_raw = (m/3) <|v|^2>            (uncentred, paper A's Tables 1-2)
+ *   u     = V
+ *   P_ij  = m <C_i C_j>
+ *   q     = (m/2) <|C|^2 C>          (= paper A's r - (M + (tr M/2 - |V|^2) I) V)
+ *   a2    = <|C|^4> / (15 (T/m)^2) - 1
+ *   a3    = -<|C|^6> / (105 (T/m)^3) + 1 + 3 a2
+ */
+#ifndef GDSMC_SIM_OBSERVE_H
+#define GDSMC_SIM_OBSERVE_H
+
+#include <stddef.h>
+
+#include "particles.h"
+
+typedef enum sim_observable {
+    SIM_OBS_T, SIM_OBS_T_RAW,
+    SIM_OBS_UX, SIM_OBS_UY, SIM_OBS_UZ,
+    SIM_OBS_PXX, SIM_OBS_PYY, SIM_OBS_PZZ, SIM_OBS_PXY, SIM_OBS_PXZ, SIM_OBS_PYZ,
+    SIM_OBS_QX, SIM_OBS_QY, SIM_OBS_QZ,
+    SIM_OBS_A2, SIM_OBS_A3,
+    SIM_OBS_COUNT
+} sim_observable;
+
+/* Column name of an observable ("T", "T_raw", "ux", ...). */
+const char *sim_observable_name(sim_observable k);
+
+/* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_COUNT]. */
+void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT]);
+
+#endif

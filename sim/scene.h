@@ -1,0 +1,145 @@
+/* A scene: the parsed, validated description of one simulation (SPEC §2).
+ *
+ * Plain data.  verify/scene_ini.c fills it from an INI file (each value range-
+ * checked there, with file, line and key in the message); sim_engine_create()
+ * then builds an engine from the effects it names, refusing combinations that
+ * no scheme supports.  Sections that a file does not name have present = 0 and
+ * cost nothing at run time.
+ */
+#ifndef GDSMC_SIM_SCENE_H
+#define GDSMC_SIM_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum sim_scheme {
+    SIM_SCHEME_JUMP,     /* exact event-driven Markov jump process, no splitting */
+    SIM_SCHEME_TIMESTEP  /* Bird-style splitting with step dt */
+} sim_scheme;
+
+typedef enum sim_initial {
+    SIM_INITIAL_MAXWELLIAN,
+    SIM_INITIAL_TWO_MAXWELLIANS,  /* paper B Eq. (35) */
+    SIM_INITIAL_SHELL             /* delta shell, paper E Eq. (3.6) */
+} sim_initial;
+
+typedef enum sim_kernel_kind {
+    SIM_KERNEL_MAXWELL,      /* B = C (lambda = 0) */
+    SIM_KERNEL_VHS,          /* B = C |g|^lambda, 0 <= lambda <= 1 */
+    SIM_KERNEL_HARD_SPHERES  /* B = C |g| (lambda = 1) */
+} sim_kernel_kind;
+
+typedef enum sim_collision_model {
+    SIM_MODEL_IHS,  /* inelastic hard spheres (restitution alpha) */
+    SIM_MODEL_EHS   /* frictional elastic hard spheres with drag, paper E */
+} sim_collision_model;
+
+typedef enum sim_heating_kind {
+    SIM_HEATING_WHITE_NOISE,   /* stochastic thermostat, variance 2 beta per unit time */
+    SIM_HEATING_GAUSSIAN,      /* anti-drag F = m zeta v */
+    SIM_HEATING_NON_GAUSSIAN   /* F = m g v/|v| */
+} sim_heating_kind;
+
+typedef enum sim_shear_boundary {
+    SIM_SHEAR_HOMOGENEOUS,  /* Lagrangian frame */
+    SIM_SHEAR_LEES_EDWARDS
+} sim_shear_boundary;
+
+/* One Maxwellian: particle mass, drift velocity, temperature. */
+typedef struct sim_maxwellian {
+    double mass;
+    double velocity[3];
+    double temperature;
+} sim_maxwellian;
+
+/* Where a key was set, so that later errors (engine, references) can name
+ * the file line.  line = 0: the key kept its default. */
+typedef struct sim_scene_key_origin {
+    char key[48];  /* "section.key" */
+    int line;
+} sim_scene_key_origin;
+
+#define SIM_SCENE_MAX_KEYS 96
+
+typedef struct sim_scene {
+    char file[512];   /* where the scene came from ("" if built in code) */
+
+    /* [scene] */
+    char title[128];
+    sim_scheme scheme;
+    double dt;          /* timestep only */
+    double t_end;
+    size_t outputs;     /* equally spaced output times, 0 and t_end included (>= 2) */
+    uint64_t seed;
+
+    /* [particles] */
+    struct sim_initial_spec {
+        size_t n;            /* particles per ensemble (>= 2) */
+        size_t ensembles;    /* N independent ensembles (>= 1) */
+        sim_initial initial;
+        sim_maxwellian maxwellian;   /* initial = maxwellian (or shell: mass, T) */
+        double fraction;             /* two-maxwellians: weight of the first */
+        sim_maxwellian first, second;/* two-maxwellians */
+        int zero_momentum;           /* subtract the sample mean velocity (default 0) */
+    } particles;
+
+    /* [collisions] binary inelastic collisions (SPEC §3) */
+    struct {
+        int present;
+        sim_kernel_kind kernel;
+        double exponent;     /* VHS lambda; 0 for maxwell, 1 for hard-spheres */
+        double constant;     /* C of B = C |g|^lambda */
+        double rate;         /* gamma of paper A (default 1) */
+        double restitution;  /* alpha of A, e of B, in (0, 1] */
+        sim_collision_model model;
+    } collisions;
+
+    /* [heating] thermostats (SPEC §3, §5) */
+    struct {
+        int present;
+        sim_heating_kind type;
+        double strength;     /* white-noise: beta; gaussian: zeta; non-gaussian: g */
+    } heating;
+
+    /* [background] host medium (SPEC §4) */
+    struct {
+        int present;
+        double density, mass, temperature;
+        double velocity[3];
+        sim_kernel_kind kernel;  /* maxwell or hard-spheres */
+        double constant;         /* C1 */
+    } background;
+
+    /* [shear] uniform shear flow (SPEC §7) */
+    struct {
+        int present;
+        double rate;
+        sim_shear_boundary boundary;
+        double length;
+        size_t layers;
+    } shear;
+
+    /* [heat-flux] homogeneous heat-flux force (SPEC §6) */
+    struct {
+        int present;
+        double strength;
+    } heat_flux;
+
+    /* Provenance of each key that was set, for messages. */
+    sim_scene_key_origin keys[SIM_SCENE_MAX_KEYS];
+    size_t nkeys;
+} sim_scene;
+
+/* Fill every field with its documented default: jump scheme, t_end = 1,
+ * outputs = 2, seed = 1, n = 64, N = 1, standard Maxwellian (m = 1, T = 1,
+ * at rest), no effects present; collisions (once present): maxwell kernel,
+ * C = 1/(4 pi), rate 1, restitution 1, model ihs. */
+void sim_scene_defaults(sim_scene *scene);
+
+/* Line at which "section.key" was set, or 0 if it kept its default. */
+int sim_scene_key_line(const sim_scene *scene, const char *key);
+
+/* Output time m (0 <= m < outputs): m t_end / (outputs - 1). */
+double sim_scene_output_time(const sim_scene *scene, size_t m);
+
+#endif
