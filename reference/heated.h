@@ -10,6 +10,9 @@
 
 #include "ode.h"
 
+/* The double-valued functions below return NaN when p is NULL or a parameter
+ * is out of range (so an error propagates instead of passing for a number);
+ * ref_heated_hs_T returns REF_EINVAL with a message naming the parameter. */
 typedef struct ref_heated_params {
     double alpha;   /* restitution, (0, 1] */
     double beta;    /* white-noise heating, >= 0 */
@@ -20,9 +23,10 @@ typedef struct ref_heated_params {
 
 /* Maxwell molecules: k = gamma pi C0 (1 - alpha^2) (SPEC §3, A.13-14). */
 double ref_heated_maxwell_rate(const ref_heated_params *p);
-/* T_inf = 2 beta / k (A.14); +inf when k = 0 and beta > 0. */
+/* T_inf = 2 beta / k (A.14); +inf when k = 0 (alpha = 1) and beta > 0, T0 when
+ * k = 0 and beta = 0 (the limit of T(t)). */
 double ref_heated_maxwell_T_inf(const ref_heated_params *p);
-/* T(t) = T0 e^{-kt} + T_inf (1 - e^{-kt})  (A.13). */
+/* T(t) = T0 e^{-kt} + T_inf (1 - e^{-kt})  (A.13); T0 + 2 beta t when k = 0. */
 double ref_heated_maxwell_T(const ref_heated_params *p, double t);
 
 /* Exact expectations of the n-particle DSMC estimators for Maxwell molecules
@@ -32,7 +36,8 @@ double ref_heated_maxwell_T(const ref_heated_params *p, double t);
  * E X(t) = 3 (n-1) T(t); E|Σ v_i|^2 / n = 3 T0 + 6 beta t.  Hence
  *   E T_centred = (1 - 1/n) T(t),
  *   E T_raw     = T(t) + (T0 + 2 beta t - T(t)) / n,
- * where T_centred = (1/3n) Σ|v_i - V|^2 and T_raw = (1/3n) Σ|v_i|^2. */
+ * where T_centred = (1/3n) Σ|v_i - V|^2 and T_raw = (1/3n) Σ|v_i|^2.
+ * n >= 1 and t finite, else NaN. */
 double ref_heated_maxwell_T_centred_mean(const ref_heated_params *p, double n, double t);
 double ref_heated_maxwell_T_raw_mean(const ref_heated_params *p, double n, double t);
 
@@ -46,11 +51,14 @@ typedef enum ref_heated_closure {
 } ref_heated_closure;
 
 /* Steady temperature of a closure, in closed form:
- * T* = (2 beta / (gamma (1-alpha^2)/24 4 pi C1 (32/sqrt(pi)) factor))^{2/3}. */
+ * T* = (2 beta / (gamma (1-alpha^2)/24 4 pi C1 (32/sqrt(pi)) factor))^{2/3};
+ * +inf when alpha = 1 and beta > 0, T0 when alpha = 1 and beta = 0. */
 double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure closure);
 
 /* Integrate a closure with CVODE at times t[0..nt-1] (t[0] is the initial
- * time, where T = T0); T_out[m] = T(t[m]).  opt may be NULL (defaults). */
+ * time, where T = T0); T_out[m] = T(t[m]).  opt may be NULL (defaults).
+ * Bad p, closure, t (NULL, nt = 0, not finite or not strictly increasing) or
+ * T_out give REF_EINVAL; solver failures are those of ref_ode_solve. */
 ref_status ref_heated_hs_T(const ref_heated_params *p, ref_heated_closure closure,
                            const double *t, size_t nt, const ref_ode_options *opt,
                            double *T_out, char *msg, size_t msglen);

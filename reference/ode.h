@@ -42,9 +42,14 @@ ref_ode_options ref_ode_default_options(void);
 
 /* Integrate y' = f(t, y), y(t_out[0]) = y0, and store y(t_out[m]) in
  * y_out[m * dim + i] for m = 0 .. nout-1 (the row m = 0 is y0).  t_out must be
- * strictly increasing.  On failure returns REF_EINVAL or REF_ESOLVER and
- * writes a message naming the argument or the CVODE flag and time into msg
- * (msglen bytes, may be 0); y_out is then unspecified.  Thread-safe: every
+ * finite and strictly increasing, y0 finite; opt may be NULL (defaults).  A
+ * non-finite ydot counts as a recoverable RHS failure (CVODE cuts the step);
+ * a negative return from f is final.  On failure returns REF_EINVAL (message
+ * names the argument, its value and the allowed range) or REF_ESOLVER
+ * ("CVODE failed at t = ...: CV_FLAG (CVODE's message)", plus the RHS failure
+ * if any), or REF_ENOMEM; y_out is then unspecified, and a solution that is
+ * not finite is never returned.  msg gets msglen bytes (msg may be NULL when
+ * msglen is 0) and is "" on success.  Nothing is printed.  Thread-safe: every
  * call has its own SUNDIALS context. */
 ref_status ref_ode_solve(ref_rhs_fn f, void *params, size_t dim, const double *y0,
                          const double *t_out, size_t nout, const ref_ode_options *opt,
