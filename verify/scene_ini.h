@@ -7,7 +7,32 @@
  * before any work starts.  Overrides "section.key=value" (the command line's
  * --set) pass the same checks and are reported as
  *     --set section.key=value: section.key: what is wrong (allowed ...)
- * On failure the scene is left unspecified and nothing is written anywhere.
+ * The first error wins; on failure *scene is not written and nothing is
+ * printed anywhere.
+ *
+ * Syntax: "[section]" lines and "key = value" (or "key: value") lines; leading
+ * white space is ignored (there are no continuation lines); comments are lines
+ * starting with ';' or '#', and inline comments start with " ;".  A line may
+ * hold at most 198 characters (inih's buffer).  Vectors are three numbers
+ * separated by spaces; counts (n, ensembles, outputs, seed, layers) are
+ * unsigned decimal integers; booleans are true or false.
+ *
+ * A section's header, or any key of it (from the file or an override), sets
+ * its present flag.  Every key set is recorded in scene->keys with its line
+ * (overrides: -1), so sim_scene_key_line() finds it.  Checks across keys,
+ * after the overrides, name the key at fault (format as vfy_scene_format_error):
+ *   - scheme = timestep needs dt;
+ *   - kernel = maxwell implies exponent 0, hard-spheres 1 (an explicit exponent
+ *     that differs is an error), vhs needs an explicit exponent in [0, 1];
+ *   - initial = two-maxwellians needs all of fraction, mass1, velocity1,
+ *     temperature1, mass2, velocity2, temperature2 (no defaults) and refuses
+ *     mass, temperature, velocity; those seven keys are refused otherwise;
+ *   - heating type = white-noise needs strength (beta) >= 0; gaussian and
+ *     non-gaussian take any finite strength.
+ * Overrides may repeat a key (the last wins); a file may not.
+ *
+ * Thread safety: no global state is touched (inih's option globals are only
+ * read); different scenes may be parsed concurrently.
  */
 #ifndef GDSMC_VFY_SCENE_INI_H
 #define GDSMC_VFY_SCENE_INI_H
@@ -17,20 +42,23 @@
 #include "error.h"
 #include "scene.h"
 
-/* Read the scene file at path, then apply the overrides in order.  Returns
- * SIM_OK, SIM_EIO (file missing or unreadable: msg names the file and the
- * system's reason) or SIM_EINVAL (msg as above). */
+/* Read the scene file at path (at most 1 MiB of text), then apply the
+ * overrides in order.  Returns SIM_OK (msg = ""), SIM_EIO (file missing or
+ * unreadable: "FILE: cannot open: No such file or directory"), SIM_ENOMEM, or
+ * SIM_EINVAL (msg as above; also for NULL arguments).  msg (msglen bytes,
+ * truncated to fit) may be NULL. */
 sim_status vfy_scene_load(const char *path, const char *const *overrides, size_t noverrides,
                           sim_scene *scene, char *msg, size_t msglen);
 
-/* The same from text in memory; name stands for the file name in messages
- * (tests and the fuzzer use this). */
+/* The same from NUL-terminated text in memory; name stands for the file name in
+ * messages and scene->file (tests and the fuzzer use this). */
 sim_status vfy_scene_parse(const char *text, const char *name, const char *const *overrides,
                            size_t noverrides, sim_scene *scene, char *msg, size_t msglen);
 
 /* Format an error reported later (by the engine or a reference) about a key of
- * this scene as "FILE:LINE: key: message", or "FILE: key: message" when the key
- * kept its default, or "FILE: message" when err->key is empty. */
+ * this scene as "FILE:LINE: key: message", "FILE: --set key: message" when an
+ * override set the key, "FILE: key: message" when the key kept its default,
+ * or "FILE: message" when err->key is empty. */
 void vfy_scene_format_error(const sim_scene *scene, const sim_error *err, char *msg,
                             size_t msglen);
 

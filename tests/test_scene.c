@@ -1,0 +1,634 @@
+/* Tests of verify/scene_ini.c: scene files to sim_scene (SPEC §2).
+ *
+ * Good scenes are checked field by field, with their present flags and key
+ * lines; the trap group provokes each kind of bad input and asserts the
+ * status and the exact message.  GDSMC_SOURCE_DIR (set by CTest) locates
+ * verify/scenes/, whose files must all load.
+ */
+#include <dirent.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "scene_ini.h"
+#include "test_util.h"
+
+static const char *source_dir(void)
+{
+    const char *dir = getenv("GDSMC_SOURCE_DIR");
+    return dir && dir[0] ? dir : "..";
+}
+
+static void assert_vec(const double v[3], double x, double y, double z)
+{
+    assert_close(v[0], x, 0.0, 0.0);
+    assert_close(v[1], y, 0.0, 0.0);
+    assert_close(v[2], z, 0.0, 0.0);
+}
+
+static void parse_ok(const char *text, const char *const *ov, size_t nov, sim_scene *s)
+{
+    char msg[1024] = "unset";
+    sim_status st = vfy_scene_parse(text, "t.ini", ov, nov, s, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("unexpected error: %s\n", msg);
+    assert_int_equal(st, SIM_OK);
+    assert_string_equal(msg, "");
+}
+
+/* ---- good scenes ------------------------------------------------------- */
+
+/* Every key but those of two-maxwellians, with high-entropy values. */
+static const char good_text[] =
+    "; a scene with every effect\n"                    /*  1 */
+    "# comment styles: ';' and '#' at line start\n"    /*  2 */
+    "[scene]\n"                                        /*  3 */
+    "title = Good scene #1\n"                          /*  4 */
+    "scheme = timestep\n"                              /*  5 */
+    "dt = 0.015625\n"                                  /*  6 */
+    "t_end = 2.385\n"                                  /*  7 */
+    "outputs = 17\n"                                   /*  8 */
+    "seed = 18446744073709551615\n"                    /*  9 */
+    "\n"                                               /* 10 */
+    "[particles]\n"                                    /* 11 */
+    "n = 1000\n"                                       /* 12 */
+    "ensembles = 37\n"                                 /* 13 */
+    "initial = shell\n"                                /* 14 */
+    "mass = 2.5\n"                                     /* 15 */
+    "temperature = 1.75\n"                             /* 16 */
+    "velocity = 0.25 -1.5 3e-2\n"                      /* 17 */
+    "zero_momentum = true\n"                           /* 18 */
+    "[collisions]\n"                                   /* 19 */
+    "kernel = vhs\n"                                   /* 20 */
+    "exponent = 0.35\n"                                /* 21 */
+    "constant = 0.0795774715459476678\n"               /* 22 */
+    "rate = 4.125\n"                                   /* 23 */
+    "restitution = 0.85 ; inline comment\n"            /* 24 */
+    "model = ehs\n"                                    /* 25 */
+    "[heating]\n"                                      /* 26 */
+    "type = non-gaussian\n"                            /* 27 */
+    "strength = -0.375\n"                              /* 28 */
+    "[background]\n"                                   /* 29 */
+    "density = 1.25\n"                                 /* 30 */
+    "mass = 0.125\n"                                   /* 31 */
+    "temperature = 3.5\n"                              /* 32 */
+    "velocity = 0 1 -2\n"                              /* 33 */
+    "kernel = hard-spheres\n"                          /* 34 */
+    "constant = 0.5\n"                                 /* 35 */
+    "[shear]\n"                                        /* 36 */
+    "rate = -0.7\n"                                    /* 37 */
+    "boundary = lees-edwards\n"                        /* 38 */
+    "length = 6.25\n"                                  /* 39 */
+    "layers = 12\n"                                    /* 40 */
+    "[heat-flux]\n"                                    /* 41 */
+    "strength = 0.0625\n";                             /* 42 */
+
+static void test_good_scene(void **state)
+{
+    (void)state;
+    sim_scene s;
+    parse_ok(good_text, NULL, 0, &s);
+
+    assert_string_equal(s.file, "t.ini");
+    assert_string_equal(s.title, "Good scene #1");
+    assert_int_equal(s.scheme, SIM_SCHEME_TIMESTEP);
+    assert_close(s.dt, 0.015625, 0.0, 0.0);
+    assert_close(s.t_end, 2.385, 0.0, 0.0);
+    assert_int_equal(s.outputs, 17);
+    assert_true(s.seed == UINT64_MAX);
+
+    assert_int_equal(s.particles.n, 1000);
+    assert_int_equal(s.particles.ensembles, 37);
+    assert_int_equal(s.particles.initial, SIM_INITIAL_SHELL);
+    assert_close(s.particles.maxwellian.mass, 2.5, 0.0, 0.0);
+    assert_close(s.particles.maxwellian.temperature, 1.75, 0.0, 0.0);
+    assert_vec(s.particles.maxwellian.velocity, 0.25, -1.5, 3e-2);
+    assert_int_equal(s.particles.zero_momentum, 1);
+
+    assert_int_equal(s.collisions.present, 1);
+    assert_int_equal(s.collisions.kernel, SIM_KERNEL_VHS);
+    assert_close(s.collisions.exponent, 0.35, 0.0, 0.0);
+    assert_close(s.collisions.constant, 1.0 / (4.0 * M_PI), 1e-15, 0.0);
+    assert_close(s.collisions.rate, 4.125, 0.0, 0.0);
+    assert_close(s.collisions.restitution, 0.85, 0.0, 0.0);
+    assert_int_equal(s.collisions.model, SIM_MODEL_EHS);
+
+    assert_int_equal(s.heating.present, 1);
+    assert_int_equal(s.heating.type, SIM_HEATING_NON_GAUSSIAN);
+    assert_close(s.heating.strength, -0.375, 0.0, 0.0);
+
+    assert_int_equal(s.background.present, 1);
+    assert_close(s.background.density, 1.25, 0.0, 0.0);
+    assert_close(s.background.mass, 0.125, 0.0, 0.0);
+    assert_close(s.background.temperature, 3.5, 0.0, 0.0);
+    assert_vec(s.background.velocity, 0.0, 1.0, -2.0);
+    assert_int_equal(s.background.kernel, SIM_KERNEL_HARD_SPHERES);
+    assert_close(s.background.constant, 0.5, 0.0, 0.0);
+
+    assert_int_equal(s.shear.present, 1);
+    assert_close(s.shear.rate, -0.7, 0.0, 0.0);
+    assert_int_equal(s.shear.boundary, SIM_SHEAR_LEES_EDWARDS);
+    assert_close(s.shear.length, 6.25, 0.0, 0.0);
+    assert_int_equal(s.shear.layers, 12);
+
+    assert_int_equal(s.heat_flux.present, 1);
+    assert_close(s.heat_flux.strength, 0.0625, 0.0, 0.0);
+
+    static const struct { const char *key; int line; } lines[] = {
+        {"scene.title", 4}, {"scene.scheme", 5}, {"scene.dt", 6}, {"scene.t_end", 7},
+        {"scene.outputs", 8}, {"scene.seed", 9}, {"particles.n", 12},
+        {"particles.ensembles", 13}, {"particles.initial", 14}, {"particles.mass", 15},
+        {"particles.temperature", 16}, {"particles.velocity", 17},
+        {"particles.zero_momentum", 18}, {"collisions.kernel", 20},
+        {"collisions.exponent", 21}, {"collisions.constant", 22}, {"collisions.rate", 23},
+        {"collisions.restitution", 24}, {"collisions.model", 25}, {"heating.type", 27},
+        {"heating.strength", 28}, {"background.density", 30}, {"background.mass", 31},
+        {"background.temperature", 32}, {"background.velocity", 33},
+        {"background.kernel", 34}, {"background.constant", 35}, {"shear.rate", 37},
+        {"shear.boundary", 38}, {"shear.length", 39}, {"shear.layers", 40},
+        {"heat-flux.strength", 42},
+        {"particles.fraction", 0}, {"particles.mass1", 0}, {"no.such", 0},
+    };
+    for (size_t i = 0; i < sizeof lines / sizeof lines[0]; i++) {
+        if (sim_scene_key_line(&s, lines[i].key) != lines[i].line)
+            print_error("%s: line %d, expected %d\n", lines[i].key,
+                        sim_scene_key_line(&s, lines[i].key), lines[i].line);
+        assert_int_equal(sim_scene_key_line(&s, lines[i].key), lines[i].line);
+    }
+    assert_int_equal(s.nkeys, 32);
+}
+
+/* Paper B Ex 1 initial state (SPEC §4), hard spheres with the implied exponent. */
+static void test_two_maxwellians(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "[particles]\n"
+        "initial = two-maxwellians\n"
+        "fraction = 0.5\n"
+        "mass1 = 1\n"
+        "velocity1 = -2 2 0\n"
+        "temperature1 = 1.5\n"
+        "mass2 = 1.25\n"
+        "velocity2 = 2 0 0\n"
+        "temperature2 = 0.75\n"
+        "zero_momentum = false\n"
+        "[collisions]\n"
+        "kernel = hard-spheres\n";
+    sim_scene s;
+    parse_ok(text, NULL, 0, &s);
+    assert_int_equal(s.particles.initial, SIM_INITIAL_TWO_MAXWELLIANS);
+    assert_close(s.particles.fraction, 0.5, 0.0, 0.0);
+    assert_close(s.particles.first.mass, 1.0, 0.0, 0.0);
+    assert_vec(s.particles.first.velocity, -2.0, 2.0, 0.0);
+    assert_close(s.particles.first.temperature, 1.5, 0.0, 0.0);
+    assert_close(s.particles.second.mass, 1.25, 0.0, 0.0);
+    assert_vec(s.particles.second.velocity, 2.0, 0.0, 0.0);
+    assert_close(s.particles.second.temperature, 0.75, 0.0, 0.0);
+    assert_int_equal(s.particles.zero_momentum, 0);
+    assert_int_equal(sim_scene_key_line(&s, "particles.temperature2"), 9);
+
+    assert_int_equal(s.collisions.kernel, SIM_KERNEL_HARD_SPHERES);
+    assert_close(s.collisions.exponent, 1.0, 0.0, 0.0);  /* implied by the kernel */
+    assert_int_equal(sim_scene_key_line(&s, "collisions.exponent"), 0);
+    assert_int_equal(s.heating.present, 0);
+    assert_int_equal(s.background.present, 0);
+    assert_int_equal(s.shear.present, 0);
+    assert_int_equal(s.heat_flux.present, 0);
+}
+
+/* Absent keys keep sim_scene_defaults(); an empty section is still present. */
+static void test_defaults_and_empty_section(void **state)
+{
+    (void)state;
+    sim_scene s, d;
+    parse_ok("[heat-flux]\n", NULL, 0, &s);
+    sim_scene_defaults(&d);
+    assert_int_equal(s.heat_flux.present, 1);
+    assert_int_equal(s.collisions.present, 0);
+    assert_int_equal(s.nkeys, 0);
+    assert_int_equal(s.scheme, d.scheme);
+    assert_close(s.t_end, d.t_end, 0.0, 0.0);
+    assert_int_equal(s.outputs, d.outputs);
+    assert_true(s.seed == d.seed);
+    assert_int_equal(s.particles.n, d.particles.n);
+    assert_close(s.collisions.constant, d.collisions.constant, 0.0, 0.0);
+    assert_close(s.collisions.restitution, d.collisions.restitution, 0.0, 0.0);
+
+    parse_ok("", NULL, 0, &s);  /* an empty file is the default scene */
+    assert_int_equal(s.heat_flux.present, 0);
+}
+
+/* Indentation, CRLF, a byte-order mark, "key: value", inline ';' comments. */
+static void test_layout(void **state)
+{
+    (void)state;
+    sim_scene s;
+    parse_ok("\xEF\xBB\xBF[scene]\r\n"
+             "    t_end = 3.25\r\n"
+             "\tseed: 42 ; the answer\r\n"
+             "  [collisions]\r\n"
+             "  restitution = 0.9\r\n",
+             NULL, 0, &s);
+    assert_close(s.t_end, 3.25, 0.0, 0.0);
+    assert_true(s.seed == 42);
+    assert_close(s.collisions.restitution, 0.9, 0.0, 0.0);
+    assert_int_equal(sim_scene_key_line(&s, "scene.seed"), 3);
+    assert_int_equal(sim_scene_key_line(&s, "collisions.restitution"), 5);
+}
+
+static void test_overrides(void **state)
+{
+    (void)state;
+    static const char text[] = "[scene]\n"
+                               "t_end = 8\n"
+                               "[collisions]\n"
+                               "restitution = 0.5\n";
+    const char *ov[] = {"collisions.restitution=0.25", " heating.strength = 2.5 ",
+                        "shear.rate=1.5", "scene.seed=7", "collisions.restitution=0.75",
+                        "scene.title=a = b"};
+    sim_scene s;
+    parse_ok(text, ov, sizeof ov / sizeof ov[0], &s);
+    assert_close(s.t_end, 8.0, 0.0, 0.0);
+    assert_int_equal(sim_scene_key_line(&s, "scene.t_end"), 2);
+    assert_close(s.collisions.restitution, 0.75, 0.0, 0.0);  /* the last one wins */
+    assert_int_equal(sim_scene_key_line(&s, "collisions.restitution"), -1);
+    assert_int_equal(s.heating.present, 1);  /* an override makes its section present */
+    assert_close(s.heating.strength, 2.5, 0.0, 0.0);
+    assert_int_equal(s.shear.present, 1);
+    assert_close(s.shear.rate, 1.5, 0.0, 0.0);
+    assert_true(s.seed == 7);
+    assert_string_equal(s.title, "a = b");
+    assert_int_equal(sim_scene_key_line(&s, "shear.rate"), -1);
+    assert_int_equal(s.nkeys, 6);
+}
+
+static void test_format_error(void **state)
+{
+    (void)state;
+    const char *ov[] = {"heating.strength=0.5"};
+    sim_scene s;
+    sim_error err;
+    char msg[512];
+    parse_ok("[collisions]\nrestitution = 0.5\n", ov, 1, &s);
+
+    sim_error_set(&err, SIM_EUNSUPPORTED, "collisions.restitution", "not with %s", "shear");
+    vfy_scene_format_error(&s, &err, msg, sizeof msg);
+    assert_string_equal(msg, "t.ini:2: collisions.restitution: not with shear");
+
+    sim_error_set(&err, SIM_EINVAL, "heating.strength", "too strong");
+    vfy_scene_format_error(&s, &err, msg, sizeof msg);
+    assert_string_equal(msg, "t.ini: --set heating.strength: too strong");
+
+    sim_error_set(&err, SIM_EINVAL, "particles.n", "too few for 12 layers");
+    vfy_scene_format_error(&s, &err, msg, sizeof msg);
+    assert_string_equal(msg, "t.ini: particles.n: too few for 12 layers");
+
+    sim_error_set(&err, SIM_ENOMEM, "", "cannot allocate 3 GB");
+    vfy_scene_format_error(&s, &err, msg, sizeof msg);
+    assert_string_equal(msg, "t.ini: cannot allocate 3 GB");
+}
+
+/* Paper A Ex 3 (SPEC §3): k = gamma pi C0 (1 - alpha^2) = 3/4, T_inf = 2 beta/k = 8/3. */
+static void test_grw_ex3_file(void **state)
+{
+    (void)state;
+    char path[1024], msg[1024];
+    snprintf(path, sizeof path, "%s/verify/scenes/grw-ex3.ini", source_dir());
+    sim_scene s;
+    sim_status st = vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("%s\n", msg);
+    assert_int_equal(st, SIM_OK);
+    double k = s.collisions.rate * M_PI * s.collisions.constant *
+               (1.0 - s.collisions.restitution * s.collisions.restitution);
+    assert_close(k, 0.75, 1e-15, 0.0);
+    assert_close(2.0 * s.heating.strength / k, 8.0 / 3.0, 1e-15, 0.0);
+    assert_int_equal(s.particles.n, 64);
+    assert_int_equal(s.particles.ensembles, 10000);
+    assert_int_equal(s.outputs, 81);
+    assert_close(s.t_end, 8.0, 0.0, 0.0);
+    assert_true(s.seed == 20030328);
+    assert_int_equal(s.collisions.kernel, SIM_KERNEL_MAXWELL);
+    assert_close(s.collisions.exponent, 0.0, 0.0, 0.0);
+    assert_int_equal(s.heating.type, SIM_HEATING_WHITE_NOISE);
+    assert_int_equal(sim_scene_key_line(&s, "collisions.restitution"), 29);
+}
+
+/* Every file in verify/scenes/ loads. */
+static void test_all_scene_files(void **state)
+{
+    (void)state;
+    char dir[1024], path[2048], msg[1024];
+    snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
+    DIR *d = opendir(dir);
+    if (!d)
+        print_error("cannot open %s (set GDSMC_SOURCE_DIR)\n", dir);
+    assert_non_null(d);
+    int count = 0, grw = 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        size_t len = strlen(e->d_name);
+        if (len < 4 || strcmp(e->d_name + len - 4, ".ini") != 0)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        sim_scene s;
+        sim_status st = vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg);
+        if (st != SIM_OK)
+            print_error("%s\n", msg);
+        assert_int_equal(st, SIM_OK);
+        assert_true(s.title[0] != '\0');
+        count++;
+        grw += strncmp(e->d_name, "grw-ex", 6) == 0;
+    }
+    closedir(d);
+    assert_true(grw >= 3);
+    assert_true(count >= grw);
+}
+
+/* ---- traps: status and the exact message ------------------------------- */
+
+static void expect_error(const char *text, const char *const *ov, size_t nov,
+                         sim_status status, const char *expected)
+{
+    sim_scene s;
+    char msg[1024];
+    sim_scene_defaults(&s);
+    snprintf(s.title, sizeof s.title, "sentinel");
+    sim_status st = vfy_scene_parse(text, "t.ini", ov, nov, &s, msg, sizeof msg);
+    assert_int_equal(st, status);
+    assert_string_equal(msg, expected);
+    assert_string_equal(s.title, "sentinel");  /* the scene is not touched */
+    assert_int_equal(s.nkeys, 0);
+}
+
+#define TRAP(name, text, expected)                          \
+    static void name(void **state)                          \
+    {                                                       \
+        (void)state;                                        \
+        expect_error(text, NULL, 0, SIM_EINVAL, expected);  \
+    }
+
+#define TRAP_SET(name, text, override, expected)              \
+    static void name(void **state)                            \
+    {                                                         \
+        (void)state;                                          \
+        const char *ov[] = {"scene.seed=5", override};        \
+        expect_error(text, ov, 2, SIM_EINVAL, expected);      \
+    }
+
+#define SECTIONS "scene, particles, collisions, heating, background, shear, heat-flux"
+
+TRAP(trap_unknown_key, "[collisions]\nrestitution = 0.5\nalpha = 0.5\n",
+     "t.ini:3: collisions.alpha: unknown key (allowed kernel, exponent, constant, rate, "
+     "restitution, model)")
+TRAP(trap_unknown_section, "[scene]\nt_end = 1\n\n[collision]\n",
+     "t.ini:4: [collision]: unknown section (allowed " SECTIONS ")")
+TRAP(trap_key_outside_section, "; no section yet\nt_end = 1\n",
+     "t.ini:2: t_end: key outside any section (allowed sections " SECTIONS ")")
+TRAP(trap_restitution_above_1, "[collisions]\nrestitution = 1.7\n",
+     "t.ini:2: collisions.restitution: '1.7' is out of range (allowed 0 < restitution <= 1)")
+TRAP(trap_restitution_0, "[collisions]\nrestitution = 0\n",
+     "t.ini:2: collisions.restitution: '0' is out of range (allowed 0 < restitution <= 1)")
+TRAP(trap_negative_temperature, "[particles]\ntemperature = -1\n",
+     "t.ini:2: particles.temperature: '-1' is out of range (allowed temperature > 0)")
+TRAP(trap_n_0, "[particles]\nn = 0\n",
+     "t.ini:2: particles.n: '0' is out of range (allowed 2 <= n <= 1000000000)")
+TRAP(trap_n_1, "[particles]\nn = 1\n",
+     "t.ini:2: particles.n: '1' is out of range (allowed 2 <= n <= 1000000000)")
+TRAP(trap_n_negative, "[particles]\nn = -5\n",
+     "t.ini:2: particles.n: '-5' is negative (allowed 2 <= n <= 1000000000)")
+TRAP(trap_n_fraction, "[particles]\nn = 2.5\n",
+     "t.ini:2: particles.n: '2.5' is not a whole number (allowed 2 <= n <= 1000000000)")
+TRAP(trap_n_plus_sign, "[particles]\nn = +64\n",
+     "t.ini:2: particles.n: '+64' is not a whole number (allowed 2 <= n <= 1000000000)")
+TRAP(trap_n_too_large, "[particles]\nn = 1000000001\n",
+     "t.ini:2: particles.n: '1000000001' is out of range (allowed 2 <= n <= 1000000000)")
+TRAP(trap_n_overflow, "[particles]\nn = 99999999999999999999999\n",
+     "t.ini:2: particles.n: '99999999999999999999999' is out of range "
+     "(allowed 2 <= n <= 1000000000)")
+TRAP(trap_outputs_1, "[scene]\noutputs = 1\n",
+     "t.ini:2: scene.outputs: '1' is out of range (allowed outputs >= 2)")
+TRAP(trap_not_a_number, "[scene]\nt_end = abc\n",
+     "t.ini:2: scene.t_end: 'abc' is not a number (allowed t_end > 0)")
+TRAP(trap_empty_number, "[scene]\nt_end =\n",
+     "t.ini:2: scene.t_end: '' is not a number (allowed t_end > 0)")
+TRAP(trap_trailing_garbage, "[scene]\nt_end = 1.5x\n",
+     "t.ini:2: scene.t_end: '1.5x' is not a number (allowed t_end > 0)")
+TRAP(trap_nan, "[scene]\nt_end = nan\n",
+     "t.ini:2: scene.t_end: 'nan' is not a finite number (allowed t_end > 0)")
+TRAP(trap_inf, "[shear]\nrate = inf\n",
+     "t.ini:2: shear.rate: 'inf' is not a finite number (allowed any finite number)")
+TRAP(trap_overflow, "[scene]\nt_end = 1e999\n",
+     "t.ini:2: scene.t_end: '1e999' is out of range of a double (allowed t_end > 0)")
+TRAP(trap_vector_two_numbers, "[particles]\nvelocity = 1 2\n",
+     "t.ini:2: particles.velocity: '1 2' is not three numbers "
+     "(allowed three finite numbers separated by spaces)")
+TRAP(trap_vector_nan, "[background]\nvelocity = 1 nan 0\n",
+     "t.ini:2: background.velocity: '1 nan 0' is not three finite numbers "
+     "(allowed three finite numbers separated by spaces)")
+TRAP(trap_vector_commas, "[particles]\nvelocity = 1,2,3\n",
+     "t.ini:2: particles.velocity: '1,2,3' is not three numbers "
+     "(allowed three finite numbers separated by spaces)")
+TRAP(trap_bad_word, "[collisions]\nkernel = hard-sphere\n",
+     "t.ini:2: collisions.kernel: 'hard-sphere' is unknown "
+     "(allowed maxwell, vhs, hard-spheres)")
+TRAP(trap_background_vhs, "[background]\nkernel = vhs\n",
+     "t.ini:2: background.kernel: 'vhs' is unknown (allowed maxwell, hard-spheres)")
+TRAP(trap_bad_bool, "[particles]\nzero_momentum = yes\n",
+     "t.ini:2: particles.zero_momentum: 'yes' is unknown (allowed true, false)")
+TRAP(trap_duplicate_key, "[scene]\nt_end = 1\nseed = 3\n[scene]\nt_end = 2\n",
+     "t.ini:5: scene.t_end: set twice (first at line 2)")
+TRAP(trap_syntax_error, "[scene]\nt_end 8\n",
+     "t.ini:2: syntax error (expected key = value or [section])")
+TRAP(trap_unclosed_section, "[scene\nt_end = 8\n",
+     "t.ini:1: syntax error (expected key = value or [section])")
+TRAP(trap_empty_key, "[scene]\n= 8\n",
+     "t.ini:2: syntax error (expected key = value or [section])")
+TRAP(trap_first_error_wins, "[scene]\nt_end = -1\nbogus\n[nope]\n",
+     "t.ini:2: scene.t_end: '-1' is out of range (allowed t_end > 0)")
+TRAP(trap_syntax_error_first, "[scene]\nbogus\nt_end = -1\n",
+     "t.ini:2: syntax error (expected key = value or [section])")
+TRAP(trap_vhs_without_exponent, "[collisions]\nrate = 2\nkernel = vhs\n",
+     "t.ini:3: collisions.kernel: vhs needs collisions.exponent (allowed 0 <= exponent <= 1)")
+TRAP(trap_exponent_contradicts_kernel, "[collisions]\nkernel = hard-spheres\nexponent = 0.5\n",
+     "t.ini:3: collisions.exponent: 0.5 contradicts kernel = hard-spheres "
+     "(allowed 1, or kernel = vhs)")
+TRAP(trap_exponent_out_of_range, "[collisions]\nkernel = vhs\nexponent = 1.5\n",
+     "t.ini:3: collisions.exponent: '1.5' is out of range (allowed 0 <= exponent <= 1)")
+TRAP(trap_timestep_without_dt, "[scene]\nt_end = 2\nscheme = timestep\n",
+     "t.ini:3: scene.scheme: timestep needs scene.dt (allowed dt > 0)")
+TRAP(trap_mixture_key_with_maxwellian, "[particles]\ninitial = maxwellian\ntemperature2 = 2\n",
+     "t.ini:3: particles.temperature2: only used with initial = two-maxwellians "
+     "(initial is maxwellian)")
+TRAP(trap_mixture_missing_key,
+     "[particles]\ninitial = two-maxwellians\nfraction = 0.5\nmass1 = 1\nvelocity1 = 0 0 0\n"
+     "temperature1 = 1\nmass2 = 1\nvelocity2 = 0 0 0\n",
+     "t.ini:2: particles.initial: two-maxwellians needs particles.temperature2 (allowed "
+     "fraction, mass1, velocity1, temperature1, mass2, velocity2, temperature2, all set)")
+TRAP(trap_single_key_with_mixture,
+     "[particles]\ninitial = two-maxwellians\nfraction = 0.5\nmass1 = 1\nvelocity1 = 0 0 0\n"
+     "temperature1 = 1\nmass2 = 1\nvelocity2 = 0 0 0\ntemperature2 = 2\ntemperature = 1\n",
+     "t.ini:10: particles.temperature: not used with initial = two-maxwellians (allowed the "
+     "keys ending in 1 and 2)")
+TRAP(trap_white_noise_negative, "[heating]\ntype = white-noise\nstrength = -0.5\n",
+     "t.ini:3: heating.strength: -0.5 is negative (allowed strength >= 0 for type = white-noise)")
+TRAP(trap_line_too_long,
+     "[scene]\ntitle = "
+     "0123456789012345678901234567890123456789012345678901234567890123456789012345678901234"
+     "5678901234567890123456789012345678901234567890123456789012345678901234567890123456789"
+     "01234567890123456789012345678901234567890123456789\n",
+     "t.ini:2: line too long (allowed at most 198 characters)")
+TRAP_SET(trap_override_no_equals, "", "scene.t_end",
+         "--set scene.t_end: expected section.key=value (no '=')")
+TRAP_SET(trap_override_no_dot, "", "t_end=4",
+         "--set t_end=4: expected section.key=value (no '.' between section and key)")
+TRAP_SET(trap_override_empty_key, "", "scene. = 4",
+         "--set scene. = 4: expected section.key=value (empty section or key)")
+TRAP_SET(trap_override_unknown_section, "", "collision.rate=4",
+         "--set collision.rate=4: [collision]: unknown section (allowed " SECTIONS ")")
+TRAP_SET(trap_override_unknown_key, "", "scene.tend=4",
+         "--set scene.tend=4: scene.tend: unknown key (allowed title, scheme, dt, t_end, "
+         "outputs, seed)")
+TRAP_SET(trap_override_bad_value, "[collisions]\nrestitution = 0.5\n",
+         "collisions.restitution=1.7",
+         "--set collisions.restitution=1.7: collisions.restitution: '1.7' is out of range "
+         "(allowed 0 < restitution <= 1)")
+TRAP_SET(trap_override_title_too_long, "",
+         "scene.title=0123456789012345678901234567890123456789012345678901234567890123456789"
+         "0123456789012345678901234567890123456789012345678901234567",
+         "--set scene.title=0123456789012345678901234567890123456789012345678901234567890123456789"
+         "0123456789012345678901234567890123456789012345678901234567: scene.title: is too long: "
+         "128 characters (allowed at most 127 characters)")
+TRAP_SET(trap_override_breaks_cross_check, "[scene]\nt_end = 2\n", "scene.scheme=timestep",
+         "t.ini: --set scene.scheme: timestep needs scene.dt (allowed dt > 0)")
+TRAP_SET(trap_file_error_before_overrides, "[scene]\nt_end = 0\n", "scene.t_end=1",
+         "t.ini:2: scene.t_end: '0' is out of range (allowed t_end > 0)")
+
+static void trap_missing_file(void **state)
+{
+    (void)state;
+    sim_scene s;
+    char msg[1024];
+    sim_status st = vfy_scene_load("/nonexistent/gdsmc/none.ini", NULL, 0, &s, msg, sizeof msg);
+    assert_int_equal(st, SIM_EIO);
+    assert_string_equal(msg, "/nonexistent/gdsmc/none.ini: cannot open: No such file or directory");
+}
+
+static void trap_directory(void **state)
+{
+    (void)state;
+    sim_scene s;
+    char msg[1024];
+    sim_status st = vfy_scene_load("/", NULL, 0, &s, msg, sizeof msg);
+    assert_int_equal(st, SIM_EIO);
+    assert_string_equal(msg, "/: cannot read: Is a directory");
+}
+
+static void trap_nul_byte(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/gdsmc_test_scene_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    static const char data[] = "[scene]\nt_end = 1\nseed\0= 2\n";
+    assert_int_equal(write(fd, data, sizeof data - 1), (ssize_t)(sizeof data - 1));
+    close(fd);
+    sim_scene s;
+    char msg[1024], expected[1100];
+    sim_status st = vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg);
+    unlink(path);
+    snprintf(expected, sizeof expected, "%s:3: NUL byte (allowed text only)", path);
+    assert_int_equal(st, SIM_EINVAL);
+    assert_string_equal(msg, expected);
+}
+
+static void trap_null_arguments(void **state)
+{
+    (void)state;
+    sim_scene s;
+    char msg[256];
+    const char *ov[] = {NULL};
+    assert_int_equal(vfy_scene_parse(NULL, "t.ini", NULL, 0, &s, msg, sizeof msg), SIM_EINVAL);
+    assert_string_equal(msg, "text is NULL");
+    assert_int_equal(vfy_scene_parse("", "t.ini", NULL, 0, NULL, msg, sizeof msg), SIM_EINVAL);
+    assert_string_equal(msg, "scene is NULL");
+    assert_int_equal(vfy_scene_parse("", "t.ini", ov, 1, &s, msg, sizeof msg), SIM_EINVAL);
+    assert_string_equal(msg, "overrides is NULL");
+    assert_int_equal(vfy_scene_load(NULL, NULL, 0, &s, NULL, 0), SIM_EINVAL);
+    /* msg may be NULL; an error still has its status */
+    assert_int_equal(vfy_scene_parse("[x]\n", "t.ini", NULL, 0, &s, NULL, 0), SIM_EINVAL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest good[] = {
+        cmocka_unit_test(test_good_scene),
+        cmocka_unit_test(test_two_maxwellians),
+        cmocka_unit_test(test_defaults_and_empty_section),
+        cmocka_unit_test(test_layout),
+        cmocka_unit_test(test_overrides),
+        cmocka_unit_test(test_format_error),
+        cmocka_unit_test(test_grw_ex3_file),
+        cmocka_unit_test(test_all_scene_files),
+    };
+    const struct CMUnitTest trap[] = {
+        cmocka_unit_test(trap_unknown_key),
+        cmocka_unit_test(trap_unknown_section),
+        cmocka_unit_test(trap_key_outside_section),
+        cmocka_unit_test(trap_restitution_above_1),
+        cmocka_unit_test(trap_restitution_0),
+        cmocka_unit_test(trap_negative_temperature),
+        cmocka_unit_test(trap_n_0),
+        cmocka_unit_test(trap_n_1),
+        cmocka_unit_test(trap_n_negative),
+        cmocka_unit_test(trap_n_fraction),
+        cmocka_unit_test(trap_n_plus_sign),
+        cmocka_unit_test(trap_n_too_large),
+        cmocka_unit_test(trap_n_overflow),
+        cmocka_unit_test(trap_outputs_1),
+        cmocka_unit_test(trap_not_a_number),
+        cmocka_unit_test(trap_empty_number),
+        cmocka_unit_test(trap_trailing_garbage),
+        cmocka_unit_test(trap_nan),
+        cmocka_unit_test(trap_inf),
+        cmocka_unit_test(trap_overflow),
+        cmocka_unit_test(trap_vector_two_numbers),
+        cmocka_unit_test(trap_vector_nan),
+        cmocka_unit_test(trap_vector_commas),
+        cmocka_unit_test(trap_bad_word),
+        cmocka_unit_test(trap_background_vhs),
+        cmocka_unit_test(trap_bad_bool),
+        cmocka_unit_test(trap_duplicate_key),
+        cmocka_unit_test(trap_syntax_error),
+        cmocka_unit_test(trap_unclosed_section),
+        cmocka_unit_test(trap_empty_key),
+        cmocka_unit_test(trap_first_error_wins),
+        cmocka_unit_test(trap_syntax_error_first),
+        cmocka_unit_test(trap_vhs_without_exponent),
+        cmocka_unit_test(trap_exponent_contradicts_kernel),
+        cmocka_unit_test(trap_exponent_out_of_range),
+        cmocka_unit_test(trap_timestep_without_dt),
+        cmocka_unit_test(trap_mixture_key_with_maxwellian),
+        cmocka_unit_test(trap_mixture_missing_key),
+        cmocka_unit_test(trap_single_key_with_mixture),
+        cmocka_unit_test(trap_white_noise_negative),
+        cmocka_unit_test(trap_line_too_long),
+        cmocka_unit_test(trap_override_no_equals),
+        cmocka_unit_test(trap_override_no_dot),
+        cmocka_unit_test(trap_override_empty_key),
+        cmocka_unit_test(trap_override_unknown_section),
+        cmocka_unit_test(trap_override_unknown_key),
+        cmocka_unit_test(trap_override_bad_value),
+        cmocka_unit_test(trap_override_title_too_long),
+        cmocka_unit_test(trap_override_breaks_cross_check),
+        cmocka_unit_test(trap_file_error_before_overrides),
+        cmocka_unit_test(trap_missing_file),
+        cmocka_unit_test(trap_directory),
+        cmocka_unit_test(trap_nul_byte),
+        cmocka_unit_test(trap_null_arguments),
+    };
+    int failed = cmocka_run_group_tests_name("scene", good, NULL, NULL);
+    failed += cmocka_run_group_tests_name("scene trap", trap, NULL, NULL);
+    return failed ? 1 : 0;
+}

@@ -1,0 +1,770 @@
+/* Scene files (SPEC §2): INI text -> validated sim_scene, with inih.
+ *
+ * Design.  One table, `keys`, describes every key: section, name, kind (text,
+ * real, vector, count, word), the field's offset in sim_scene and its allowed
+ * range or words; the messages' "(allowed ...)" text is generated from the
+ * same entry, so a range and its message cannot drift apart.  Keys from the
+ * file and from overrides go through the one function apply(); checks that
+ * involve two keys run once at the end (check_scene()).
+ *
+ * inih 55 (Debian) does not pass line numbers to the handler, so inih reads
+ * through our own reader, which hands it exactly one line per call and counts
+ * them: when the handler runs, ctx->line is the line of the key.  The reader
+ * also drops leading whitespace (so an indented key is never taken for a
+ * Python-style continuation of the previous value), checks section headers
+ * itself (an unknown section is an error even when it holds no keys; its
+ * presence sets the section's present flag) and refuses lines longer than
+ * inih's buffer instead of letting inih split them.
+ *
+ * Work happens on a copy: *scene is written only on success.
+ */
+#include "scene_ini.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <ini.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_FILE_BYTES (1u << 20)
+
+/* ---- the key table --------------------------------------------------- */
+
+enum { S_SCENE, S_PARTICLES, S_COLLISIONS, S_HEATING, S_BACKGROUND, S_SHEAR, S_HEAT_FLUX };
+
+typedef struct section_desc {
+    const char *name;
+    int has_present;
+    size_t present;  /* offset of the int present flag */
+} section_desc;
+
+#define OFF(member) offsetof(sim_scene, member)
+
+static const section_desc sections[] = {
+    {"scene", 0, 0},
+    {"particles", 0, 0},
+    {"collisions", 1, OFF(collisions.present)},
+    {"heating", 1, OFF(heating.present)},
+    {"background", 1, OFF(background.present)},
+    {"shear", 1, OFF(shear.present)},
+    {"heat-flux", 1, OFF(heat_flux.present)},
+};
+#define NSECTIONS (sizeof sections / sizeof sections[0])
+
+typedef enum key_kind { K_TEXT, K_REAL, K_VEC3, K_SIZE, K_U64, K_WORD } key_kind;
+
+enum { LO_GT = 1, LO_GE = 2, HI_LE = 4 };  /* bounds of a K_REAL */
+
+typedef struct word_desc {
+    const char *word;
+    int value;
+} word_desc;
+
+typedef struct key_desc {
+    int section;
+    const char *name;
+    key_kind kind;
+    size_t offset;
+    unsigned bounds;          /* K_REAL: x > lo or x >= lo, x <= hi */
+    double lo, hi;
+    uint64_t min, max;        /* K_SIZE, K_U64 */
+    const word_desc *words;   /* K_WORD, {NULL} terminated; field is an enum or int */
+    size_t size;              /* K_TEXT: buffer size */
+} key_desc;
+
+/* Enum fields are written as int. */
+_Static_assert(sizeof(sim_scheme) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_initial) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_kernel_kind) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_collision_model) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_heating_kind) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_shear_boundary) == sizeof(int), "enum size");
+
+static const word_desc scheme_words[] = {
+    {"jump", SIM_SCHEME_JUMP}, {"timestep", SIM_SCHEME_TIMESTEP}, {NULL, 0}};
+static const word_desc initial_words[] = {{"maxwellian", SIM_INITIAL_MAXWELLIAN},
+                                          {"two-maxwellians", SIM_INITIAL_TWO_MAXWELLIANS},
+                                          {"shell", SIM_INITIAL_SHELL},
+                                          {NULL, 0}};
+static const word_desc bool_words[] = {{"true", 1}, {"false", 0}, {NULL, 0}};
+static const word_desc kernel_words[] = {{"maxwell", SIM_KERNEL_MAXWELL},
+                                         {"vhs", SIM_KERNEL_VHS},
+                                         {"hard-spheres", SIM_KERNEL_HARD_SPHERES},
+                                         {NULL, 0}};
+static const word_desc background_kernel_words[] = {
+    {"maxwell", SIM_KERNEL_MAXWELL}, {"hard-spheres", SIM_KERNEL_HARD_SPHERES}, {NULL, 0}};
+static const word_desc model_words[] = {
+    {"ihs", SIM_MODEL_IHS}, {"ehs", SIM_MODEL_EHS}, {NULL, 0}};
+static const word_desc heating_words[] = {{"white-noise", SIM_HEATING_WHITE_NOISE},
+                                          {"gaussian", SIM_HEATING_GAUSSIAN},
+                                          {"non-gaussian", SIM_HEATING_NON_GAUSSIAN},
+                                          {NULL, 0}};
+static const word_desc boundary_words[] = {{"homogeneous", SIM_SHEAR_HOMOGENEOUS},
+                                           {"lees-edwards", SIM_SHEAR_LEES_EDWARDS},
+                                           {NULL, 0}};
+
+#define TEXT(s, k, m) {.section = s, .name = k, .kind = K_TEXT, .offset = OFF(m), \
+                       .size = sizeof(((sim_scene *)0)->m)}
+#define REAL(s, k, m, b, l, h) {.section = s, .name = k, .kind = K_REAL, .offset = OFF(m), \
+                                .bounds = b, .lo = l, .hi = h}
+#define POSITIVE(s, k, m) REAL(s, k, m, LO_GT, 0.0, 0.0)
+#define FINITE(s, k, m) REAL(s, k, m, 0, 0.0, 0.0)
+#define VEC3(s, k, m) {.section = s, .name = k, .kind = K_VEC3, .offset = OFF(m)}
+#define COUNT(s, k, m, a, b) {.section = s, .name = k, .kind = K_SIZE, .offset = OFF(m), \
+                              .min = a, .max = b}
+#define WORDS(s, k, m, w) {.section = s, .name = k, .kind = K_WORD, .offset = OFF(m), .words = w}
+
+static const key_desc keys[] = {
+    TEXT(S_SCENE, "title", title),
+    WORDS(S_SCENE, "scheme", scheme, scheme_words),
+    POSITIVE(S_SCENE, "dt", dt),
+    POSITIVE(S_SCENE, "t_end", t_end),
+    COUNT(S_SCENE, "outputs", outputs, 2, SIZE_MAX),
+    {.section = S_SCENE, .name = "seed", .kind = K_U64, .offset = OFF(seed), .min = 0,
+     .max = UINT64_MAX},
+
+    COUNT(S_PARTICLES, "n", particles.n, 2, 1000000000),
+    COUNT(S_PARTICLES, "ensembles", particles.ensembles, 1, SIZE_MAX),
+    WORDS(S_PARTICLES, "initial", particles.initial, initial_words),
+    POSITIVE(S_PARTICLES, "mass", particles.maxwellian.mass),
+    POSITIVE(S_PARTICLES, "temperature", particles.maxwellian.temperature),
+    VEC3(S_PARTICLES, "velocity", particles.maxwellian.velocity),
+    REAL(S_PARTICLES, "fraction", particles.fraction, LO_GE | HI_LE, 0.0, 1.0),
+    POSITIVE(S_PARTICLES, "mass1", particles.first.mass),
+    VEC3(S_PARTICLES, "velocity1", particles.first.velocity),
+    POSITIVE(S_PARTICLES, "temperature1", particles.first.temperature),
+    POSITIVE(S_PARTICLES, "mass2", particles.second.mass),
+    VEC3(S_PARTICLES, "velocity2", particles.second.velocity),
+    POSITIVE(S_PARTICLES, "temperature2", particles.second.temperature),
+    WORDS(S_PARTICLES, "zero_momentum", particles.zero_momentum, bool_words),
+
+    WORDS(S_COLLISIONS, "kernel", collisions.kernel, kernel_words),
+    REAL(S_COLLISIONS, "exponent", collisions.exponent, LO_GE | HI_LE, 0.0, 1.0),
+    POSITIVE(S_COLLISIONS, "constant", collisions.constant),
+    POSITIVE(S_COLLISIONS, "rate", collisions.rate),
+    REAL(S_COLLISIONS, "restitution", collisions.restitution, LO_GT | HI_LE, 0.0, 1.0),
+    WORDS(S_COLLISIONS, "model", collisions.model, model_words),
+
+    WORDS(S_HEATING, "type", heating.type, heating_words),
+    FINITE(S_HEATING, "strength", heating.strength), /* sign checked in check_scene() */
+
+    POSITIVE(S_BACKGROUND, "density", background.density),
+    POSITIVE(S_BACKGROUND, "mass", background.mass),
+    POSITIVE(S_BACKGROUND, "temperature", background.temperature),
+    VEC3(S_BACKGROUND, "velocity", background.velocity),
+    WORDS(S_BACKGROUND, "kernel", background.kernel, background_kernel_words),
+    POSITIVE(S_BACKGROUND, "constant", background.constant),
+
+    FINITE(S_SHEAR, "rate", shear.rate),
+    WORDS(S_SHEAR, "boundary", shear.boundary, boundary_words),
+    POSITIVE(S_SHEAR, "length", shear.length),
+    COUNT(S_SHEAR, "layers", shear.layers, 1, SIZE_MAX),
+
+    FINITE(S_HEAT_FLUX, "strength", heat_flux.strength),
+};
+#define NKEYS (sizeof keys / sizeof keys[0])
+_Static_assert(NKEYS <= SIM_SCENE_MAX_KEYS, "every key must fit in sim_scene.keys");
+
+/* ---- parser state and error recording -------------------------------- */
+
+typedef struct parse_ctx {
+    sim_scene scene;       /* work copy */
+    const char *name;      /* file name for messages */
+    const char *pos;       /* reader: rest of the text */
+    int line;              /* line being parsed; -1 while applying an override */
+    const char *override;  /* override being applied */
+    int failed;
+    sim_status status;
+    sim_error err;
+    int err_line;
+    const char *err_override;
+} parse_ctx;
+
+/* Record the first error only, at the current position. */
+__attribute__((format(printf, 4, 5)))
+static sim_status fail(parse_ctx *c, sim_status status, const char *key, const char *fmt, ...)
+{
+    if (c->failed)
+        return c->status;
+    char text[sizeof c->err.msg];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    c->failed = 1;
+    c->status = sim_error_set(&c->err, status, key, "%s", text);
+    c->err_line = c->line;
+    c->err_override = c->override;
+    return status;
+}
+
+static const char syntax_msg[] = "syntax error (expected key = value or [section])";
+
+/* "FILE:LINE: key: msg", "FILE: key: msg" (line 0) or "--set OVERRIDE: key: msg". */
+static void format_at(const parse_ctx *c, char *msg, size_t msglen)
+{
+    const char *key = c->err.key, *sep = key[0] ? ": " : "";
+    if (c->err_override)
+        snprintf(msg, msglen, "--set %s: %s%s%s", c->err_override, key, sep, c->err.msg);
+    else if (c->err_line > 0)
+        snprintf(msg, msglen, "%s:%d: %s%s%s", c->name, c->err_line, key, sep, c->err.msg);
+    else
+        snprintf(msg, msglen, "%s: %s%s%s", c->name, key, sep, c->err.msg);
+}
+
+/* ---- tables to text -------------------------------------------------- */
+
+static void append(char *buf, size_t len, const char *s)
+{
+    size_t used = strlen(buf);
+    if (used < len)
+        snprintf(buf + used, len - used, "%s", s);
+}
+
+static void section_list(char *buf, size_t len)
+{
+    buf[0] = '\0';
+    for (size_t i = 0; i < NSECTIONS; i++) {
+        append(buf, len, i ? ", " : "");
+        append(buf, len, sections[i].name);
+    }
+}
+
+static void key_list(int section, char *buf, size_t len)
+{
+    buf[0] = '\0';
+    for (size_t i = 0; i < NKEYS; i++)
+        if (keys[i].section == section) {
+            append(buf, len, buf[0] ? ", " : "");
+            append(buf, len, keys[i].name);
+        }
+}
+
+/* The "allowed" text of a key: "0 < restitution <= 1", "maxwell, vhs", ... */
+static void describe(const key_desc *d, char *buf, size_t len)
+{
+    switch (d->kind) {
+    case K_TEXT:
+        snprintf(buf, len, "at most %zu characters", d->size - 1);
+        break;
+    case K_REAL: {
+        const char *lo = (d->bounds & LO_GT) ? "<" : "<=";
+        if ((d->bounds & (LO_GT | LO_GE)) && (d->bounds & HI_LE))
+            snprintf(buf, len, "%g %s %s <= %g", d->lo, lo, d->name, d->hi);
+        else if (d->bounds & (LO_GT | LO_GE))
+            snprintf(buf, len, "%s %s %g", d->name, (d->bounds & LO_GT) ? ">" : ">=", d->lo);
+        else
+            snprintf(buf, len, "any finite number");
+        break;
+    }
+    case K_VEC3:
+        snprintf(buf, len, "three finite numbers separated by spaces");
+        break;
+    case K_SIZE:
+    case K_U64:
+        if (d->kind == K_SIZE && d->max == SIZE_MAX)
+            snprintf(buf, len, "%s >= %llu", d->name, (unsigned long long)d->min);
+        else
+            snprintf(buf, len, "%llu <= %s <= %llu", (unsigned long long)d->min, d->name,
+                     (unsigned long long)d->max);
+        break;
+    case K_WORD:
+        buf[0] = '\0';
+        for (const word_desc *w = d->words; w->word; w++) {
+            append(buf, len, w == d->words ? "" : ", ");
+            append(buf, len, w->word);
+        }
+        break;
+    }
+}
+
+/* ---- value parsers: NULL on success, else what is wrong -------------- */
+
+static const char *parse_real(const char *s, double *out, const char **end_out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s)
+        return "is not a number";
+    if (end_out)
+        *end_out = end;
+    else {
+        while (isspace((unsigned char)*end))
+            end++;
+        if (*end)
+            return "is not a number";
+    }
+    if (errno == ERANGE)
+        return "is out of range of a double";
+    if (!isfinite(v))
+        return "is not a finite number";
+    *out = v;
+    return NULL;
+}
+
+static const char *parse_vec3(const char *s, double v[3])
+{
+    const char *p = s;
+    for (int i = 0; i < 3; i++) {
+        if (i > 0 && !isspace((unsigned char)*p))
+            return "is not three numbers";
+        const char *why = parse_real(p, &v[i], &p);
+        if (why)
+            return strcmp(why, "is not a number") == 0 ? "is not three numbers"
+                                                       : "is not three finite numbers";
+    }
+    while (isspace((unsigned char)*p))
+        p++;
+    return *p ? "is not three numbers" : NULL;
+}
+
+static const char *parse_count(const char *s, uint64_t *out)
+{
+    if (s[0] == '-' && isdigit((unsigned char)s[1]))
+        return "is negative";
+    if (!isdigit((unsigned char)s[0]))  /* no sign, no leading space */
+        return "is not a whole number";
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    while (isspace((unsigned char)*end))
+        end++;
+    if (*end)
+        return "is not a whole number";
+    if (errno == ERANGE)
+        return "is out of range";
+    *out = v;
+    return NULL;
+}
+
+/* ---- applying one key ------------------------------------------------ */
+
+static int find_section(const char *name)
+{
+    for (size_t i = 0; i < NSECTIONS; i++)
+        if (strcmp(sections[i].name, name) == 0)
+            return (int)i;
+    return -1;
+}
+
+static void mark_present(sim_scene *s, int section)
+{
+    if (sections[section].has_present)
+        *(int *)((char *)s + sections[section].present) = 1;
+}
+
+static void record_key(sim_scene *s, const char *full, int line)
+{
+    for (size_t i = 0; i < s->nkeys; i++)
+        if (strcmp(s->keys[i].key, full) == 0) {
+            s->keys[i].line = line;
+            return;
+        }
+    size_t len = strlen(full);  /* known keys are short; the asserts make room */
+    if (s->nkeys < SIM_SCENE_MAX_KEYS && len < sizeof s->keys[0].key) {
+        memcpy(s->keys[s->nkeys].key, full, len + 1);
+        s->keys[s->nkeys++].line = line;
+    }
+}
+
+static sim_status set_value(parse_ctx *c, const key_desc *d, const char *full, const char *value)
+{
+    char *field = (char *)&c->scene + d->offset;
+    char allowed[160];
+    const char *why = "is not valid";
+    describe(d, allowed, sizeof allowed);
+
+    switch (d->kind) {
+    case K_TEXT: {
+        size_t len = strlen(value);
+        if (len >= d->size)
+            return fail(c, SIM_EINVAL, full, "is too long: %zu characters (allowed %s)", len,
+                        allowed);
+        memcpy(field, value, len + 1);
+        return SIM_OK;
+    }
+    case K_REAL: {
+        double v;
+        if ((why = parse_real(value, &v, NULL)))
+            break;
+        if (((d->bounds & LO_GT) && !(v > d->lo)) || ((d->bounds & LO_GE) && !(v >= d->lo)) ||
+            ((d->bounds & HI_LE) && !(v <= d->hi)))
+            return fail(c, SIM_EINVAL, full, "'%s' is out of range (allowed %s)", value, allowed);
+        memcpy(field, &v, sizeof v);
+        return SIM_OK;
+    }
+    case K_VEC3: {
+        double v[3];
+        if ((why = parse_vec3(value, v)))
+            break;
+        memcpy(field, v, sizeof v);
+        return SIM_OK;
+    }
+    case K_SIZE:
+    case K_U64: {
+        uint64_t v;
+        if ((why = parse_count(value, &v)))
+            break;
+        if (v < d->min || v > d->max)
+            return fail(c, SIM_EINVAL, full, "'%s' is out of range (allowed %s)", value, allowed);
+        if (d->kind == K_SIZE) {
+            size_t z = (size_t)v;
+            memcpy(field, &z, sizeof z);
+        } else
+            memcpy(field, &v, sizeof v);
+        return SIM_OK;
+    }
+    case K_WORD:
+        for (const word_desc *w = d->words; w->word; w++)
+            if (strcmp(w->word, value) == 0) {
+                memcpy(field, &w->value, sizeof w->value);
+                return SIM_OK;
+            }
+        why = "is unknown";
+        break;
+    }
+    return fail(c, SIM_EINVAL, full, "'%s' %s (allowed %s)", value, why, allowed);
+}
+
+static sim_status unknown_section(parse_ctx *c, const char *section)
+{
+    char list[128], key[80];
+    snprintf(key, sizeof key, "[%s]", section);
+    section_list(list, sizeof list);
+    return fail(c, SIM_EINVAL, key, "unknown section (allowed %s)", list);
+}
+
+/* Apply section.name = value at the current position (file line or override). */
+static sim_status apply(parse_ctx *c, const char *section, const char *name, const char *value)
+{
+    char list[256], full[96];
+    if (value == NULL || name[0] == '\0')
+        return fail(c, SIM_EINVAL, "", syntax_msg);
+    if (section[0] == '\0') {
+        section_list(list, sizeof list);
+        return fail(c, SIM_EINVAL, name, "key outside any section (allowed sections %s)", list);
+    }
+    int s = find_section(section);
+    if (s < 0)
+        return unknown_section(c, section);
+    snprintf(full, sizeof full, "%s.%s", section, name);
+    const key_desc *d = NULL;
+    for (size_t i = 0; i < NKEYS && !d; i++)
+        if (keys[i].section == s && strcmp(keys[i].name, name) == 0)
+            d = &keys[i];
+    if (!d) {
+        key_list(s, list, sizeof list);
+        return fail(c, SIM_EINVAL, full, "unknown key (allowed %s)", list);
+    }
+    int first = sim_scene_key_line(&c->scene, full);
+    if (c->line > 0 && first > 0)
+        return fail(c, SIM_EINVAL, full, "set twice (first at line %d)", first);
+    sim_status st = set_value(c, d, full, value);
+    if (st != SIM_OK)
+        return st;
+    mark_present(&c->scene, s);
+    record_key(&c->scene, full, c->line);
+    return SIM_OK;
+}
+
+/* ---- inih glue ------------------------------------------------------- */
+
+static int handler(void *user, const char *section, const char *name, const char *value)
+{
+    parse_ctx *c = user;
+    return !c->failed && apply(c, section, name, value) == SIM_OK;
+}
+
+/* Hand inih one whole line per call (see the top of the file). */
+static char *reader(char *buf, int num, void *stream)
+{
+    parse_ctx *c = stream;
+    if (c->failed || *c->pos == '\0')
+        return NULL;
+    const char *p = c->pos, *nl = strchr(p, '\n');
+    const char *end = nl ? nl + 1 : p + strlen(p);
+    c->pos = end;
+    c->line++;
+    if (c->line == 1 && strncmp(p, "\xEF\xBB\xBF", 3) == 0)
+        p += 3;
+    while (p < end && *p != '\n' && isspace((unsigned char)*p))
+        p++;
+    size_t len = (size_t)(end - p);
+    if (num < 3 || len > (size_t)num - 1) {
+        fail(c, SIM_EINVAL, "", "line too long (allowed at most %d characters)", num - 2);
+        return NULL;
+    }
+    if (*p == '[') {  /* a section header, as inih reads it: up to the first ']' */
+        const char *rb = memchr(p, ']', len);
+        if (rb) {
+            char section[64];
+            snprintf(section, sizeof section, "%.*s", (int)(rb - p - 1), p + 1);
+            int s = find_section(section);
+            if (s < 0) {
+                unknown_section(c, section);
+                return NULL;
+            }
+            mark_present(&c->scene, s);
+        }
+    }
+    memcpy(buf, p, len);
+    buf[len] = '\0';
+    return buf;
+}
+
+/* ---- checks across keys ---------------------------------------------- */
+
+static int is_set(const sim_scene *s, const char *key)
+{
+    return sim_scene_key_line(s, key) != 0;
+}
+
+/* Cross-key checks, after the file and the overrides; also sets the exponent
+ * that kernel = maxwell (0) or hard-spheres (1) implies. */
+static sim_status check_scene(sim_scene *s, sim_error *err)
+{
+    static const char *const two[] = {"particles.fraction", "particles.mass1",
+                                      "particles.velocity1", "particles.temperature1",
+                                      "particles.mass2", "particles.velocity2",
+                                      "particles.temperature2"};
+    static const char *const one[] = {"particles.mass", "particles.temperature",
+                                      "particles.velocity"};
+
+    if (s->scheme == SIM_SCHEME_TIMESTEP && !is_set(s, "scene.dt"))
+        return sim_error_set(err, SIM_EINVAL, "scene.scheme",
+                             "timestep needs scene.dt (allowed dt > 0)");
+
+    int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
+    for (size_t i = 0; i < sizeof two / sizeof two[0]; i++) {
+        if (!mix && is_set(s, two[i]))
+            return sim_error_set(err, SIM_EINVAL, two[i],
+                                 "only used with initial = two-maxwellians (initial is %s)",
+                                 s->particles.initial == SIM_INITIAL_SHELL ? "shell"
+                                                                           : "maxwellian");
+        if (mix && !is_set(s, two[i]))
+            return sim_error_set(err, SIM_EINVAL, "particles.initial",
+                                 "two-maxwellians needs %s (allowed fraction, mass1, velocity1, "
+                                 "temperature1, mass2, velocity2, temperature2, all set)",
+                                 two[i]);
+    }
+    for (size_t i = 0; mix && i < sizeof one / sizeof one[0]; i++)
+        if (is_set(s, one[i]))
+            return sim_error_set(err, SIM_EINVAL, one[i],
+                                 "not used with initial = two-maxwellians (allowed the keys "
+                                 "ending in 1 and 2)");
+
+    /* SPEC §3: maxwell is lambda = 0, hard-spheres lambda = 1, vhs needs lambda. */
+    sim_kernel_kind k = s->collisions.kernel;
+    int has_exponent = is_set(s, "collisions.exponent");
+    if (!has_exponent && k != SIM_KERNEL_VHS)
+        s->collisions.exponent = k == SIM_KERNEL_MAXWELL ? 0.0 : 1.0;
+    double lambda = s->collisions.exponent;
+    if (k == SIM_KERNEL_VHS && !has_exponent)
+        return sim_error_set(err, SIM_EINVAL, "collisions.kernel",
+                             "vhs needs collisions.exponent (allowed 0 <= exponent <= 1)");
+    if ((k == SIM_KERNEL_MAXWELL && lambda != 0.0) ||
+        (k == SIM_KERNEL_HARD_SPHERES && lambda != 1.0))
+        return sim_error_set(err, SIM_EINVAL, "collisions.exponent",
+                             "%g contradicts kernel = %s (allowed %s, or kernel = vhs)", lambda,
+                             k == SIM_KERNEL_MAXWELL ? "maxwell" : "hard-spheres",
+                             k == SIM_KERNEL_MAXWELL ? "0" : "1");
+
+    if (s->heating.type == SIM_HEATING_WHITE_NOISE && s->heating.strength < 0.0)
+        return sim_error_set(err, SIM_EINVAL, "heating.strength",
+                             "%g is negative (allowed strength >= 0 for type = white-noise)",
+                             s->heating.strength);
+    return SIM_OK;
+}
+
+/* ---- overrides ------------------------------------------------------- */
+
+/* Copy s[0..n) without surrounding white space; 0 if it does not fit. */
+static int copy_trimmed(char *dst, size_t size, const char *s, size_t n)
+{
+    while (n > 0 && isspace((unsigned char)*s))
+        s++, n--;
+    while (n > 0 && isspace((unsigned char)s[n - 1]))
+        n--;
+    if (n >= size)
+        return 0;
+    memcpy(dst, s, n);
+    dst[n] = '\0';
+    return 1;
+}
+
+static sim_status apply_override(parse_ctx *c, const char *ov)
+{
+    static const char form[] = "expected section.key=value";
+    char section[64], key[64], value[512];
+    c->line = -1;
+    c->override = ov;
+    const char *eq = strchr(ov, '=');
+    if (!eq)
+        return fail(c, SIM_EINVAL, "", "%s (no '=')", form);
+    const char *dot = memchr(ov, '.', (size_t)(eq - ov));
+    if (!dot)
+        return fail(c, SIM_EINVAL, "", "%s (no '.' between section and key)", form);
+    if (!copy_trimmed(section, sizeof section, ov, (size_t)(dot - ov)) ||
+        !copy_trimmed(key, sizeof key, dot + 1, (size_t)(eq - dot - 1)) ||
+        !copy_trimmed(value, sizeof value, eq + 1, strlen(eq + 1)))
+        return fail(c, SIM_EINVAL, "", "%s (too long)", form);
+    if (!section[0] || !key[0])
+        return fail(c, SIM_EINVAL, "", "%s (empty section or key)", form);
+    return apply(c, section, key, value);
+}
+
+/* ---- entry points ---------------------------------------------------- */
+
+static void put_msg(char *msg, size_t msglen, const char *text)
+{
+    if (msg && msglen > 0)
+        snprintf(msg, msglen, "%s", text);
+}
+
+static void ctx_init(parse_ctx *c, const char *name)
+{
+    memset(c, 0, sizeof *c);
+    sim_scene_defaults(&c->scene);
+    c->name = name ? name : "(scene)";
+    snprintf(c->scene.file, sizeof c->scene.file, "%s", c->name);
+}
+
+/* Parse text (already checked for NUL bytes), apply overrides, check. */
+static sim_status run(parse_ctx *c, const char *text, const char *const *overrides,
+                      size_t noverrides, sim_scene *scene, char *msg, size_t msglen)
+{
+    char out[1024] = "";
+    c->pos = text;
+    int ret = ini_parse_stream(reader, c, handler, c);
+    if (ret > 0 && (!c->failed || ret < c->err_line)) {  /* inih's own syntax error first */
+        c->failed = 0;
+        c->line = ret;
+        fail(c, SIM_EINVAL, "", syntax_msg);
+    } else if (ret < 0)
+        fail(c, SIM_ENOMEM, "", "out of memory while parsing");
+
+    for (size_t i = 0; i < noverrides && !c->failed; i++)
+        apply_override(c, overrides[i]);
+
+    if (c->failed) {
+        format_at(c, out, sizeof out);
+        put_msg(msg, msglen, out);
+        return c->status;
+    }
+    sim_error err;
+    sim_status st = check_scene(&c->scene, &err);
+    if (st != SIM_OK) {
+        vfy_scene_format_error(&c->scene, &err, out, sizeof out);
+        put_msg(msg, msglen, out);
+        return st;
+    }
+    *scene = c->scene;
+    put_msg(msg, msglen, "");
+    return SIM_OK;
+}
+
+static sim_status check_args(const void *input, const char *what, const char *const *overrides,
+                             size_t noverrides, const sim_scene *scene, char *msg, size_t msglen)
+{
+    const char *bad = !input ? what : !scene ? "scene" : NULL;
+    for (size_t i = 0; !bad && i < noverrides; i++)
+        if (!overrides || !overrides[i])
+            bad = "overrides";
+    if (!bad)
+        return SIM_OK;
+    if (msg && msglen > 0)
+        snprintf(msg, msglen, "%s is NULL", bad);
+    return SIM_EINVAL;
+}
+
+/* Where the first NUL byte of buf[0..n) is, as a line number (0: none). */
+static int nul_line(const char *buf, size_t n)
+{
+    const char *z = memchr(buf, '\0', n);
+    if (!z)
+        return 0;
+    int line = 1;
+    for (const char *p = buf; p < z; p++)
+        line += *p == '\n';
+    return line;
+}
+
+sim_status vfy_scene_parse(const char *text, const char *name, const char *const *overrides,
+                           size_t noverrides, sim_scene *scene, char *msg, size_t msglen)
+{
+    sim_status st = check_args(text, "text", overrides, noverrides, scene, msg, msglen);
+    if (st != SIM_OK)
+        return st;
+    parse_ctx c;
+    ctx_init(&c, name);
+    return run(&c, text, overrides, noverrides, scene, msg, msglen);
+}
+
+sim_status vfy_scene_load(const char *path, const char *const *overrides, size_t noverrides,
+                          sim_scene *scene, char *msg, size_t msglen)
+{
+    sim_status st = check_args(path, "path", overrides, noverrides, scene, msg, msglen);
+    if (st != SIM_OK)
+        return st;
+    parse_ctx c;
+    ctx_init(&c, path);
+    char out[1024];
+
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        fail(&c, SIM_EIO, "", "cannot open: %s", strerror(errno));
+        format_at(&c, out, sizeof out);
+        put_msg(msg, msglen, out);
+        return c.status;
+    }
+    char *buf = malloc(MAX_FILE_BYTES + 1);
+    size_t n = buf ? fread(buf, 1, MAX_FILE_BYTES + 1, f) : 0;
+    int read_errno = errno;
+    if (!buf)
+        fail(&c, SIM_ENOMEM, "", "out of memory reading the file");
+    else if (ferror(f))
+        fail(&c, SIM_EIO, "", "cannot read: %s", strerror(read_errno));
+    else if (n > MAX_FILE_BYTES)
+        fail(&c, SIM_EINVAL, "", "too large (allowed at most %u bytes)", MAX_FILE_BYTES);
+    else if ((c.line = nul_line(buf, n)) > 0)
+        fail(&c, SIM_EINVAL, "", "NUL byte (allowed text only)");
+    fclose(f);
+    if (c.failed) {
+        format_at(&c, out, sizeof out);
+        put_msg(msg, msglen, out);
+        free(buf);
+        return c.status;
+    }
+    buf[n] = '\0';
+    st = run(&c, buf, overrides, noverrides, scene, msg, msglen);
+    free(buf);
+    return st;
+}
+
+void vfy_scene_format_error(const sim_scene *scene, const sim_error *err, char *msg,
+                            size_t msglen)
+{
+    if (!msg || msglen == 0)
+        return;
+    if (!err) {
+        snprintf(msg, msglen, "%s", "");
+        return;
+    }
+    const char *file = scene && scene->file[0] ? scene->file : "(scene)";
+    if (!err->key[0]) {
+        snprintf(msg, msglen, "%s: %s", file, err->msg);
+        return;
+    }
+    int line = scene ? sim_scene_key_line(scene, err->key) : 0;
+    if (line < 0)
+        snprintf(msg, msglen, "%s: --set %s: %s", file, err->key, err->msg);
+    else if (line == 0)
+        snprintf(msg, msglen, "%s: %s: %s", file, err->key, err->msg);
+    else
+        snprintf(msg, msglen, "%s:%d: %s: %s", file, line, err->key, err->msg);
+}
