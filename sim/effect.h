@@ -45,10 +45,15 @@ typedef struct sim_effect_type {
     /* Flows (NULL for event processes). */
     void (*advance)(const sim_effect *e, double v[3], double dt, gsl_rng *rng);
     void (*step)(const sim_effect *e, sim_run *run, double h);
+    /* How far the flow may move a velocity in time dt: a bound that event
+     * majorants add as a margin (for random flows a bound exceeded with
+     * negligible probability; the majorant-violation counter is the proof). */
+    double (*reach)(const sim_effect *e, double dt);
 
     /* Event processes (NULL for flows). */
     size_t state_size;
-    double (*reset)(const sim_effect *e, sim_run *run, void *state);
+    /* horizon: the time until the next reset (the next output time). */
+    double (*reset)(const sim_effect *e, sim_run *run, void *state, double horizon);
     /* Choose the fire function for this engine: lazy_flow says whether a flow
      * must bring particles forward before they are used. */
     sim_event_fire_fn (*select_fire)(const sim_effect *e, int lazy_flow);

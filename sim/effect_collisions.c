@@ -9,10 +9,11 @@
  * output times and R is raised whenever a particle's velocity changes (after
  * its flow is applied and after a collision), so 2 R bounds every pair the
  * scheme has seen.  A lazy flow can carry an untouched particle beyond R; that
- * shows when the pair is drawn (|g| > U_max in use) and is counted as a
- * majorant violation.  At each output time, with every particle synchronised,
- * reset() recomputes c and R from scratch, so the majorant also shrinks when
- * the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
+ * would show when the pair is drawn (|g| > U_max in use) and is counted as a
+ * majorant violation; to make that negligible, reset() adds the flow's reach
+ * over the time to the next reset to R.  At each output time, with every
+ * particle synchronised, reset() recomputes c and R from scratch, so the
+ * majorant also shrinks when the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
  * candidate is accepted and the rate never changes.
  */
 #include <math.h>
@@ -49,7 +50,7 @@ static double distance_from(const double v[3], const double c[3])
     return sim_norm3(d);
 }
 
-static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate)
+static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, double horizon)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -62,6 +63,8 @@ static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate)
         s->centre[k] = c[k] / (double)n;
     for (size_t i = 0; i < n; i++)
         r = fmax(r, distance_from(run->p.v[i], s->centre));
+    if (run->flow)
+        r += run->flow->type->reach(run->flow, horizon);
     s->radius = r;
     s->umax = 2.0 * r;
     s->rate = p->lambda == 0.0 ? p->prefactor : majorant_rate(p, s);

@@ -23,9 +23,17 @@ static void white_noise_advance(const sim_effect *e, double v[3], double dt, gsl
     v[2] += s * xi[2];
 }
 
+/* Each component moves by N(0, 2 beta dt); 4 standard deviations. */
+static double white_noise_reach(const sim_effect *e, double dt)
+{
+    const white_noise_params *p = e->params;
+    return 4.0 * sqrt(2.0 * p->beta * dt);
+}
+
 static const sim_effect_type white_noise_type = {
     .name = "heating",
     .advance = white_noise_advance,
+    .reach = white_noise_reach,
 };
 
 sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err)

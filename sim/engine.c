@@ -154,12 +154,13 @@ void sim_workspace_free(sim_workspace *ws)
 }
 
 /* Recompute every event process's majorant; return their total rate. */
-static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS])
+static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
+                           double horizon)
 {
     double total = 0.0;
     for (size_t k = 0; k < e->nevents; k++) {
         rates[k] = e->events[k].type->reset(&e->events[k], &ws->run,
-                                            ws->states + e->state_offset[k]);
+                                            ws->states + e->state_offset[k], horizon);
         total += rates[k];
     }
     return total;
@@ -199,8 +200,9 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
     sim_particles_sample(&run->p, scene, rng);
     sim_observe(&run->p, mass, obs);
 
+    const double interval = sim_scene_output_time(scene, 1);   /* between resets */
     double rates[MAX_EVENTS] = {0};
-    double total = reset_events(e, ws, rates);
+    double total = reset_events(e, ws, rates, interval);
     double t = 0.0;
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
@@ -218,7 +220,7 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
             for (size_t i = 0; i < n; i++)
                 sim_run_bring(run, i, t);
         sim_observe(&run->p, mass, obs + m * SIM_OBS_COUNT);
-        total = reset_events(e, ws, rates);
+        total = reset_events(e, ws, rates, interval);
     }
 
     if (counts) {

@@ -1,0 +1,89 @@
+/* Every kind of verification check passes a right answer and fails a wrong
+ * one (SPEC §9: a check must be able to fail). */
+#include "test_util.h"
+
+#include <string.h>
+
+#include "checks.h"
+
+static void test_relative(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    /* SPEC §3 Table 1, n = 256: Emax 0.235E-01 */
+    assert_int_equal(vfy_check_relative(&r, "near", 0.0251, 0.0235, 0.35), VFY_PASS);
+    assert_int_equal(vfy_check_relative(&r, "double", 0.0470, 0.0235, 0.35), VFY_FAIL);
+    assert_int_equal(vfy_check_relative(&r, "too small", 0.0150, 0.0235, 0.35), VFY_FAIL);
+    assert_int_equal(vfy_check_relative(&r, "nan", NAN, 0.0235, 0.35), VFY_FAIL);
+    assert_int_equal(r.failed, 3);
+    assert_string_equal(r.checks[1].detail, "0.047 vs 0.0235 (+100.0%, allowed ±35%)");
+    vfy_report_free(&r);
+}
+
+static void test_range_and_absolute(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_check_range(&r, "CF", 3.81, 3.2, 5.0), VFY_PASS);
+    assert_int_equal(vfy_check_range(&r, "CF", 2.02, 3.2, 5.0), VFY_FAIL);   /* O(1/sqrt n) */
+    assert_int_equal(vfy_check_range(&r, "CF", NAN, 3.2, 5.0), VFY_FAIL);
+    assert_int_equal(vfy_check_absolute(&r, "T*", 0.9562, 0.956, 5e-4), VFY_PASS);
+    assert_int_equal(vfy_check_absolute(&r, "T*", 0.9530, 0.956, 5e-4), VFY_FAIL);
+    assert_int_equal(vfy_check_count(&r, "violations", 0, 0), VFY_PASS);
+    assert_int_equal(vfy_check_count(&r, "violations", 3, 0), VFY_FAIL);
+    assert_int_equal(r.failed, 4);
+    vfy_report_free(&r);
+}
+
+/* z-scores: ci = 3.2 sigma; a mean 3 sigma off passes zmax = 4.5, 6 sigma
+ * off fails; an exact point (ci = 0) must match exactly. */
+static void test_zscore(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    const double exact[4] = {1.0, 2.0, 2.5, 2.6};
+    const double ci[4] = {0.0, 0.032, 0.032, 0.032};
+    double mean[4] = {1.0, 2.0 + 0.03, 2.5 - 0.02, 2.6};
+    double z;
+    assert_int_equal(vfy_check_zscore(&r, "ok", mean, ci, exact, 4, 4.5, &z), VFY_PASS);
+    assert_close(z, 3.0, 1e-12, 0.0);
+    mean[2] = 2.5 + 0.06;   /* 6 sigma */
+    assert_int_equal(vfy_check_zscore(&r, "biased", mean, ci, exact, 4, 4.5, &z), VFY_FAIL);
+    assert_close(z, 6.0, 1e-12, 0.0);
+    mean[2] = 2.5;
+    mean[0] = 1.0 + 1e-9;   /* an exact point that is off */
+    assert_int_equal(vfy_check_zscore(&r, "exact point", mean, ci, exact, 4, 4.5, NULL),
+                     VFY_FAIL);
+    mean[0] = 1.0;
+    mean[3] = NAN;
+    assert_int_equal(vfy_check_zscore(&r, "nan", mean, ci, exact, 4, 4.5, NULL), VFY_FAIL);
+    assert_int_equal(r.failed, 3);
+    vfy_report_free(&r);
+}
+
+static void test_skip_is_not_failure(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    vfy_skip(&r, "CF", "noise-dominated");
+    assert_int_equal(r.failed, 0);
+    assert_int_equal(r.count, 1);
+    assert_int_equal(r.checks[0].verdict, VFY_SKIP);
+    assert_string_equal(r.checks[0].detail, "noise-dominated");
+    vfy_report_free(&r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_relative),
+        cmocka_unit_test(test_range_and_absolute),
+        cmocka_unit_test(test_zscore),
+        cmocka_unit_test(test_skip_is_not_failure),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,83 @@
+/* The verify cases end to end at small sizes: with the right solver their
+ * checks pass; with a deliberately wrong solver (restitution 0.45 instead of
+ * 0.5, through the same --set overrides a user has) or a wrong reference
+ * they fail.  Reports go to a temporary directory. */
+#include "test_util.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "cases.h"
+
+static char out_dir[256];
+static char scene_dir[512];
+
+static int setup(void **state)
+{
+    (void)state;
+    const char *src = getenv("GDSMC_SOURCE_DIR");
+    snprintf(scene_dir, sizeof scene_dir, "%s/verify/scenes", src ? src : "..");
+    snprintf(out_dir, sizeof out_dir, "/tmp/gdsmc-test-XXXXXX");
+    return mkdtemp(out_dir) ? 0 : -1;
+}
+
+/* Failed checks of a quick case run with the overrides (solver only: wrong
+ * solver). */
+static size_t count_failed(const char *case_name, const char *const *wrong, size_t nwrong)
+{
+    static const char *const smaller[] = {"scene.outputs=41"};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir,
+                     .overrides = smaller, .noverrides = 1,
+                     .solver_overrides = wrong, .nsolver_overrides = nwrong};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512];
+    assert_int_equal(vfy_run("quick", case_name, &o, &r, msg, sizeof msg), SIM_OK);
+    size_t failed = r.failed;
+    for (size_t i = 0; i < r.count; i++)
+        if (r.checks[i].verdict == VFY_FAIL)
+            print_message("  FAIL %s: %s\n", r.checks[i].name, r.checks[i].detail);
+    vfy_report_free(&r);
+    return failed;
+}
+
+static void test_grw_ex3_right_solver_passes(void **state)
+{
+    (void)state;
+    assert_int_equal(count_failed("grw-ex3", NULL, 0), 0);
+}
+
+static void test_grw_ex3_wrong_solver_fails(void **state)
+{
+    (void)state;
+    /* alpha = 0.45: the exact finite-n z-tests and the paper's Emax both fail */
+    const char *wrong[] = {"collisions.restitution=0.45"};
+    assert_true(count_failed("grw-ex3", wrong, 1) >= 3);
+}
+
+static void test_grw_ex3_wrong_heating_fails(void **state)
+{
+    (void)state;
+    /* heating 2% too strong */
+    const char *wrong[] = {"heating.strength=1.02"};
+    assert_true(count_failed("grw-ex3", wrong, 1) >= 1);
+}
+
+static void test_grw_ex5(void **state)
+{
+    (void)state;
+    assert_int_equal(count_failed("grw-ex5", NULL, 0), 0);
+    const char *wrong[] = {"collisions.restitution=0.45"};
+    assert_true(count_failed("grw-ex5", wrong, 1) >= 1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_grw_ex3_right_solver_passes),
+        cmocka_unit_test(test_grw_ex3_wrong_solver_fails),
+        cmocka_unit_test(test_grw_ex3_wrong_heating_fails),
+        cmocka_unit_test(test_grw_ex5),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}

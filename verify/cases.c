@@ -1,0 +1,149 @@
+#include "cases.h"
+
+#include <errno.h>
+#include <string.h>
+#include <time.h>
+
+#include "engine.h"
+#include "scene_ini.h"
+#include "table.h"
+
+/* The cases, in suite order (case_grw.c). */
+sim_status vfy_case_grw_convergence(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                                    size_t);
+sim_status vfy_case_grw_hard_spheres(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                                     size_t);
+extern const struct grw_paper_table vfy_grw_table1, vfy_grw_table2;
+
+static const vfy_case cases[] = {
+    {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
+     vfy_case_grw_convergence, &vfy_grw_table1},
+    {"grw-ex4", "grw", "paper A Ex 4, Table 2: cooling Maxwell gas, Emax = O(1/n)", 1,
+     vfy_case_grw_convergence, &vfy_grw_table2},
+    {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
+     vfy_case_grw_hard_spheres, NULL},
+};
+
+size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
+
+const vfy_case *vfy_case_at(size_t i) { return i < vfy_case_count() ? &cases[i] : NULL; }
+
+const vfy_case *vfy_case_find(const char *name)
+{
+    for (size_t i = 0; i < vfy_case_count(); i++)
+        if (strcmp(cases[i].name, name) == 0)
+            return &cases[i];
+    return NULL;
+}
+
+int vfy_suite_exists(const char *name)
+{
+    if (strcmp(name, "quick") == 0 || strcmp(name, "paper") == 0)
+        return 1;
+    for (size_t i = 0; i < vfy_case_count(); i++)
+        if (strcmp(cases[i].suite, name) == 0)
+            return 1;
+    return 0;
+}
+
+static int in_suite(const vfy_case *c, const char *suite)
+{
+    return strcmp(suite, "paper") == 0 || (strcmp(suite, "quick") == 0 && c->quick)
+           || strcmp(suite, c->suite) == 0;
+}
+
+sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
+                   vfy_report *r, char *msg, size_t msglen)
+{
+    if (suite == NULL)
+        suite = "paper";
+    if (vfy_ensure_dir(o->out_dir) != 0) {
+        snprintf(msg, msglen, "%s: cannot create the report directory: %s", o->out_dir,
+                 strerror(errno));
+        return SIM_EIO;
+    }
+    for (size_t i = 0; i < vfy_case_count(); i++) {
+        const vfy_case *c = &cases[i];
+        if (case_name ? strcmp(case_name, c->name) != 0 : !in_suite(c, suite))
+            continue;
+        if (o->progress)
+            fprintf(o->progress, "== %s (%s sizes): %s\n", c->name,
+                    o->size == VFY_QUICK ? "quick" : "paper", c->summary);
+        sim_status status = c->run(c, o, r, msg, msglen);
+        if (status != SIM_OK)
+            return status;
+    }
+    return SIM_OK;
+}
+
+sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scene *scene,
+                               sim_scene *solver, char *msg, size_t msglen)
+{
+    char path[1024];
+    const char *sets[128];
+    if (o->noverrides + o->nsolver_overrides > sizeof sets / sizeof *sets) {
+        snprintf(msg, msglen, "too many overrides (at most 128)");
+        return SIM_EINVAL;
+    }
+    for (size_t i = 0; i < o->noverrides; i++)
+        sets[i] = o->overrides[i];
+    for (size_t i = 0; i < o->nsolver_overrides; i++)
+        sets[o->noverrides + i] = o->solver_overrides[i];
+    snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, c->name);
+    sim_status status = vfy_scene_load(path, o->overrides, o->noverrides, scene, msg, msglen);
+    if (status == SIM_OK)
+        status = vfy_scene_load(path, sets, o->noverrides + o->nsolver_overrides, solver, msg,
+                                msglen);
+    return status;
+}
+
+typedef struct progress_state {
+    FILE *out;
+    const char *label;
+    double start, last;
+} progress_state;
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* A progress line at most every 5 s, and none for runs that finish sooner. */
+static void print_progress(size_t done, size_t total, void *ctx)
+{
+    progress_state *p = ctx;
+    double t = wall_now();
+    if (t - p->last < 5.0 || done == total)
+        return;
+    p->last = t;
+    double eta = (t - p->start) * (double)(total - done) / (double)done;
+    fprintf(p->out, "   %s: %zu/%zu ensembles, %.0f s elapsed, about %.0f s to go\n", p->label,
+            done, total, t - p->start, eta);
+    fflush(p->out);
+}
+
+sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
+                        sim_ensemble_result *res, char *msg, size_t msglen)
+{
+    sim_engine *engine = NULL;
+    sim_error err = {{0}, {0}};
+    memset(res, 0, sizeof *res);
+    sim_status status = sim_engine_create(scene, &engine, &err);
+    if (status == SIM_OK) {
+        progress_state p = {o->progress, label, wall_now(), wall_now()};
+        status = sim_ensemble_run(engine, o->progress ? print_progress : NULL, &p, res, &err);
+    }
+    if (status != SIM_OK)
+        vfy_scene_format_error(scene, &err, msg, msglen);
+    sim_engine_free(engine);
+    return status;
+}
+
+const char *vfy_report_path(const vfy_options *o, const char *name, const char *suffix,
+                            char *buf, size_t len)
+{
+    snprintf(buf, len, "%s/%s%s", o->out_dir, name, suffix);
+    return buf;
+}

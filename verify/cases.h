@@ -1,0 +1,79 @@
+/* Verification cases and suites (SPEC §9).
+ *
+ * A case runs solver against reference over a sequence of particle numbers,
+ * writes reports/<case>.csv, reports/<case>.md and a figure, and records one
+ * verdict per check.  Suites: `quick` (CI, minutes on 2 cores: small sizes),
+ * `paper` (every case at the papers' sizes), `grw` (paper A's cases at the
+ * paper's sizes).
+ */
+#ifndef GDSMC_VFY_CASES_H
+#define GDSMC_VFY_CASES_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "checks.h"
+#include "ensemble.h"
+#include "error.h"
+#include "scene.h"
+
+typedef enum vfy_size { VFY_QUICK, VFY_PAPER } vfy_size;
+
+typedef struct vfy_options {
+    vfy_size size;
+    const char *out_dir;               /* where reports go ("reports") */
+    const char *scene_dir;             /* where scene files are ("verify/scenes") */
+    const char *const *overrides;      /* --set: change every case (solver and references) */
+    size_t noverrides;
+    const char *const *solver_overrides; /* --solver-set: change only the simulated scene,
+                                            e.g. a deliberately wrong solver */
+    size_t nsolver_overrides;
+    FILE *progress;                    /* progress lines, or NULL for silence */
+} vfy_options;
+
+typedef struct vfy_case vfy_case;
+
+/* Run a case: fill the report; return SIM_OK when it ran (whatever the
+ * verdicts), or an error with msg (bad scene, I/O) when it could not. */
+typedef sim_status (*vfy_case_fn)(const vfy_case *c, const vfy_options *o, vfy_report *r,
+                                  char *msg, size_t msglen);
+
+struct vfy_case {
+    const char *name;      /* also the scene file's stem and the report's name */
+    const char *suite;     /* the paper's suite: "grw" */
+    const char *summary;   /* one line for --list */
+    int quick;             /* part of the quick suite */
+    vfy_case_fn run;
+    const void *data;      /* the case's own constants (a paper table) */
+};
+
+size_t vfy_case_count(void);
+const vfy_case *vfy_case_at(size_t i);
+const vfy_case *vfy_case_find(const char *name);
+
+/* Is `name` a suite ("quick", "paper" or a paper's suite such as "grw")? */
+int vfy_suite_exists(const char *name);
+
+/* Run every case of the suite, or only case_name (at the suite's sizes; the
+ * default suite for a single case is "paper").  Stops at the first case that
+ * cannot run (returns its error).  Reports go to o->out_dir. */
+sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
+                   vfy_report *r, char *msg, size_t msglen);
+
+/* Shared by the cases: load o->scene_dir/<name>.ini with o's overrides into
+ * *scene (what the references describe) and, with the solver overrides added,
+ * into *solver (what is simulated). */
+sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scene *scene,
+                               sim_scene *solver, char *msg, size_t msglen);
+
+/* Shared by the cases: build the engine for scene and run its ensembles,
+ * with progress lines labelled `label`.  msg gets "FILE:LINE: key: ..." on
+ * failure. */
+sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
+                        sim_ensemble_result *res, char *msg, size_t msglen);
+
+/* out_dir/<name><suffix>, in buf. */
+const char *vfy_report_path(const vfy_options *o, const char *name, const char *suffix,
+                            char *buf, size_t len);
+
+#endif

@@ -1,0 +1,62 @@
+/* Verification checks and their verdicts (SPEC §9).
+ *
+ * Each check records one line, "PASS|FAIL|SKIP  name: detail", in a report;
+ * a report with any FAIL makes `gdsmc verify` exit 1.  Every kind of check
+ * here has a test in tests/test_checks.c that hands it a wrong answer and sees
+ * it fail.
+ */
+#ifndef GDSMC_VFY_CHECKS_H
+#define GDSMC_VFY_CHECKS_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+typedef enum vfy_verdict { VFY_FAIL = 0, VFY_PASS = 1, VFY_SKIP = 2 } vfy_verdict;
+
+typedef struct vfy_check {
+    vfy_verdict verdict;
+    char name[96];
+    char detail[320];
+} vfy_check;
+
+typedef struct vfy_report {
+    vfy_check *checks;
+    size_t count, capacity;
+    size_t failed;
+    FILE *echo;   /* if not NULL, each verdict is printed here as it is made */
+} vfy_report;
+
+void vfy_report_init(vfy_report *r, FILE *echo);
+void vfy_report_free(vfy_report *r);
+
+/* |value / expected - 1| <= rtol: a value printed by a paper, within a band. */
+vfy_verdict vfy_check_relative(vfy_report *r, const char *name, double value, double expected,
+                               double rtol);
+
+/* lo <= value <= hi: e.g. a convergence factor near 4. */
+vfy_verdict vfy_check_range(vfy_report *r, const char *name, double value, double lo, double hi);
+
+/* |value - expected| <= atol: e.g. a steady temperature to three digits. */
+vfy_verdict vfy_check_absolute(vfy_report *r, const char *name, double value, double expected,
+                               double atol);
+
+/* Statistical agreement with an exact expectation at every point:
+ * max_m |mean[m] - exact[m]| / (ci[m] / lambda_p) <= zmax, where ci is the
+ * confidence half-width lambda_p sigma.  Points with ci = 0 must match exactly
+ * (to 1e-12 relative).  *max_z (may be NULL) receives the largest |z|. */
+vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean,
+                             const double *ci, const double *exact, size_t count, double zmax,
+                             double *max_z);
+
+/* value == expected: counters such as majorant violations. */
+vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uint64_t expected);
+
+/* A check that does not apply here, with the reason (never a failure). */
+void vfy_skip(vfy_report *r, const char *name, const char *reason);
+
+/* printf-style "%s", for names built on the fly. */
+const char *vfy_name(char *buf, size_t len, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+#endif

@@ -1,0 +1,348 @@
+#include "cli.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cases.h"
+#include "engine.h"
+#include "ensemble.h"
+#include "scene_ini.h"
+#include "scene_refs.h"
+#include "table.h"
+
+enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_BAD_INPUT = 2 };
+#define MAX_SETS 64
+
+static const char usage_main[] =
+    "usage: gdsmc COMMAND [OPTIONS]\n"
+    "\n"
+    "Verification suite for DSMC solvers of the spatially homogeneous granular\n"
+    "Boltzmann equation (see README.md and SPEC.md).\n"
+    "\n"
+    "commands:\n"
+    "  run SCENE        simulate a scene; CSV of ensemble means and confidence half-widths\n"
+    "  reference SCENE  the deterministic references that apply to a scene, as CSV\n"
+    "  verify           run verification cases and write tables and figures to reports/\n"
+    "\n"
+    "  gdsmc COMMAND --help   options of a command\n"
+    "  gdsmc --version\n"
+    "\n"
+    "exit status: 0 success, 1 a verification check failed, 2 bad input or error.\n";
+
+static const char usage_run[] =
+    "usage: gdsmc run SCENE [--set SECTION.KEY=VALUE]... [--out FILE.csv]\n"
+    "\n"
+    "Simulate the scene's N ensembles of n particles and write one CSV row per\n"
+    "output time: t, then for each observable its ensemble mean NAME and its\n"
+    "confidence half-width NAME_ci = 3.2 sqrt(Var/N) (p = 0.999). Observables:\n"
+    "T (centred temperature), T_raw ((m/3n) sum |v|^2, paper A's tables), ux uy uz,\n"
+    "Pxx Pyy Pzz Pxy Pxz Pyz, qx qy qz, a2, a3. Lines starting with '#' carry the\n"
+    "version, scene, seed and run counters.\n"
+    "\n"
+    "  --set S.K=V   override a scene key (same checks as the file), repeatable\n"
+    "  --out FILE    write the CSV to FILE (default: standard output)\n"
+    "  --quiet       no progress or summary on standard error\n"
+    "\n"
+    "Threads: OMP_NUM_THREADS; the numbers do not depend on it.\n";
+
+static const char usage_reference[] =
+    "usage: gdsmc reference SCENE [--set SECTION.KEY=VALUE]... [--out FILE.csv]\n"
+    "\n"
+    "Write the references that apply to the scene on its output times, one column\n"
+    "per reference named QUANTITY_MODEL: for heated Maxwell molecules T_exact\n"
+    "(paper A Eq. 13) and the exact expectations of the n-particle estimators\n"
+    "T_finite_n and T_raw_finite_n; for heated hard spheres T_maxwell_closure and\n"
+    "T_sonine_closure (CVODE). Exit 2 when no reference applies.\n";
+
+static const char usage_verify[] =
+    "usage: gdsmc verify [--suite quick|paper|grw] [--case NAME] [--out DIR]\n"
+    "                    [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
+    "                    [--list]\n"
+    "\n"
+    "Run solver against reference and write DIR/<case>.csv, DIR/<case>.md,\n"
+    "DIR/<case>-curves.csv and a gnuplot figure DIR/<case>.png (when gnuplot is\n"
+    "installed). Prints one verdict per check (PASS, FAIL or SKIP with the reason)\n"
+    "and exits 1 if any check fails.\n"
+    "\n"
+    "  --suite S    quick (CI sizes, minutes), paper (every case at the paper's\n"
+    "               sizes, the default), or a paper's own suite: grw (paper A)\n"
+    "  --case NAME  only this case (at the suite's sizes); --list shows them\n"
+    "  --out DIR    where reports go (default: reports)\n"
+    "  --scenes DIR where the case scenes are (default: the source tree's\n"
+    "               verify/scenes)\n"
+    "  --set S.K=V  override a key of every case's scene, for the simulation and\n"
+    "               the references alike (e.g. --set scene.seed=7)\n"
+    "  --solver-set S.K=V  override a key for the simulation only: a deliberately\n"
+    "               wrong solver, which the checks must catch (e.g.\n"
+    "               --solver-set collisions.restitution=0.45)\n"
+    "  --list       list the cases and suites\n";
+
+typedef struct args {
+    const char *scene, *out, *suite, *case_name, *scenes;
+    const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
+    size_t nsets, nsolver_sets;
+    int quiet, list;
+} args;
+
+static int bad_usage(const char *cmd, const char *fmt, const char *what)
+{
+    fprintf(stderr, "gdsmc %s: ", cmd);
+    fprintf(stderr, fmt, what);
+    fprintf(stderr, " (see gdsmc %s --help)\n", cmd);
+    return EXIT_BAD_INPUT;
+}
+
+/* Parse the options of a command; positional SCENE if wants_scene.
+ * Returns -1 when parsing succeeded, else the exit code (help: 0). */
+static int parse_args(const char *cmd, const char *usage, int wants_scene, int argc, char **argv,
+                      args *a)
+{
+    memset(a, 0, sizeof *a);
+    for (int i = 0; i < argc; i++) {
+        const char *s = argv[i];
+        const char **value = NULL;
+        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+            fputs(usage, stdout);
+            return EXIT_OK;
+        } else if (strcmp(s, "--quiet") == 0) {
+            a->quiet = 1;
+            continue;
+        } else if (strcmp(s, "--list") == 0 && strcmp(cmd, "verify") == 0) {
+            a->list = 1;
+            continue;
+        } else if (strcmp(s, "--set") == 0) {
+            if (a->nsets == MAX_SETS)
+                return bad_usage(cmd, "more than %s --set options", "64");
+            value = &a->sets[a->nsets++];
+        } else if (strcmp(s, "--solver-set") == 0 && strcmp(cmd, "verify") == 0) {
+            if (a->nsolver_sets == MAX_SETS)
+                return bad_usage(cmd, "more than %s --solver-set options", "64");
+            value = &a->solver_sets[a->nsolver_sets++];
+        } else if (strcmp(s, "--out") == 0) {
+            value = &a->out;
+        } else if (strcmp(cmd, "verify") == 0 && strcmp(s, "--suite") == 0) {
+            value = &a->suite;
+        } else if (strcmp(cmd, "verify") == 0 && strcmp(s, "--case") == 0) {
+            value = &a->case_name;
+        } else if (strcmp(cmd, "verify") == 0 && strcmp(s, "--scenes") == 0) {
+            value = &a->scenes;
+        } else if (s[0] == '-' && s[1] != '\0') {
+            return bad_usage(cmd, "unknown option '%s'", s);
+        } else if (wants_scene && a->scene == NULL) {
+            a->scene = s;
+            continue;
+        } else {
+            return bad_usage(cmd, "unexpected argument '%s'", s);
+        }
+        if (i + 1 >= argc)
+            return bad_usage(cmd, "option '%s' needs a value", s);
+        *value = argv[++i];
+    }
+    if (wants_scene && a->scene == NULL)
+        return bad_usage(cmd, "%s", "missing SCENE file");
+    return -1;
+}
+
+/* Open the output (FILE.tmp, renamed on success) or standard output. */
+static FILE *open_out(const char *cmd, const char *path, char *tmp, size_t tmplen)
+{
+    if (path == NULL)
+        return stdout;
+    FILE *f = vfy_file_begin(path, tmp, tmplen);
+    if (f == NULL)
+        fprintf(stderr, "gdsmc %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
+    return f;
+}
+
+static int close_out(const char *cmd, FILE *f, const char *path, const char *tmp)
+{
+    if (path == NULL)
+        return fflush(stdout) == 0 ? EXIT_OK : EXIT_BAD_INPUT;
+    if (vfy_file_commit(f, tmp, path, 1) != 0) {
+        fprintf(stderr, "gdsmc %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
+        return EXIT_BAD_INPUT;
+    }
+    return EXIT_OK;
+}
+
+static int load_scene(const char *cmd, const args *a, sim_scene *scene)
+{
+    char msg[1024];
+    if (vfy_scene_load(a->scene, a->sets, a->nsets, scene, msg, sizeof msg) != SIM_OK) {
+        fprintf(stderr, "gdsmc %s: %s\n", cmd, msg);
+        return EXIT_BAD_INPUT;
+    }
+    return EXIT_OK;
+}
+
+static int cmd_run(int argc, char **argv)
+{
+    args a;
+    int rc = parse_args("run", usage_run, 1, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    sim_scene scene;
+    if ((rc = load_scene("run", &a, &scene)) != EXIT_OK)
+        return rc;
+
+    /* Build the engine before any output exists, so a refused scene leaves nothing. */
+    sim_engine *engine = NULL;
+    sim_error err;
+    char msg[1024];
+    if (sim_engine_create(&scene, &engine, &err) != SIM_OK) {
+        vfy_scene_format_error(&scene, &err, msg, sizeof msg);
+        fprintf(stderr, "gdsmc run: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    sim_engine_free(engine);
+
+    vfy_options o = {.progress = a.quiet ? NULL : stderr};
+    sim_ensemble_result res;
+    if (vfy_simulate(&scene, &o, scene.file, &res, msg, sizeof msg) != SIM_OK) {
+        fprintf(stderr, "gdsmc run: %s\n", msg);
+        sim_ensemble_result_free(&res);
+        return EXIT_BAD_INPUT;
+    }
+
+    char tmp[1100];
+    FILE *f = open_out("run", a.out, tmp, sizeof tmp);
+    if (f == NULL) {
+        sim_ensemble_result_free(&res);
+        return EXIT_BAD_INPUT;
+    }
+    fprintf(f, "# gdsmc %s run %s: seed %llu, n = %zu, N = %zu, effects: %s\n", GDSMC_VERSION,
+            scene.file, (unsigned long long)scene.seed, res.n, res.ensembles,
+            scene.collisions.present || scene.heating.present ? "see scene" : "none");
+    fprintf(f, "# candidate events %llu, collisions %llu, majorant violations %llu\n",
+            (unsigned long long)res.counts.candidates, (unsigned long long)res.counts.collisions,
+            (unsigned long long)res.counts.violations);
+    fputs("t", f);
+    for (int k = 0; k < SIM_OBS_COUNT; k++)
+        fprintf(f, ",%s,%s_ci", sim_observable_name(k), sim_observable_name(k));
+    fputc('\n', f);
+    for (size_t m = 0; m < res.outputs; m++) {
+        fprintf(f, "%.10g", res.t[m]);
+        for (int k = 0; k < SIM_OBS_COUNT; k++)
+            fprintf(f, ",%.12g,%.6g", sim_result_mean(&res, m, k), sim_result_ci(&res, m, k));
+        fputc('\n', f);
+    }
+    if (!a.quiet)
+        fprintf(stderr, "gdsmc run: %zu ensembles of %zu particles, %llu candidate events "
+                "(%llu collisions, %llu majorant violations), %.2f s CPU, %.2f s wall on %d "
+                "threads\n", res.ensembles, res.n, (unsigned long long)res.counts.candidates,
+                (unsigned long long)res.counts.collisions,
+                (unsigned long long)res.counts.violations, res.cpu_seconds, res.wall_seconds,
+                res.threads);
+    sim_ensemble_result_free(&res);
+    return close_out("run", f, a.out, tmp);
+}
+
+static int cmd_reference(int argc, char **argv)
+{
+    args a;
+    int rc = parse_args("reference", usage_reference, 1, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    sim_scene scene;
+    if ((rc = load_scene("reference", &a, &scene)) != EXIT_OK)
+        return rc;
+    vfy_refs refs;
+    sim_error err;
+    char msg[1024];
+    if (vfy_scene_references(&scene, &refs, &err) != SIM_OK) {
+        vfy_scene_format_error(&scene, &err, msg, sizeof msg);
+        fprintf(stderr, "gdsmc reference: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    char tmp[1100];
+    FILE *f = open_out("reference", a.out, tmp, sizeof tmp);
+    if (f == NULL) {
+        vfy_refs_free(&refs);
+        return EXIT_BAD_INPUT;
+    }
+    fprintf(f, "# gdsmc %s reference %s: n = %zu\n", GDSMC_VERSION, scene.file,
+            scene.particles.n);
+    fputs("t", f);
+    for (size_t j = 0; j < refs.count; j++)
+        fprintf(f, ",%s", refs.names[j]);
+    fputc('\n', f);
+    for (size_t m = 0; m < refs.outputs; m++) {
+        fprintf(f, "%.10g", sim_scene_output_time(&scene, m));
+        for (size_t j = 0; j < refs.count; j++)
+            fprintf(f, ",%.14g", refs.values[m * VFY_REFS_MAX + j]);
+        fputc('\n', f);
+    }
+    vfy_refs_free(&refs);
+    return close_out("reference", f, a.out, tmp);
+}
+
+static int cmd_verify(int argc, char **argv)
+{
+    args a;
+    int rc = parse_args("verify", usage_verify, 0, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    if (a.list) {
+        printf("suites: quick (CI sizes), paper (all cases, paper sizes), grw (paper A)\n"
+               "cases:\n");
+        for (size_t i = 0; i < vfy_case_count(); i++)
+            printf("  %-10s %-6s %s%s\n", vfy_case_at(i)->name, vfy_case_at(i)->suite,
+                   vfy_case_at(i)->summary, vfy_case_at(i)->quick ? " [quick]" : "");
+        return EXIT_OK;
+    }
+    if (a.suite && !vfy_suite_exists(a.suite))
+        return bad_usage("verify", "unknown suite '%s' (allowed quick, paper, grw)", a.suite);
+    if (a.case_name && !vfy_case_find(a.case_name))
+        return bad_usage("verify", "unknown case '%s' (gdsmc verify --list shows them)",
+                         a.case_name);
+    vfy_options o = {
+        .size = a.suite && strcmp(a.suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
+        .out_dir = a.out ? a.out : "reports",
+        .scene_dir = a.scenes ? a.scenes : GDSMC_SOURCE_DIR "/verify/scenes",
+        .overrides = a.sets,
+        .noverrides = a.nsets,
+        .solver_overrides = a.solver_sets,
+        .nsolver_overrides = a.nsolver_sets,
+        .progress = a.quiet ? NULL : stderr,
+    };
+    vfy_report report;
+    vfy_report_init(&report, stdout);
+    char msg[1024] = "";
+    sim_status status = vfy_run(a.suite, a.case_name, &o, &report, msg, sizeof msg);
+    size_t passed = 0, skipped = 0;
+    for (size_t i = 0; i < report.count; i++) {
+        passed += report.checks[i].verdict == VFY_PASS;
+        skipped += report.checks[i].verdict == VFY_SKIP;
+    }
+    size_t failed = report.failed;
+    vfy_report_free(&report);
+    if (status != SIM_OK) {
+        fprintf(stderr, "gdsmc verify: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    printf("verify: %zu passed, %zu failed, %zu skipped\n", passed, failed, skipped);
+    return failed ? EXIT_CHECK_FAILED : EXIT_OK;
+}
+
+int gdsmc_main(int argc, char **argv)
+{
+    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        fputs(usage_main, argc < 2 ? stderr : stdout);
+        return argc < 2 ? EXIT_BAD_INPUT : EXIT_OK;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("gdsmc %s\n", GDSMC_VERSION);
+        return EXIT_OK;
+    }
+    if (strcmp(argv[1], "run") == 0)
+        return cmd_run(argc - 2, argv + 2);
+    if (strcmp(argv[1], "reference") == 0)
+        return cmd_reference(argc - 2, argv + 2);
+    if (strcmp(argv[1], "verify") == 0)
+        return cmd_verify(argc - 2, argv + 2);
+    fprintf(stderr, "gdsmc: unknown command '%s' (allowed run, reference, verify; see gdsmc "
+            "--help)\n", argv[1]);
+    return EXIT_BAD_INPUT;
+}

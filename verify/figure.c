@@ -1,0 +1,15 @@
+#include "figure.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+
+int vfy_gnuplot(const char *script_path)
+{
+    if (system("command -v gnuplot >/dev/null 2>&1") != 0)
+        return 0;
+    char cmd[1200];
+    snprintf(cmd, sizeof cmd, "gnuplot '%s' 2>/dev/null", script_path);
+    int status = system(cmd);
+    return status == 0 ? 1 : -1;
+}

@@ -1,0 +1,43 @@
+/* The deterministic references that apply to a scene (SPEC §8, §9), on the
+ * scene's output-time grid.  One place decides which reference fits which
+ * scene; `gdsmc reference` and the verify cases both use it.
+ *
+ * Paper A scenes (binary collisions, optional white-noise heating, unit mass,
+ * initial Maxwellian at rest):
+ *   maxwell kernel:      T_exact (A.13), and the exact expectations of the
+ *                        n-particle estimators, T_finite_n and T_raw_finite_n
+ *                        (reference/heated.h; i.i.d. initial state only)
+ *   hard-spheres kernel: T_maxwell_closure, T_sonine_closure (SPEC §3 Ex 5)
+ */
+#ifndef GDSMC_VFY_SCENE_REFS_H
+#define GDSMC_VFY_SCENE_REFS_H
+
+#include <stddef.h>
+
+#include "error.h"
+#include "heated.h"
+#include "scene.h"
+
+#define VFY_REFS_MAX 4
+
+typedef struct vfy_refs {
+    size_t outputs;
+    size_t count;
+    char names[VFY_REFS_MAX][32];
+    double *values;   /* [outputs * VFY_REFS_MAX], column j of row m at m * VFY_REFS_MAX + j */
+} vfy_refs;
+
+/* Compute the references for scene (n taken from the scene).  Returns
+ * SIM_EUNSUPPORTED naming the key at fault when none applies, SIM_EINVAL if a
+ * CVODE integration failed (message says why), SIM_ENOMEM. */
+sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_error *err);
+
+/* Column of a reference by name, or NULL. */
+const double *vfy_refs_column(const vfy_refs *refs, const char *name, double *buf);
+
+void vfy_refs_free(vfy_refs *refs);
+
+/* The paper A parameters of a scene (no checks). */
+ref_heated_params vfy_heated_params(const sim_scene *scene);
+
+#endif

@@ -1,0 +1,121 @@
+#include "table.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+void vfy_table_init(vfy_table *t, size_t ncols, const char *const *cols)
+{
+    memset(t, 0, sizeof *t);
+    t->ncols = ncols;
+    t->cols = cols;
+}
+
+void vfy_table_free(vfy_table *t)
+{
+    for (size_t i = 0; i < t->ncells; i++)
+        free(t->cells[i]);
+    free(t->cells);
+    memset(t, 0, sizeof *t);
+}
+
+int vfy_table_cell(vfy_table *t, const char *fmt, ...)
+{
+    if (t->ncells == t->capacity) {
+        size_t cap = t->capacity ? 2 * t->capacity : 64;
+        char **grown = realloc(t->cells, cap * sizeof *grown);
+        if (grown == NULL)
+            return -1;
+        t->cells = grown;
+        t->capacity = cap;
+    }
+    char buf[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    char *cell = strdup(buf);
+    if (cell == NULL)
+        return -1;
+    t->cells[t->ncells++] = cell;
+    return 0;
+}
+
+FILE *vfy_file_begin(const char *path, char *tmp, size_t tmplen)
+{
+    if ((size_t)snprintf(tmp, tmplen, "%s.tmp", path) >= tmplen) {
+        errno = ENAMETOOLONG;
+        return NULL;
+    }
+    return fopen(tmp, "w");
+}
+
+int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok)
+{
+    ok = ok && !ferror(f);
+    if (fclose(f) != 0)
+        ok = 0;
+    if (!ok) {
+        int saved = errno;
+        remove(tmp);
+        errno = saved ? saved : EIO;
+        return -1;
+    }
+    return rename(tmp, path);
+}
+
+int vfy_ensure_dir(const char *path)
+{
+    if (mkdir(path, 0777) == 0 || errno == EEXIST)
+        return 0;
+    return -1;
+}
+
+int vfy_table_write_csv(const vfy_table *t, const char *path, const char *comment)
+{
+    char tmp[1024];
+    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    for (const char *line = comment; line && *line;) {
+        const char *end = strchr(line, '\n');
+        size_t len = end ? (size_t)(end - line) : strlen(line);
+        fprintf(f, "# %.*s\n", (int)len, line);
+        line = end ? end + 1 : line + len;
+    }
+    for (size_t c = 0; c < t->ncols; c++)
+        fprintf(f, "%s%s", c ? "," : "", t->cols[c]);
+    fputc('\n', f);
+    for (size_t i = 0; i < t->ncells; i++)
+        fprintf(f, "%s%s", t->cells[i], (i + 1) % t->ncols ? "," : "\n");
+    return vfy_file_commit(f, tmp, path, 1);
+}
+
+int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *title,
+                             const char *notes)
+{
+    char tmp[1024];
+    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    fprintf(f, "# %s\n\n", title);
+    if (notes && *notes)
+        fprintf(f, "%s\n\n", notes);
+    fputc('|', f);
+    for (size_t c = 0; c < t->ncols; c++)
+        fprintf(f, " %s |", t->cols[c]);
+    fputs("\n|", f);
+    for (size_t c = 0; c < t->ncols; c++)
+        fputs("---:|", f);
+    fputc('\n', f);
+    for (size_t i = 0; i < t->ncells; i++) {
+        if (i % t->ncols == 0)
+            fputc('|', f);
+        fprintf(f, " %s |", t->cells[i][0] ? t->cells[i] : "–");
+        if ((i + 1) % t->ncols == 0)
+            fputc('\n', f);
+    }
+    return vfy_file_commit(f, tmp, path, 1);
+}

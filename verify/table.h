@@ -1,0 +1,48 @@
+/* Tables of results and their files (SPEC §9): CSV (a header row of column
+ * names, '#' comment lines before it, plain numbers: opens in a spreadsheet
+ * and in gnuplot with `set datafile separator ','`) and Markdown.
+ *
+ * Files are written to FILE.tmp and renamed into place, so a reader never
+ * sees a half-written file.
+ */
+#ifndef GDSMC_VFY_TABLE_H
+#define GDSMC_VFY_TABLE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+typedef struct vfy_table {
+    size_t ncols;
+    const char *const *cols;  /* column names, not owned */
+    size_t ncells, capacity;
+    char **cells;             /* row-major, owned */
+} vfy_table;
+
+void vfy_table_init(vfy_table *t, size_t ncols, const char *const *cols);
+void vfy_table_free(vfy_table *t);
+
+/* Append the next cell (rows fill left to right); "" is an empty cell.
+ * Returns 0, or -1 when out of memory. */
+int vfy_table_cell(vfy_table *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static inline size_t vfy_table_rows(const vfy_table *t) { return t->ncells / t->ncols; }
+
+/* Write the table as CSV; comment (may be NULL, may hold several lines) goes
+ * first, each line prefixed "# ".  Returns 0, or -1 with errno set. */
+int vfy_table_write_csv(const vfy_table *t, const char *path, const char *comment);
+
+/* Write "# title", the notes paragraph (may be NULL) and the table in
+ * Markdown; empty cells print as "–".  Returns 0, or -1 with errno set. */
+int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *title,
+                             const char *notes);
+
+/* Open path.tmp for writing (tmp receives its name, tmplen bytes); commit with
+ * vfy_file_commit, which closes it and renames it over path (or removes it
+ * when ok = 0).  Returns NULL (errno set) on failure. */
+FILE *vfy_file_begin(const char *path, char *tmp, size_t tmplen);
+int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok);
+
+/* Create directory path (one level) if it does not exist.  Returns 0 or -1. */
+int vfy_ensure_dir(const char *path);
+
+#endif
