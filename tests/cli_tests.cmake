@@ -31,3 +31,11 @@ gdsmc_add_cli_test(cli_reference_ex3 0 "t,T_exact,T_finite_n,T_raw_finite_n"
 gdsmc_add_cli_test(cli_run_small 0 "t,T,T_ci,T_raw,T_raw_ci,ux,ux_ci"
                    run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=20
                    --quiet)
+
+# Byte-identical output for 1 and 2 threads (hard spheres with heating: the
+# majorant, fictitious collisions and Brownian catch-ups all take part).
+add_test(NAME cli_threads_identical
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc>
+                 -DSCENE=${PROJECT_SOURCE_DIR}/${S}/grw-ex5.ini
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/threads -P ${CMAKE_CURRENT_SOURCE_DIR}/run_threads.cmake)
+set_tests_properties(cli_threads_identical PROPERTIES TIMEOUT 120 LABELS unit)

@@ -51,16 +51,21 @@ const struct grw_paper_table vfy_grw_table2 = {
     {0.306e-02, 0.188e-02, 0.874e-02, 0.581e-02, 0.148e-02},
 };
 
-/* Particle numbers and ensembles per suite size (paper: the scene's N). */
-static size_t sizes(const vfy_options *o, size_t paper_rows, size_t quick_rows,
-                    size_t quick_ensembles, sim_scene *scene, size_t n[ROWS_MAX])
+/* Load the case's scenes (reference and solver) and its rows: n = 64, 256,
+ * ... (paper_rows or quick_rows of them); N is the scene's at paper sizes,
+ * quick_ensembles at quick sizes. */
+static sim_status load_rows(const vfy_case *c, const vfy_options *o, size_t paper_rows,
+                            size_t quick_rows, size_t quick_ensembles, sim_scene *scene,
+                            sim_scene *solver, size_t n[ROWS_MAX], size_t *rows, char *msg,
+                            size_t msglen)
 {
-    size_t rows = o->size == VFY_PAPER ? paper_rows : quick_rows;
+    sim_status status = vfy_load_case_scene(c, o, scene, solver, msg, msglen);
+    *rows = o->size == VFY_PAPER ? paper_rows : quick_rows;
     if (o->size == VFY_QUICK)
-        scene->particles.ensembles = quick_ensembles;
-    for (size_t i = 0; i < rows; i++)
+        scene->particles.ensembles = solver->particles.ensembles = quick_ensembles;
+    for (size_t i = 0; i < *rows; i++)
         n[i] = (size_t)64 << (2 * i);
-    return rows;
+    return status;
 }
 
 static const char *run_comment(const sim_scene *s, char *buf, size_t len)
@@ -104,8 +109,12 @@ static int write_curves(const vfy_options *o, const char *name, const char *titl
     fprintf(f, "t");
     for (size_t j = 0; j < nref; j++)
         fprintf(f, ",%s", ref_names[j]);
-    for (size_t i = 0; i < rows; i++)
-        fprintf(f, ",%s_n%zu,%s_n%zu_ci", quantity, n[i], quantity, n[i]);
+    for (size_t i = 0; i < rows; i++) {
+        if (n[i] == 0)   /* the O(1/n) extrapolation */
+            fprintf(f, ",%s_ninf,%s_ninf_ci", quantity, quantity);
+        else
+            fprintf(f, ",%s_n%zu,%s_n%zu_ci", quantity, n[i], quantity, n[i]);
+    }
     fputc('\n', f);
     for (size_t m = 0; m < M; m++) {
         fprintf(f, "%.10g", t[m]);
@@ -123,7 +132,8 @@ static int write_curves(const vfy_options *o, const char *name, const char *titl
     if (f == NULL)
         return -1;
     fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
-               "set output '%s'\nset datafile separator ','\nset xrange [%g:*]\n"
+               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
+               "set xrange [%g:*]\n"
                "set xlabel 't'\nset ylabel '%s'\nset key top right\n",
             title, gp, one_panel_per_row ? 900 : 700,
             vfy_report_path(o, name, ".png", png, sizeof png), x_from, quantity);
@@ -142,9 +152,14 @@ static int write_curves(const vfy_options *o, const char *name, const char *titl
                     j ? "," : "", path, 2 + j, ref_names[j]);
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
+            char label[64];
+            if (n[i] == 0)
+                snprintf(label, sizeof label, "n = infinity (O(1/n) extrapolation) ± c");
+            else
+                snprintf(label, sizeof label, "n = %zu: mean ± c", n[i]);
             fprintf(f, ", '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
-                       "fs transparent solid 0.25 lc %zu title 'n = %zu: mean ± c'",
-                    path, col, col + 1, col, col + 1, i + 1, n[i]);
+                       "fs transparent solid 0.25 lc %zu title '%s'",
+                    path, col, col + 1, col, col + 1, i + 1, label);
         }
         fputc('\n', f);
     }
@@ -162,12 +177,10 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
 {
     const struct grw_paper_table *paper = c->data;
     sim_scene scene, solver;
-    sim_status status = vfy_load_case_scene(c, o, &scene, &solver, msg, msglen);
+    size_t n[ROWS_MAX], rows;
+    sim_status status = load_rows(c, o, 5, 3, 2000, &scene, &solver, n, &rows, msg, msglen);
     if (status != SIM_OK)
         return status;
-    size_t n[ROWS_MAX];
-    const size_t rows = sizes(o, 5, 3, 2000, &scene, n);
-    sizes(o, 5, 3, 2000, &solver, n);
     const size_t M = scene.outputs;
 
     static const char *const cols[] = {
@@ -335,12 +348,10 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
                                      char *msg, size_t msglen)
 {
     sim_scene scene, solver;
-    sim_status status = vfy_load_case_scene(c, o, &scene, &solver, msg, msglen);
+    size_t n[ROWS_MAX], rows;
+    sim_status status = load_rows(c, o, 4, 3, 300, &scene, &solver, n, &rows, msg, msglen);
     if (status != SIM_OK)
         return status;
-    size_t n[ROWS_MAX];
-    const size_t rows = sizes(o, 4, 3, 300, &scene, n);
-    sizes(o, 4, 3, 300, &solver, n);
     const size_t M = scene.outputs;
 
     static const char *const cols[] = {"n", "N", "T_end", "T_end_ci", "dev_maxwell_closure",
@@ -478,7 +489,7 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
     }
     size_t n_all[ROWS_MAX + 1];
     memcpy(n_all, n, rows * sizeof *n);
-    n_all[rows] = 0;   /* the extrapolated curve is labelled n0 */
+    n_all[rows] = 0;   /* the extrapolated curve */
     const char *ref_names[] = {"T_maxwell_closure", "T_sonine_closure"};
     const double *ref_cols[] = {maxw, sonine};
     if (write_curves(o, c->name, title, t, M, 2, ref_names, ref_cols, rows + 1, n_all, band_mean,

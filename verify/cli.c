@@ -69,7 +69,8 @@ static const char usage_verify[] =
     "  --suite S    quick (CI sizes, minutes), paper (every case at the paper's\n"
     "               sizes, the default), or a paper's own suite: grw (paper A)\n"
     "  --case NAME  only this case (at the suite's sizes); --list shows them\n"
-    "  --out DIR    where reports go (default: reports)\n"
+    "  --out DIR    where reports go (default: reports for the quick suite,\n"
+    "               reports/paper for the papers' sizes)\n"
     "  --scenes DIR where the case scenes are (default: the source tree's\n"
     "               verify/scenes)\n"
     "  --set S.K=V  override a key of every case's scene, for the simulation and\n"
@@ -196,6 +197,8 @@ static int cmd_run(int argc, char **argv)
         fprintf(stderr, "gdsmc run: %s\n", msg);
         return EXIT_BAD_INPUT;
     }
+    char effects[64];
+    snprintf(effects, sizeof effects, "%s", sim_engine_effects(engine));
     sim_engine_free(engine);
 
     vfy_options o = {.progress = a.quiet ? NULL : stderr};
@@ -214,7 +217,7 @@ static int cmd_run(int argc, char **argv)
     }
     fprintf(f, "# gdsmc %s run %s: seed %llu, n = %zu, N = %zu, effects: %s\n", GDSMC_VERSION,
             scene.file, (unsigned long long)scene.seed, res.n, res.ensembles,
-            scene.collisions.present || scene.heating.present ? "see scene" : "none");
+            effects[0] ? effects : "none (free flight)");
     fprintf(f, "# candidate events %llu, collisions %llu, majorant violations %llu\n",
             (unsigned long long)res.counts.candidates, (unsigned long long)res.counts.collisions,
             (unsigned long long)res.counts.violations);
@@ -299,7 +302,8 @@ static int cmd_verify(int argc, char **argv)
                          a.case_name);
     vfy_options o = {
         .size = a.suite && strcmp(a.suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
-        .out_dir = a.out ? a.out : "reports",
+        .out_dir = a.out ? a.out : a.suite && strcmp(a.suite, "quick") == 0 ? "reports"
+                                                                              : "reports/paper",
         .scene_dir = a.scenes ? a.scenes : GDSMC_SOURCE_DIR "/verify/scenes",
         .overrides = a.sets,
         .noverrides = a.nsets,

@@ -68,9 +68,20 @@ int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok)
 
 int vfy_ensure_dir(const char *path)
 {
-    if (mkdir(path, 0777) == 0 || errno == EEXIST)
-        return 0;
-    return -1;
+    char buf[1024];
+    if ((size_t)snprintf(buf, sizeof buf, "%s", path) >= sizeof buf) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    for (char *p = buf + 1; *p; p++) {   /* each parent, then the directory */
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return -1;
+        *p = '/';
+    }
+    return mkdir(buf, 0777) == 0 || errno == EEXIST ? 0 : -1;
 }
 
 int vfy_table_write_csv(const vfy_table *t, const char *path, const char *comment)

@@ -42,7 +42,7 @@ int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *t
 FILE *vfy_file_begin(const char *path, char *tmp, size_t tmplen);
 int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok);
 
-/* Create directory path (one level) if it does not exist.  Returns 0 or -1. */
+/* Create directory path and its parents if they do not exist.  Returns 0 or -1. */
 int vfy_ensure_dir(const char *path);
 
 #endif
