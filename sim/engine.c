@@ -46,7 +46,7 @@ static void append_name(sim_engine *e, const char *name)
     snprintf(e->effects + len, sizeof e->effects - len, "%s%s", len ? " " : "", name);
 }
 
-static sim_status add_event(sim_engine *e, sim_effect effect)
+static void add_event(sim_engine *e, sim_effect effect)
 {
     e->events[e->nevents] = effect;
     e->state_offset[e->nevents] = e->state_bytes;
@@ -54,7 +54,6 @@ static sim_status add_event(sim_engine *e, sim_effect effect)
     e->state_bytes += (effect.type->state_size + 15) & ~(size_t)15;
     e->nevents++;
     append_name(e, effect.type->name);
-    return SIM_OK;
 }
 
 sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err)
@@ -86,7 +85,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         sim_effect collisions;
         status = sim_effect_collisions(scene, &collisions, err);
         if (status == SIM_OK)
-            status = add_event(e, collisions);
+            add_event(e, collisions);
     }
     if (status == SIM_OK && scene->heating.present) {
         status = sim_effect_heating(scene, &e->flow, err);

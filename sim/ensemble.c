@@ -92,6 +92,7 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
 
     const double cpu0 = now(CLOCK_PROCESS_CPUTIME_ID), wall0 = now(CLOCK_MONOTONIC);
     sim_status status = SIM_OK;
+    int failed = 0;   /* set once a thread cannot work; read atomically in the loop */
     sim_counts total_counts = {0};
     size_t done = 0;
     int threads = 1;
@@ -111,6 +112,8 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
                 if (err)
                     *err = local_err;
             }
+#pragma omp atomic write
+            failed = 1;
         }
 #pragma omp barrier
         sim_counts my_counts = {0};
@@ -119,7 +122,10 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
 
 #pragma omp for schedule(dynamic, 1)
         for (size_t b = 0; b < nblocks; b++) {
-            if (status != SIM_OK)
+            int stop;
+#pragma omp atomic read
+            stop = failed;
+            if (stop)
                 continue;
             block_stats st = {0.0, sums + 2 * len * b, sums + 2 * len * b + len};
             for (size_t j = b * bsize; j < (b + 1) * bsize && j < N; j++) {
