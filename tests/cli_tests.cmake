@@ -39,3 +39,32 @@ add_test(NAME cli_threads_identical
                  -DSCENE=${PROJECT_SOURCE_DIR}/${S}/grw-ex5.ini
                  -DOUT=${CMAKE_CURRENT_BINARY_DIR}/threads -P ${CMAKE_CURRENT_SOURCE_DIR}/run_threads.cmake)
 set_tests_properties(cli_threads_identical PROPERTIES TIMEOUT 120 LABELS unit)
+
+# gdsmc sonine (SPEC §5, §9): paper C's Sonine values as CSV name,value.  Bad
+# input: the message and nothing else (anchored: standard output comes first).
+gdsmc_add_cli_test(cli_sonine_help 0 "usage: gdsmc sonine --alpha A" sonine --help)
+gdsmc_add_cli_test(cli_sonine_mu4_0 0 "name,value.*mu4_0,10\\.9248886721"
+                   sonine --alpha 0.2)
+gdsmc_add_cli_test(cli_sonine_tails 0 "A_white_noise,1\\.98767.*A_gaussian,4\\.41153"
+                   sonine --alpha 0.4)
+gdsmc_add_cli_test(cli_sonine_out 0 "^$"
+                   sonine --alpha 0.2 --out ${CMAKE_CURRENT_BINARY_DIR}/sonine-0.2.csv)
+gdsmc_add_cli_test(cli_sonine_d2 0 "beta_1,2[^.0-9].*a2_nongaussian_fit,nan"
+                   sonine --alpha 0.5 --d 2)
+gdsmc_add_cli_test(cli_sonine_alpha_range 2
+                   "^gdsmc sonine: --alpha: '1\\.5' is out of range \\(allowed 0 <= alpha <= 1\\)[^!-~]*$"
+                   sonine --alpha 1.5)
+gdsmc_add_cli_test(cli_sonine_alpha_negative 2 "^gdsmc sonine: --alpha: '-0\\.1' is out of range"
+                   sonine --alpha -0.1)
+gdsmc_add_cli_test(cli_sonine_alpha_nan 2 "^gdsmc sonine: --alpha: 'nan' is not a number"
+                   sonine --alpha nan)
+gdsmc_add_cli_test(cli_sonine_alpha_text 2 "^gdsmc sonine: --alpha: '0\\.2x' is not a number"
+                   sonine --alpha 0.2x)
+gdsmc_add_cli_test(cli_sonine_d_range 2
+                   "^gdsmc sonine: --d: '1' is out of range \\(allowed 2 <= d <= 100\\)"
+                   sonine --alpha 0.2 --d 1)
+gdsmc_add_cli_test(cli_sonine_missing_alpha 2 "^gdsmc sonine: missing --alpha" sonine --d 3)
+gdsmc_add_cli_test(cli_sonine_needs_value 2 "^gdsmc sonine: option '--alpha' needs a value"
+                   sonine --alpha)
+gdsmc_add_cli_test(cli_sonine_unknown_option 2 "^gdsmc sonine: unknown option '--beta'"
+                   sonine --alpha 0.2 --beta 1)

@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "ensemble.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
+#include "sonine.h"
 #include "table.h"
 
 enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_BAD_INPUT = 2 };
@@ -25,6 +27,7 @@ static const char usage_main[] =
     "  run SCENE        simulate a scene; CSV of ensemble means and confidence half-widths\n"
     "  reference SCENE  the deterministic references that apply to a scene, as CSV\n"
     "  verify           run verification cases and write tables and figures to reports/\n"
+    "  sonine           Sonine-approximation values of paper C (a2, mu2, mu4, tails), CSV\n"
     "\n"
     "  gdsmc COMMAND --help   options of a command\n"
     "  gdsmc --version\n"
@@ -79,6 +82,29 @@ static const char usage_verify[] =
     "               wrong solver, which the checks must catch (e.g.\n"
     "               --solver-set collisions.restitution=0.45)\n"
     "  --list       list the cases and suites\n";
+
+static const char usage_sonine[] =
+    "usage: gdsmc sonine --alpha A [--d D] [--out FILE.csv]\n"
+    "\n"
+    "Print every Sonine-approximation value of paper C (SPEC section 5) at\n"
+    "restitution coefficient A as CSV: a '#' line, the header 'name,value', then one\n"
+    "row per value (15 significant digits). Paper C's equation numbers:\n"
+    "  beta_1 beta_3             beta_n, (A.7)\n"
+    "  mu2_0 mu2_1 mu4_0 mu4_1   first Sonine coefficients of mu2, mu4, (27)-(30)\n"
+    "  a2_white_noise (10), a2_white_noise_ratio (32), a2_gaussian (5),\n"
+    "  a2_gaussian_alt (40), a2_nongaussian (50), a2_nongaussian_fit (76, d = 3 only)\n"
+    "  mu2_X, mu4_X              mu2, mu4 = mu^(0) + mu^(1) a2, (26), at a2_X for X =\n"
+    "                            white_noise, gaussian, gaussian_alt, nongaussian;\n"
+    "                            mu2/mu4_nongaussian_fit by (72), (73) at (76)\n"
+    "  A_white_noise             tail f ~ exp(-A c^1.5), (36), mu2 at a2 (10)\n"
+    "  A_gaussian                tail f ~ exp(-A c), (42), mu2 at a2 (40)\n"
+    "  A_white_noise_mu2_0, A_gaussian_mu2_0   the same with mu2^(0)\n"
+    "  Aprime_nongaussian        loss-term-only amplitude of exp(-A' c^2), (52)\n"
+    "'nan' marks a d = 3-only value at another d; tail amplitudes are 'inf' at alpha = 1.\n"
+    "\n"
+    "  --alpha A    restitution coefficient, 0 <= A <= 1 (required)\n"
+    "  --d D        dimension, 2 <= D <= 100 (default 3; need not be an integer)\n"
+    "  --out FILE   write the CSV to FILE (default: standard output)\n";
 
 typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
@@ -281,6 +307,77 @@ static int cmd_reference(int argc, char **argv)
     return close_out("reference", f, a.out, tmp);
 }
 
+/* Parse a --alpha or --d value: a finite number in [lo, hi]. */
+static int parse_range(const char *opt, const char *text, double lo, double hi,
+                       const char *allowed, double *value)
+{
+    char *end;
+    errno = 0;
+    double x = strtod(text, &end);
+    if (end == text || *end != '\0' || errno == ERANGE || !isfinite(x)) {
+        fprintf(stderr, "gdsmc sonine: %s: '%s' is not a number (see gdsmc sonine --help)\n",
+                opt, text);
+        return EXIT_BAD_INPUT;
+    }
+    if (!(x >= lo && x <= hi)) {
+        fprintf(stderr, "gdsmc sonine: %s: '%s' is out of range (allowed %s)\n", opt, text,
+                allowed);
+        return EXIT_BAD_INPUT;
+    }
+    *value = x;
+    return EXIT_OK;
+}
+
+static int cmd_sonine(int argc, char **argv)
+{
+    const char *alpha_text = NULL, *d_text = NULL, *out = NULL;
+    for (int i = 0; i < argc; i++) {
+        const char *s = argv[i], **value;
+        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+            fputs(usage_sonine, stdout);
+            return EXIT_OK;
+        } else if (strcmp(s, "--alpha") == 0) {
+            value = &alpha_text;
+        } else if (strcmp(s, "--d") == 0) {
+            value = &d_text;
+        } else if (strcmp(s, "--out") == 0) {
+            value = &out;
+        } else if (s[0] == '-' && s[1] != '\0') {
+            return bad_usage("sonine", "unknown option '%s'", s);
+        } else {
+            return bad_usage("sonine", "unexpected argument '%s'", s);
+        }
+        if (i + 1 >= argc)
+            return bad_usage("sonine", "option '%s' needs a value", s);
+        *value = argv[++i];
+    }
+    if (alpha_text == NULL)
+        return bad_usage("sonine", "%s", "missing --alpha");
+    double alpha, d = 3.0;
+    int rc = parse_range("--alpha", alpha_text, 0.0, 1.0, "0 <= alpha <= 1", &alpha);
+    if (rc == EXIT_OK && d_text != NULL)
+        rc = parse_range("--d", d_text, REF_SONINE_D_MIN, REF_SONINE_D_MAX, "2 <= d <= 100", &d);
+    if (rc != EXIT_OK)
+        return rc;
+    ref_sonine_value v[REF_SONINE_ALL_COUNT];
+    size_t n = ref_sonine_all(alpha, d, v, REF_SONINE_ALL_COUNT);
+    if (n != REF_SONINE_ALL_COUNT) {
+        fprintf(stderr, "gdsmc sonine: no values at alpha = %s, d = %s\n", alpha_text,
+                d_text ? d_text : "3");
+        return EXIT_BAD_INPUT;
+    }
+    char tmp[1100];
+    FILE *f = open_out("sonine", out, tmp, sizeof tmp);
+    if (f == NULL)
+        return EXIT_BAD_INPUT;
+    fprintf(f, "# gdsmc %s sonine: alpha = %.15g, d = %.15g (paper C, Sonine approximation)\n",
+            GDSMC_VERSION, alpha, d);
+    fputs("name,value\n", f);
+    for (size_t i = 0; i < n; i++)
+        fprintf(f, "%s,%.15g\n", v[i].name, v[i].value);
+    return close_out("sonine", f, out, tmp);
+}
+
 static int cmd_verify(int argc, char **argv)
 {
     args a;
@@ -346,7 +443,9 @@ int gdsmc_main(int argc, char **argv)
         return cmd_reference(argc - 2, argv + 2);
     if (strcmp(argv[1], "verify") == 0)
         return cmd_verify(argc - 2, argv + 2);
-    fprintf(stderr, "gdsmc: unknown command '%s' (allowed run, reference, verify; see gdsmc "
-            "--help)\n", argv[1]);
+    if (strcmp(argv[1], "sonine") == 0)
+        return cmd_sonine(argc - 2, argv + 2);
+    fprintf(stderr, "gdsmc: unknown command '%s' (allowed run, reference, verify, sonine; see "
+            "gdsmc --help)\n", argv[1]);
     return EXIT_BAD_INPUT;
 }
