@@ -238,6 +238,74 @@ ref_status ref_background_maxwell_ode(const ref_background_params *p, const doub
     return solve_4(maxwell_rhs, &q, p, t, nt, opt, u_out, T_out, msg, msglen);
 }
 
+typedef struct finite_n_params {
+    double lambda, alpha, k, theta, n;
+} finite_n_params;
+
+/* y = (Q, P) of ref_background_maxwell_T_mean. */
+static int finite_n_rhs(double t, const double *y, double *ydot, void *params)
+{
+    const finite_n_params *q = params;
+    (void)t;
+    double a = q->alpha, la = q->lambda, source = 6.0 * q->n * la * a * a * q->theta;
+    ydot[0] = -(2.0 * la * a * (1.0 - a) + q->k) * y[0] + q->k / q->n * y[1] + source;
+    ydot[1] = 2.0 * la * a * a * y[0] - 2.0 * la * a * y[1] + source;
+    return 0;
+}
+
+ref_status ref_background_maxwell_T_mean(const ref_background_params *p, double n,
+                                         const double *t, size_t nt,
+                                         const ref_ode_options *opt, double *T_out, char *msg,
+                                         size_t msglen)
+{
+    if (bad_params(p, msg, msglen) || bad_times(t, nt, msg, msglen))
+        return REF_EINVAL;
+    if (!(n >= 2.0 && isfinite(n))) {
+        say(msg, msglen, "n = %g out of range (allowed n >= 2)", n);
+        return REF_EINVAL;
+    }
+    if (!T_out) {
+        say(msg, msglen, "T_out is NULL");
+        return REF_EINVAL;
+    }
+    double *y = malloc(2 * nt * sizeof *y);
+    if (!y) {
+        say(msg, msglen, "cannot allocate the solution for nt = %zu times", nt);
+        return REF_ENOMEM;
+    }
+    const double e = p->restitution, d2 = dist2(p->u0, p->bg_velocity);
+    finite_n_params q = {4.0 * PI * p->C1 * p->bg_density, mass_ratio(p),
+                         PI * p->density * p->C2 * (1.0 - e * e),
+                         p->bg_temperature / p->bg_mass, n};
+    double Q0 = n * (d2 + 3.0 * p->T0 / p->mass);
+    double y0[2] = {Q0, Q0 + n * (n - 1.0) * d2};
+    ref_status st = ref_ode_solve(finite_n_rhs, &q, 2, y0, t, nt, opt, y, msg, msglen);
+    if (st == REF_OK)
+        for (size_t m = 0; m < nt; m++)
+            T_out[m] = p->mass / (3.0 * n) * (y[2 * m] - y[2 * m + 1] / n);
+    free(y);
+    return st;
+}
+
+double ref_background_hs_E1(const ref_background_params *p, const double v[3])
+{
+    if (!valid(p) || !v || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
+        return NAN;
+    const double a = sqrt(dist2(v, p->bg_velocity)), b = sqrt(2.0 * p->bg_temperature / p->bg_mass);
+    const double scale = 4.0 * PI * p->C1 * p->bg_density;
+    if (a < 1e-8 * b)   /* the limit a -> 0; the next term is O(a^2/b) */
+        return scale * 2.0 * b / sqrt(PI);
+    return scale * (b / sqrt(PI) * exp(-a * a / (b * b)) + (2.0 * a * a + b * b) / (2.0 * a) * erf(a / b));
+}
+
+double ref_background_hs_E1_majorant(const ref_background_params *p, const double v[3])
+{
+    if (!valid(p) || !v || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
+        return NAN;
+    const double a = sqrt(dist2(v, p->bg_velocity)), b = sqrt(2.0 * p->bg_temperature / p->bg_mass);
+    return p->C1 * p->bg_density * (4.0 * PI * a + 8.0 * sqrt(PI) * b);
+}
+
 /* ---------------------------------------------------------------- hard-sphere closures */
 
 /* Parameters of (B.21)/(B.22) in physical time (see background.h): the background

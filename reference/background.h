@@ -92,7 +92,39 @@ ref_status ref_background_maxwell_ode(const ref_background_params *p, const doub
                                       const ref_ode_options *opt, double *u_out, double *T_out,
                                       char *msg, size_t msglen);
 
+/* Exact expectation of the n-particle DSMC estimator of the centred
+ * temperature, T_n = (m/3n) Σ |v_i - V|^2, for Maxwell kernels (SPEC §10:
+ * exact finite-n behaviour), when the n initial velocities are i.i.d. with
+ * mean u0 and temperature T0 (a Maxwellian or the mixture B.35).  With
+ * x_i = v_i - u_B, Q = E Σ|x_i|^2 and P = E|Σ x_i|^2 obey a closed linear
+ * system: a background collision (rate lambda = 4 pi C1 rho_B per grain)
+ * gives E x' = (1-alpha) x and E|x'|^2 = ((1-alpha)^2 + alpha^2)|x|^2 + 6 alpha^2 theta
+ * (theta = T_B/m_B); a binary collision (rate 2 pi rho C2 (n-1), ordered pair
+ * uniform) keeps Σ x and removes (1-e^2)/4 |g|^2 on average, so
+ *   Q' = -(2 lambda alpha (1-alpha) + k) Q + (k/n) P + 6 n lambda alpha^2 theta,
+ *   P' = 2 lambda alpha^2 Q - 2 lambda alpha P + 6 n lambda alpha^2 theta,
+ * k = pi rho C2 (1-e^2), Q(0) = n(|u0-u_B|^2 + 3 T0/m), P(0) = Q(0) + n(n-1)|u0-u_B|^2,
+ * and E T_n = (m/3n)(Q - P/n); as n -> infinity this is (B.13).  Integrated
+ * with CVODE at the times t (t[0] = 0 is the initial state); n >= 2.  Also
+ * E u_n(t) = u(t) exactly (ref_background_maxwell_u): background collisions act
+ * on one grain linearly and binary ones conserve momentum.  Failures as for
+ * ref_background_maxwell_ode. */
+ref_status ref_background_maxwell_T_mean(const ref_background_params *p, double n,
+                                         const double *t, size_t nt,
+                                         const ref_ode_options *opt, double *T_out, char *msg,
+                                         size_t msglen);
+
 /* ---------------------------------------------------------------- hard spheres */
+
+/* Total rate of background collisions of a grain with velocity v for the
+ * hard-sphere kernel B1 = C1 |g| (SPEC §4, Algorithm 2), a = |v - u_B|,
+ * b = sqrt(2 T_B/m_B):
+ *   E1(v) = 4 pi C1 rho_B (pi^{-1/2} b e^{-a^2/b^2} + (2a^2 + b^2)/(2a) erf(a/b)),
+ *   E1(u_B) = 8 sqrt(pi) C1 rho_B b,
+ * and the paper's majorant E1max(v) = C1 rho_B (4 pi a + 8 sqrt(pi) b) >= E1(v).
+ * NaN on bad p or v. */
+double ref_background_hs_E1(const ref_background_params *p, const double v[3]);
+double ref_background_hs_E1_majorant(const ref_background_params *p, const double v[3]);
 
 /* Hydrodynamic closures for hard spheres (SPEC §4; paper B Eqs. B.21, B.22),
  * S = (1-alpha) T_B + alpha T, du = |u - u_B|, written in the paper's scaled

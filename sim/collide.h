@@ -5,7 +5,8 @@
  *
  * Momentum is conserved exactly (up to round-off); the energy changes by
  * -(1-alpha^2)/4 (1 - mu) |g|^2 with mu = (g.e)/|g|.  Paper B's binary rule is
- * the same with alpha = e (SPEC §4).
+ * the same with alpha = e (SPEC §4).  Below it, the elastic rule of a grain
+ * with a background partner (paper B).
  */
 #ifndef GDSMC_SIM_COLLIDE_H
 #define GDSMC_SIM_COLLIDE_H
@@ -25,6 +26,18 @@ static inline void sim_collide_inelastic(double v[3], double w[3], double alpha,
         v[k] = centre + half;
         w[k] = centre - half;
     }
+}
+
+/* Elastic collision of a grain v with a background partner w (SPEC §4, paper B
+ * Eq. (2)): v' = (1 - a) v + a w + a |v - w| e, with the mass ratio
+ * a = m_B / (m + m_B).  The partner's post-collision velocity, which the fixed
+ * background never keeps, is w' = (1 - a) v + a w - (1 - a) |v - w| e. */
+static inline void sim_collide_elastic(double v[3], const double w[3], double mass_ratio,
+                                       double gnorm, const double e[3])
+{
+    const double a = mass_ratio, b = mass_ratio * gnorm;
+    for (int k = 0; k < 3; k++)
+        v[k] = (1.0 - a) * v[k] + a * w[k] + b * e[k];
 }
 
 static inline double sim_norm3(const double x[3])

@@ -13,8 +13,7 @@
  *    have only `step`).
  *
  *  - event processes fire at the random times of a Poisson process thinned
- *    from a majorant rate: binary collisions, and later collisions with a
- *    background.  `reset` computes the per-run state (majorants) from a
+ *    from a majorant rate: binary collisions and collisions with a background.  `reset` computes the per-run state (majorants) from a
  *    synchronised system and returns the majorant rate; `fire` performs one
  *    candidate event at time t (accepted or fictitious) and returns the
  *    majorant rate that holds after it.
@@ -52,11 +51,22 @@ typedef struct sim_effect_type {
 
     /* Event processes (NULL for flows). */
     size_t state_size;
-    /* horizon: the time until the next reset (the next output time). */
+    /* Nonzero if the majorant uses the shared velocity bound (run.h). */
+    int (*needs_bound)(const sim_effect *e);
+    /* Optional (may be NULL): a fixed centre this process wants for the bound,
+     * e.g. the background velocity u_B of paper B's Algorithm 2; returns 1 and
+     * sets centre, or 0 (then the engine uses the bulk velocity). */
+    int (*bound_centre)(const sim_effect *e, double centre[3]);
+    /* horizon: the time until the next reset (the next output time).  Called
+     * after the engine has set the bound. */
     double (*reset)(const sim_effect *e, sim_run *run, void *state, double horizon);
+    /* The majorant rate now, after another process grew the bound. */
+    double (*rate)(const sim_effect *e, const sim_run *run, void *state);
     /* Choose the fire function for this engine: lazy_flow says whether a flow
-     * must bring particles forward before they are used. */
-    sim_event_fire_fn (*select_fire)(const sim_effect *e, int lazy_flow);
+     * must bring particles forward before they are used, bounded whether the
+     * engine maintains the velocity bound (then every velocity change must be
+     * covered). */
+    sim_event_fire_fn (*select_fire)(const sim_effect *e, int lazy_flow, int bounded);
 } sim_effect_type;
 
 struct sim_effect {
@@ -68,5 +78,6 @@ struct sim_effect {
  * They check what the engine supports and name the scene key otherwise. */
 sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err);
+sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim_error *err);
 
 #endif

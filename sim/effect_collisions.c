@@ -1,19 +1,21 @@
-/* Binary inelastic collisions, the exact jump scheme of paper A §3 (SPEC §3).
+/* Binary inelastic collisions, the exact jump scheme of paper A §3 (SPEC §3),
+ * also the binary part of paper B's Algorithms 1 and 2 (SPEC §4).
  *
  * VHS kernel B = C |g|^lambda with e uniform on S^2, 0 <= lambda <= 1.  The
  * majorant rate is pi_hat = 2 pi gamma C (n - 1) U_max^lambda; a candidate is
  * an ordered pair i != j chosen uniformly, accepted with (|g| / U_max)^lambda.
  *
- * U_max: paper A bounds |v_i - v_j| <= |v_i - c| + |v_j - c| <= 2 R with
- * R = max_i |v_i - c| and c the bulk velocity.  Here c is fixed between
- * output times and R is raised whenever a particle's velocity changes (after
- * its flow is applied and after a collision), so 2 R bounds every pair the
- * scheme has seen.  A lazy flow can carry an untouched particle beyond R; that
- * would show when the pair is drawn (|g| > U_max in use) and is counted as a
- * majorant violation; to make that negligible, reset() adds the flow's reach
- * over the time to the next reset to R.  At each output time, with every
- * particle synchronised, reset() recomputes c and R from scratch, so the
- * majorant also shrinks when the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
+ * U_max = 2 R from the shared velocity bound of run.h: |v_i - v_j| <=
+ * |v_i - c| + |v_j - c| <= 2 R.  Paper A takes c = the bulk velocity, paper B's
+ * Algorithm 2 c = u_B (U2max = max |v_i - u_B|, accept |g| / (2 U2max)); the
+ * engine chooses.  R is raised whenever a velocity changes (after its flow is
+ * applied and after any collision), so 2 R bounds every pair the scheme has
+ * seen.  A lazy flow can carry an untouched particle beyond R; that would show
+ * when the pair is drawn (|g| > U_max in use) and is counted as a majorant
+ * violation; to make that negligible the engine adds the flow's reach over
+ * the time to the next reset to R.  At each output time, with every particle
+ * synchronised, R is recomputed from scratch, so the majorant also shrinks
+ * when the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
  * candidate is accepted and the rate never changes.
  */
 #include <math.h>
@@ -31,61 +33,53 @@ typedef struct collisions_params {
 } collisions_params;
 
 typedef struct collisions_state {
-    double centre[3];   /* c */
-    double radius;      /* R = max |v_i - c| seen */
+    double radius;      /* the bound's R when umax was last computed */
     double umax;        /* 2 R */
     double rate;        /* prefactor umax^lambda */
 } collisions_state;
 
 enum kernel_case { KERNEL_MAXWELL, KERNEL_HARD_SPHERES, KERNEL_VHS };
 
-static double majorant_rate(const collisions_params *p, const collisions_state *s)
+/* Follow the shared bound: recompute umax and the rate if R has changed. */
+static inline double follow_bound(const collisions_params *p, collisions_state *s,
+                                  const sim_run *run)
 {
-    return p->prefactor * pow(s->umax, p->lambda);
+    if (run->radius != s->radius) {
+        s->radius = run->radius;
+        s->umax = 2.0 * run->radius;
+        s->rate = p->lambda == 1.0 ? p->prefactor * s->umax
+                                   : p->prefactor * pow(s->umax, p->lambda);
+    }
+    return s->rate;
 }
 
-static double distance_from(const double v[3], const double c[3])
+static int collisions_needs_bound(const sim_effect *e)
 {
-    double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
-    return sim_norm3(d);
+    return ((const collisions_params *)e->params)->lambda != 0.0;
+}
+
+static double collisions_rate(const sim_effect *e, const sim_run *run, void *vstate)
+{
+    const collisions_params *p = e->params;
+    if (p->lambda == 0.0)
+        return p->prefactor;
+    return follow_bound(p, vstate, run);
 }
 
 static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, double horizon)
 {
-    const collisions_params *p = e->params;
+    (void)horizon;   /* the engine has added the flow's reach to the bound */
     collisions_state *s = vstate;
-    const size_t n = run->p.n;
-    double c[3] = {0, 0, 0}, r = 0.0;
-    for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < 3; k++)
-            c[k] += run->p.v[i][k];
-    for (int k = 0; k < 3; k++)
-        s->centre[k] = c[k] / (double)n;
-    for (size_t i = 0; i < n; i++)
-        r = fmax(r, distance_from(run->p.v[i], s->centre));
-    if (run->flow)
-        r += run->flow->type->reach(run->flow, horizon);
-    s->radius = r;
-    s->umax = 2.0 * r;
-    s->rate = p->lambda == 0.0 ? p->prefactor : majorant_rate(p, s);
-    return s->rate;
-}
-
-/* Raise R (and the rate) so that the majorant covers velocity v. */
-static inline void cover(const collisions_params *p, collisions_state *s, const double v[3])
-{
-    double d = distance_from(v, s->centre);
-    if (d > s->radius) {
-        s->radius = d;
-        s->umax = 2.0 * d;
-        s->rate = majorant_rate(p, s);
-    }
+    s->radius = -1.0;   /* force a recomputation */
+    return collisions_rate(e, run, s);
 }
 
 /* One candidate collision at time t (paper A Algorithm, steps 2.3-2.10).
- * kernel and lazy_flow are compile-time constants in each instance below. */
+ * kernel, lazy_flow and bounded are compile-time constants in each instance
+ * below (bounded is implied by kernel != KERNEL_MAXWELL). */
 static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t,
-                                    const enum kernel_case kernel, const int lazy_flow)
+                                    const enum kernel_case kernel, const int lazy_flow,
+                                    const int bounded)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -108,8 +102,9 @@ static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vst
         if (gnorm > s->umax)
             run->counts.violations++;
         if (lazy_flow) {   /* the flow moved i and j since R last covered them */
-            cover(p, s, vi);
-            cover(p, s, vj);
+            sim_run_cover(run, vi);
+            sim_run_cover(run, vj);
+            follow_bound(p, s, run);
         }
         double u = sim_rng_uniform(rng);
         int fictitious = kernel == KERNEL_HARD_SPHERES ? u * s->umax >= gnorm
@@ -122,30 +117,35 @@ static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vst
     sim_rng_unit_sphere(rng, unit);
     sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
     run->counts.collisions++;
-    if (kernel != KERNEL_MAXWELL) {
-        cover(p, s, vi);
-        cover(p, s, vj);
+    if (bounded) {
+        sim_run_cover(run, vi);
+        sim_run_cover(run, vj);
     }
-    return s->rate;
+    return kernel == KERNEL_MAXWELL ? p->prefactor : follow_bound(p, s, run);
 }
 
-#define FIRE_INSTANCE(name, kernel, lazy)                                                    \
+#define FIRE_INSTANCE(name, kernel, lazy, bounded)                                           \
     static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
-        return fire_candidate(e, run, state, t, kernel, lazy);                               \
+        return fire_candidate(e, run, state, t, kernel, lazy, bounded);                      \
     }
-FIRE_INSTANCE(fire_maxwell, KERNEL_MAXWELL, 0)
-FIRE_INSTANCE(fire_maxwell_flow, KERNEL_MAXWELL, 1)
-FIRE_INSTANCE(fire_hard_spheres, KERNEL_HARD_SPHERES, 0)
-FIRE_INSTANCE(fire_hard_spheres_flow, KERNEL_HARD_SPHERES, 1)
-FIRE_INSTANCE(fire_vhs, KERNEL_VHS, 0)
-FIRE_INSTANCE(fire_vhs_flow, KERNEL_VHS, 1)
+FIRE_INSTANCE(fire_maxwell, KERNEL_MAXWELL, 0, 0)
+FIRE_INSTANCE(fire_maxwell_flow, KERNEL_MAXWELL, 1, 0)
+FIRE_INSTANCE(fire_maxwell_bounded, KERNEL_MAXWELL, 0, 1)
+FIRE_INSTANCE(fire_maxwell_flow_bounded, KERNEL_MAXWELL, 1, 1)
+FIRE_INSTANCE(fire_hard_spheres, KERNEL_HARD_SPHERES, 0, 1)
+FIRE_INSTANCE(fire_hard_spheres_flow, KERNEL_HARD_SPHERES, 1, 1)
+FIRE_INSTANCE(fire_vhs, KERNEL_VHS, 0, 1)
+FIRE_INSTANCE(fire_vhs_flow, KERNEL_VHS, 1, 1)
 
-static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow)
+static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow, int bounded)
 {
     const collisions_params *p = e->params;
-    if (p->lambda == 0.0)
+    if (p->lambda == 0.0) {
+        if (bounded)
+            return lazy_flow ? fire_maxwell_flow_bounded : fire_maxwell_bounded;
         return lazy_flow ? fire_maxwell_flow : fire_maxwell;
+    }
     if (p->lambda == 1.0)
         return lazy_flow ? fire_hard_spheres_flow : fire_hard_spheres;
     return lazy_flow ? fire_vhs_flow : fire_vhs;
@@ -154,7 +154,9 @@ static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_fl
 static const sim_effect_type collisions_type = {
     .name = "collisions",
     .state_size = sizeof(collisions_state),
+    .needs_bound = collisions_needs_bound,
     .reset = collisions_reset,
+    .rate = collisions_rate,
     .select_fire = collisions_select_fire,
 };
 

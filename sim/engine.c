@@ -1,7 +1,7 @@
 /* The engine: scene -> effects -> the exact jump scheme (SPEC §2, §3).
  *
  * The jump scheme simulates the Markov jump process without time splitting
- * (paper A §3): candidate events arrive at rate pi_hat = Σ of the event
+ * (paper A §3, paper B §3): candidate events arrive at rate pi_hat = Σ of the event
  * processes' majorant rates, each is fired by its process (accepted or
  * fictitious), and the one lazy flow (heating) is applied to a particle only
  * when an event touches it or at an output time.  At each output time every
@@ -25,9 +25,13 @@
 
 struct sim_engine {
     sim_scene scene;
+    double mass;          /* the grain mass */
     char effects[64];
     int has_flow;
     sim_effect flow;
+    int bounded;          /* some event needs the velocity bound (run.h) */
+    int fixed_centre;     /* ... centred at `centre`, else at the bulk velocity */
+    double centre[3];
     size_t nevents;
     sim_effect events[MAX_EVENTS];
     sim_event_fire_fn fire[MAX_EVENTS];
@@ -62,9 +66,12 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     if (scene->scheme != SIM_SCHEME_JUMP)
         return sim_error_set(err, SIM_EUNSUPPORTED, "scene.scheme",
                              "the time-step scheme is not implemented yet (supported: jump)");
-    if (scene->background.present)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "background",
-                             "background collisions are not implemented yet");
+    if (scene->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS
+        && scene->particles.first.mass != scene->particles.second.mass)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "particles.mass2",
+                             "the engine simulates one species: mass2 = %g must equal "
+                             "mass1 = %g", scene->particles.second.mass,
+                             scene->particles.first.mass);
     if (scene->shear.present)
         return sim_error_set(err, SIM_EUNSUPPORTED, "shear", "shear flow is not implemented yet");
     if (scene->heat_flux.present)
@@ -79,6 +86,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     if (e == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     e->scene = *scene;
+    e->mass = sim_scene_grain_mass(scene);
 
     sim_status status = SIM_OK;
     if (scene->collisions.present) {
@@ -86,6 +94,12 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         status = sim_effect_collisions(scene, &collisions, err);
         if (status == SIM_OK)
             add_event(e, collisions);
+    }
+    if (status == SIM_OK && scene->background.present) {
+        sim_effect background;
+        status = sim_effect_background(scene, &background, err);
+        if (status == SIM_OK)
+            add_event(e, background);
     }
     if (status == SIM_OK && scene->heating.present) {
         status = sim_effect_heating(scene, &e->flow, err);
@@ -98,8 +112,14 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         sim_engine_free(e);
         return status;
     }
+    for (size_t k = 0; k < e->nevents; k++) {
+        const sim_effect *ev = &e->events[k];
+        e->bounded |= ev->type->needs_bound(ev);
+        if (ev->type->bound_centre && ev->type->bound_centre(ev, e->centre))
+            e->fixed_centre = 1;
+    }
     for (size_t k = 0; k < e->nevents; k++)
-        e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->has_flow);
+        e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->has_flow, e->bounded);
     *engine = e;
     return SIM_OK;
 }
@@ -152,10 +172,41 @@ void sim_workspace_free(sim_workspace *ws)
     free(ws);
 }
 
-/* Recompute every event process's majorant; return their total rate. */
+/* The velocity bound of run.h from the synchronised system: centre c (fixed,
+ * or the bulk velocity), R = max |v_i - c| plus the lazy flow's reach over
+ * the horizon; R = +inf (no bound) when no event needs one. */
+static void reset_bound(const sim_engine *e, sim_run *run, double horizon)
+{
+    const size_t n = run->p.n;
+    run->bound_grew = 0;
+    if (!e->bounded) {
+        run->radius = INFINITY;
+        return;
+    }
+    double c[3] = {0, 0, 0}, r2 = 0.0;
+    if (e->fixed_centre) {
+        memcpy(c, e->centre, sizeof c);
+    } else {
+        for (size_t i = 0; i < n; i++)
+            for (int k = 0; k < 3; k++)
+                c[k] += run->p.v[i][k];
+        for (int k = 0; k < 3; k++)
+            c[k] /= (double)n;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double d[3] = {run->p.v[i][0] - c[0], run->p.v[i][1] - c[1], run->p.v[i][2] - c[2]};
+        r2 = fmax(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    memcpy(run->centre, c, sizeof c);
+    run->radius = sqrt(r2) + (run->flow ? run->flow->type->reach(run->flow, horizon) : 0.0);
+}
+
+/* Recompute the bound and every event process's majorant; return their total
+ * rate. */
 static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
                            double horizon)
 {
+    reset_bound(e, &ws->run, horizon);
     double total = 0.0;
     for (size_t k = 0; k < e->nevents; k++) {
         rates[k] = e->events[k].type->reset(&e->events[k], &ws->run,
@@ -165,8 +216,18 @@ static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[
     return total;
 }
 
-static double sum_rates(const sim_engine *e, const double *rates)
+/* The total rate after process `fired` returned its rate; if it grew the
+ * bound, the other processes' majorants grow too. */
+static double update_rates(const sim_engine *e, sim_workspace *ws, double *rates, size_t fired)
 {
+    sim_run *run = &ws->run;
+    if (run->bound_grew) {
+        run->bound_grew = 0;
+        for (size_t k = 0; k < e->nevents; k++)
+            if (k != fired)
+                rates[k] = e->events[k].type->rate(&e->events[k], run,
+                                                   ws->states + e->state_offset[k]);
+    }
     double total = 0.0;
     for (size_t k = 0; k < e->nevents; k++)
         total += rates[k];
@@ -191,7 +252,7 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
     const sim_scene *scene = &e->scene;
     sim_run *run = &ws->run;
     gsl_rng *rng = run->rng;
-    const double mass = scene->particles.maxwellian.mass;
+    const double mass = e->mass;
     const size_t n = run->p.n;
 
     sim_rng_set_stream(rng, scene->seed, index);
@@ -212,7 +273,7 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
             t = t_next;
             size_t k = e->nevents == 1 ? 0 : pick_event(e, rng, rates, total);
             rates[k] = e->fire[k](&e->events[k], run, ws->states + e->state_offset[k], t);
-            total = e->nevents == 1 ? rates[0] : sum_rates(e, rates);
+            total = e->nevents == 1 ? rates[0] : update_rates(e, ws, rates, k);
         }
         t = t_out;
         if (run->flow)
@@ -223,9 +284,16 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
     }
 
     if (counts) {
-        counts->candidates += run->counts.candidates;
-        counts->collisions += run->counts.collisions;
-        counts->violations += run->counts.violations;
-        counts->normals += sim_rng_state_of(rng)->normals;
+        run->counts.normals = sim_rng_state_of(rng)->normals;
+        sim_counts_add(counts, &run->counts);
     }
+}
+
+void sim_counts_add(sim_counts *to, const sim_counts *from)
+{
+    to->candidates += from->candidates;
+    to->collisions += from->collisions;
+    to->background += from->background;
+    to->violations += from->violations;
+    to->normals += from->normals;
 }

@@ -23,9 +23,13 @@ typedef struct sim_workspace sim_workspace;
 typedef struct sim_counts {
     uint64_t candidates;   /* candidate events drawn (accepted + fictitious) */
     uint64_t collisions;   /* accepted binary collisions */
+    uint64_t background;   /* accepted collisions with the background (paper B) */
     uint64_t violations;   /* candidates whose true rate exceeded the majorant in use */
     uint64_t normals;      /* standard normal variates drawn (initial state included) */
 } sim_counts;
+
+/* to += from, field by field. */
+void sim_counts_add(sim_counts *to, const sim_counts *from);
 
 /* Build the engine for a validated scene: the scheme and the effects it names,
  * each resolved once.  Returns SIM_EUNSUPPORTED, naming the scene key, for a

@@ -142,10 +142,7 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
         }
 #pragma omp critical(gdsmc_ensemble_counts)
         {
-            total_counts.candidates += my_counts.candidates;
-            total_counts.collisions += my_counts.collisions;
-            total_counts.violations += my_counts.violations;
-            total_counts.normals += my_counts.normals;
+            sim_counts_add(&total_counts, &my_counts);
         }
         free(obs);
         sim_workspace_free(ws);

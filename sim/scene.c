@@ -49,3 +49,10 @@ double sim_scene_output_time(const sim_scene *scene, size_t m)
 {
     return scene->t_end * (double)m / (double)(scene->outputs - 1);
 }
+
+double sim_scene_grain_mass(const sim_scene *scene)
+{
+    return scene->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS
+               ? scene->particles.first.mass
+               : scene->particles.maxwellian.mass;
+}

@@ -139,6 +139,10 @@ void sim_scene_defaults(sim_scene *scene);
 /* Line at which "section.key" was set, or 0 if it kept its default. */
 int sim_scene_key_line(const sim_scene *scene, const char *key);
 
+/* The grain mass: particles.mass, or mass1 for two-maxwellians (the engine
+ * simulates one species and refuses mass1 != mass2). */
+double sim_scene_grain_mass(const sim_scene *scene);
+
 /* Output time m (0 <= m < outputs): m t_end / (outputs - 1). */
 double sim_scene_output_time(const sim_scene *scene, size_t m);
 

@@ -6,6 +6,8 @@
 
 #include <string.h>
 
+#include <gsl/gsl_integration.h>
+
 #include "background.h"
 #include "ode.h"
 
@@ -739,6 +741,109 @@ static void test_trap_bad_arguments(void **state)
     assert_string_equal(tiny, "p is NU");
 }
 
+/* ---- finite-n expectation (Maxwell) and E1 (hard spheres) ---- */
+
+/* n -> infinity: the finite-n system becomes (B.13), so E T_n -> T(t); at
+ * t = 0, E T_n = (1 - 1/n) T0 exactly; for finite n the steady state solves the
+ * 2x2 linear system (checked by its residual through a long integration). */
+static void test_maxwell_finite_n_mean(void **state)
+{
+    (void)state;
+    const ref_background_params cases[] = {ex1(), ex2(), ex3(), b_equals_c()};
+    double t[NG], T[NG];
+    grid(t, NG, 1.0);
+    char msg[256];
+    for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
+        const ref_background_params *p = &cases[c];
+        assert_int_equal(ref_background_maxwell_T_mean(p, 1e12, t, NG, NULL, T, msg, sizeof msg),
+                         REF_OK);
+        for (size_t m = 0; m < NG; m++)
+            assert_close(T[m], ref_background_maxwell_T(p, t[m]), 1e-8, 0.0);
+        assert_int_equal(ref_background_maxwell_T_mean(p, 4.0, t, NG, NULL, T, msg, sizeof msg),
+                         REF_OK);
+        assert_close(T[0], 0.75 * p->T0, 1e-14, 0.0);
+        /* the bias is O(1/n) and negative late in the relaxation for these cases */
+        assert_true(T[NG - 1] < ref_background_maxwell_T(p, 1.0));
+    }
+    /* Steady state of Ex 1 at n = 4: solve the 2x2 system by hand.  lambda = 4 pi,
+     * alpha = 1/2, k = pi (1 - 1/4) = 3 pi/4, theta = 1:
+     * source 6 n lambda alpha^2 theta = 24 pi:
+     *   0 = -(2 pi + 3 pi/4) Q + (3 pi/16) P + 24 pi,   0 = 2 pi Q - 4 pi P + 24 pi. */
+    double A11 = -(2.0 * PI + 0.75 * PI), A12 = 0.75 * PI / 4.0, A21 = 2.0 * PI, A22 = -4.0 * PI;
+    double b1 = -24.0 * PI, b2 = -24.0 * PI, det = A11 * A22 - A12 * A21;
+    double Q = (b1 * A22 - A12 * b2) / det, P = (A11 * b2 - A21 * b1) / det;
+    double t_long[2] = {0.0, 20.0}, T_long[2];
+    ref_background_params p = ex1();
+    assert_int_equal(ref_background_maxwell_T_mean(&p, 4.0, t_long, 2, NULL, T_long, msg,
+                                                   sizeof msg), REF_OK);
+    assert_close(T_long[1], (Q - P / 4.0) / 12.0, 1e-8, 0.0);
+    assert_int_equal(ref_background_maxwell_T_mean(&p, 1.0, t_long, 2, NULL, T_long, msg,
+                                                   sizeof msg), REF_EINVAL);
+    assert_non_null(strstr(msg, "n = 1"));
+}
+
+typedef struct e1_integrand {
+    double a, b, mu;
+} e1_integrand;
+
+/* |v - w| f^B(w)/rho_B in speed s = |w - u_B| and mu = cos(angle), u_B = 0,
+ * |v| = a: 2 pi s^2 (pi b^2)^{-3/2} e^{-s^2/b^2} sqrt(a^2 + s^2 - 2 a s mu). */
+static double e1_inner(double mu, void *params)
+{
+    e1_integrand *q = params;
+    double s = q->mu;   /* the outer variable, passed through mu */
+    return sqrt(fmax(0.0, q->a * q->a + s * s - 2.0 * q->a * s * mu));
+}
+
+static double e1_outer(double s, void *params)
+{
+    e1_integrand *q = params;
+    e1_integrand inner = {q->a, q->b, s};
+    gsl_function f = {e1_inner, &inner};
+    gsl_integration_workspace *w = gsl_integration_workspace_alloc(200);
+    double r, err;
+    gsl_integration_qag(&f, -1.0, 1.0, 1e-13, 1e-12, 200, GSL_INTEG_GAUSS61, w, &r, &err);
+    gsl_integration_workspace_free(w);
+    double b = q->b;
+    return 2.0 * PI * s * s * pow(PI * b * b, -1.5) * exp(-s * s / (b * b)) * r;
+}
+
+/* E1(v) of SPEC §4 against GSL quadrature of 4 pi C1 rho_B ∫ |v - w| f^B dw/rho_B,
+ * its v = u_B limit, and the majorant E1max >= E1. */
+static void test_hs_E1(void **state)
+{
+    (void)state;
+    ref_background_params p = hs_ex(1.0);
+    p.C1 = 0.7;
+    p.bg_density = 1.3;
+    p.bg_temperature = 1.8;
+    p.bg_mass = 0.6;
+    const double b = sqrt(2.0 * 1.8 / 0.6);
+    const double a_list[] = {0.0, 1e-9, 0.05, 0.3, 1.0, 2.5, 6.0, 20.0};
+    gsl_integration_workspace *w = gsl_integration_workspace_alloc(200);
+    for (size_t i = 0; i < sizeof a_list / sizeof *a_list; i++) {
+        double v[3] = {p.bg_velocity[0] + a_list[i] * 0.6, p.bg_velocity[1] - a_list[i] * 0.8,
+                       p.bg_velocity[2]};
+        e1_integrand q = {a_list[i], b, 0.0};
+        gsl_function f = {e1_outer, &q};
+        double r, err;
+        gsl_integration_qagiu(&f, 0.0, 1e-13, 1e-11, 200, w, &r, &err);
+        double exact = 4.0 * PI * p.C1 * p.bg_density * r;
+        double E1 = ref_background_hs_E1(&p, v), E1max = ref_background_hs_E1_majorant(&p, v);
+        assert_close(E1, exact, 1e-9, 0.0);
+        assert_true(a_list[i] < 0.01 ? E1max >= E1 * (1.0 - 1e-15) : E1max > E1);
+        if (a_list[i] == 0.0) {
+            assert_close(E1, 8.0 * sqrt(PI) * p.C1 * p.bg_density * b, 1e-15, 0.0);
+            assert_close(E1max, E1, 1e-15, 0.0);   /* equal at v = u_B */
+        }
+    }
+    gsl_integration_workspace_free(w);
+    double bad[3] = {NAN, 0.0, 0.0};
+    assert_true(isnan(ref_background_hs_E1(&p, bad)));
+    p.bg_temperature = -1.0;
+    assert_true(isnan(ref_background_hs_E1_majorant(&p, bad)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -755,6 +860,8 @@ int main(void)
         cmocka_unit_test(test_hs_velocity_relaxation),
         cmocka_unit_test(test_hs_closures_vs_independent_rk4),
         cmocka_unit_test(test_hs_grad_elastic_closed_form),
+        cmocka_unit_test(test_maxwell_finite_n_mean),
+        cmocka_unit_test(test_hs_E1),
         cmocka_unit_test(test_trap_bad_parameters),
         cmocka_unit_test(test_trap_bad_arguments),
     };

@@ -5,14 +5,20 @@
  * - heating only: E T_raw = T0 + 2 beta t (paper A Eq. (18));
  * - momentum conservation and elastic energy conservation per ensemble;
  * - a scene without heating draws no Gaussian numbers after the initial state;
- * - the same numbers for 1 and 2 threads. */
+ * - the same numbers for 1 and 2 threads;
+ * - paper B's background (SPEC §4): collision counts against the exact rates
+ *   4 pi C1 rho_B (Maxwell) and E1(v) (hard spheres, Algorithm 2), the
+ *   equilibrium with the background preserved, and for Maxwell kernels the
+ *   exact finite-n expectations of u and T (reference/background.h). */
 #include "test_util.h"
 
 #include <omp.h>
 #include <string.h>
 
+#include "collide.h"
 #include "engine.h"
 #include "ensemble.h"
+#include "background.h"
 #include "heated.h"
 
 #define ZMAX 4.5   /* max over output times of |mean - exact| / sigma */
@@ -190,6 +196,202 @@ static void test_thread_count_independence(void **state)
     sim_ensemble_result_free(&b);
 }
 
+/* A scene with only a background (SPEC §4): grains of mass 1 at velocity v0
+ * (temperature T0), background at rest with rho_B = C1 = 1. */
+static sim_scene background_scene(size_t n, size_t ensembles, sim_kernel_kind kernel,
+                                  double m_B, double T_B, const double v0[3], double T0)
+{
+    sim_scene s;
+    sim_scene_defaults(&s);
+    s.t_end = 1.0;
+    s.outputs = 11;
+    s.seed = 2010;
+    s.particles.n = n;
+    s.particles.ensembles = ensembles;
+    s.particles.maxwellian.temperature = T0;
+    memcpy(s.particles.maxwellian.velocity, v0, 3 * sizeof *v0);
+    s.background.present = 1;
+    s.background.kernel = kernel;
+    s.background.mass = m_B;
+    s.background.temperature = T_B;
+    return s;
+}
+
+static ref_background_params background_params_of(const sim_scene *s)
+{
+    ref_background_params p = {
+        .mass = 1.0, .bg_density = s->background.density, .bg_mass = s->background.mass,
+        .bg_temperature = s->background.temperature, .C1 = s->background.constant,
+        .density = 1.0, .C2 = s->collisions.present ? s->collisions.constant : 0.0,
+        .restitution = s->collisions.present ? s->collisions.restitution : 1.0,
+        .T0 = s->particles.maxwellian.temperature};
+    memcpy(p.bg_velocity, s->background.velocity, sizeof p.bg_velocity);
+    memcpy(p.u0, s->particles.maxwellian.velocity, sizeof p.u0);
+    return p;
+}
+
+/* The number of accepted background collisions is Poisson with mean
+ * n N t E1(v) when the grain velocity does not change: a background of
+ * vanishing mass (m_B = 1e-9, alpha ~ 1e-9) with T_B/m_B = 1 (b = sqrt 2)
+ * leaves v0 in place to 1e-7 over the run.  Hard spheres: E1(v) of SPEC §4 at
+ * |v0 - u_B| = 1.5 and at v0 = u_B; Maxwell: 4 pi C1 rho_B. */
+static void test_background_rates(void **state)
+{
+    (void)state;
+    const double v_list[][3] = {{0.9, -1.2, 0.0}, {0.0, 0.0, 0.0}};
+    for (int kernel = 0; kernel < 2; kernel++) {
+        for (size_t i = 0; i < 2; i++) {
+            sim_scene s = background_scene(50, 200,
+                                           kernel ? SIM_KERNEL_HARD_SPHERES : SIM_KERNEL_MAXWELL,
+                                           1e-9, 1e-9, v_list[i], 1e-30);
+            s.t_end = 4.0;
+            s.outputs = 2;
+            sim_ensemble_result r;
+            run(&s, &r);
+            ref_background_params p = background_params_of(&s);
+            double E1 = kernel ? ref_background_hs_E1(&p, v_list[i]) : 4.0 * M_PI;
+            double mean = 50.0 * 200.0 * 4.0 * E1, count = (double)r.counts.background;
+            double z = (count - mean) / sqrt(mean);
+            print_message("%s, |v0| = %.1f: %.0f background collisions, expected %.0f (z = "
+                          "%.2f), %llu candidates\n", kernel ? "hard spheres" : "Maxwell",
+                          sim_norm3(v_list[i]), count, mean, z,
+                          (unsigned long long)r.counts.candidates);
+            assert_true(fabs(z) < ZMAX);
+            assert_int_equal(r.counts.violations, 0);
+            assert_int_equal(r.counts.collisions, 0);
+            if (kernel && i == 0)   /* fictitious candidates, except when a_max = 0 */
+                assert_true(r.counts.candidates > r.counts.background);
+            else   /* Maxwell, or hard spheres at v0 = u_B: the majorant is the rate */
+                assert_int_equal(r.counts.candidates, r.counts.background);
+            /* the wrong answer: the paper's majorant E1max is not the rate */
+            if (kernel && i == 0) {
+                double wrong = 50.0 * 200.0 * 4.0 * ref_background_hs_E1_majorant(&p, v_list[i]);
+                assert_true(fabs(count - wrong) / sqrt(wrong) > ZMAX);
+            }
+            sim_ensemble_result_free(&r);
+        }
+    }
+}
+
+static double constant_value(double t, void *ctx)
+{
+    (void)t;
+    return *(double *)ctx;
+}
+
+/* Grains that start in equilibrium with a hard-sphere background (Maxwellian
+ * at T_B, u_B; any mass ratio) stay there: E T_n = (1 - 1/n) T_B and
+ * E u_n = u_B at every time.  Algorithm 2 with a wrong partner density would
+ * heat or cool the gas. */
+static void test_background_hs_equilibrium(void **state)
+{
+    (void)state;
+    const double u_B[3] = {0.0, 1.0, 0.0};
+    sim_scene s = background_scene(8, 4000, SIM_KERNEL_HARD_SPHERES, 0.5, 1.3, u_B, 1.3);
+    memcpy(s.background.velocity, u_B, sizeof u_B);
+    sim_ensemble_result r;
+    run(&s, &r);
+    double T_mean = (1.0 - 1.0 / 8.0) * 1.3, uy = 1.0, zero = 0.0;
+    double zT = max_z(&r, SIM_OBS_T, constant_value, &T_mean);
+    double zu = fmax(max_z(&r, SIM_OBS_UY, constant_value, &uy),
+                     max_z(&r, SIM_OBS_UX, constant_value, &zero));
+    print_message("equilibrium: max z T %.2f, u %.2f; %llu candidates, %llu accepted\n", zT, zu,
+                  (unsigned long long)r.counts.candidates,
+                  (unsigned long long)r.counts.background);
+    assert_true(zT < ZMAX);
+    assert_true(zu < ZMAX);
+    assert_true(r.counts.background > 100000);
+    assert_int_equal(r.counts.violations, 0);
+    double T_inf = 1.3;   /* the wrong answer: without the O(1/n) bias */
+    assert_true(max_z(&r, SIM_OBS_T, constant_value, &T_inf) > ZMAX);
+    sim_ensemble_result_free(&r);
+}
+
+typedef struct maxwell_exact {
+    ref_background_params p;
+    const double *T_mean;   /* at the result's output times */
+    const sim_ensemble_result *r;
+} maxwell_exact;
+
+static double exact_uy(double t, void *ctx)
+{
+    double u[3];
+    ref_background_maxwell_u(&((maxwell_exact *)ctx)->p, t, u);
+    return u[1];
+}
+
+static double exact_T_mean(double t, void *ctx)
+{
+    maxwell_exact *x = ctx;
+    for (size_t m = 0; m < x->r->outputs; m++)
+        if (x->r->t[m] == t)
+            return x->T_mean[m];
+    return NAN;
+}
+
+/* SPEC §4 Ex 1 at n = 4: two-Maxwellian start, Maxwell kernels for both
+ * collision kinds.  E u_n = u(t) and E T_n from the exact finite-n system. */
+static void test_background_maxwell_exact(void **state)
+{
+    (void)state;
+    const double zero[3] = {0, 0, 0};
+    sim_scene s = background_scene(4, 6000, SIM_KERNEL_MAXWELL, 1.0, 1.0, zero, 1.0);
+    s.outputs = 17;
+    s.particles.initial = SIM_INITIAL_TWO_MAXWELLIANS;
+    s.particles.fraction = 0.5;
+    s.particles.first = (sim_maxwellian){1.0, {-2.0, 2.0, 0.0}, 1.0};
+    s.particles.second = (sim_maxwellian){1.0, {2.0, 0.0, 0.0}, 1.0};
+    s.collisions.present = 1;
+    s.collisions.constant = 1.0;
+    s.collisions.restitution = 0.5;
+    sim_ensemble_result r;
+    run(&s, &r);
+    maxwell_exact x = {background_params_of(&s), NULL, &r};
+    x.p.T0 = 8.0 / 3.0;   /* the mixture's temperature and mean velocity */
+    x.p.u0[0] = 0.0;
+    x.p.u0[1] = 1.0;
+    double T_mean[17];
+    char msg[200];
+    assert_int_equal(ref_background_maxwell_T_mean(&x.p, 4.0, r.t, r.outputs, NULL, T_mean, msg,
+                                                   sizeof msg), REF_OK);
+    x.T_mean = T_mean;
+    double zu = max_z(&r, SIM_OBS_UY, exact_uy, &x), zT = max_z(&r, SIM_OBS_T, exact_T_mean, &x);
+    print_message("Maxwell background, n = 4: max z u_y %.2f, T %.2f\n", zu, zT);
+    assert_true(zu < ZMAX);
+    assert_true(zT < ZMAX);
+    /* the wrong answer: the n = infinity temperature (B.15) */
+    for (size_t m = 0; m < r.outputs; m++)
+        T_mean[m] = ref_background_maxwell_T(&x.p, r.t[m]);
+    assert_true(max_z(&r, SIM_OBS_T, exact_T_mean, &x) > ZMAX);
+    sim_ensemble_result_free(&r);
+}
+
+/* Every combination of kernels shares the velocity bound: the binary
+ * majorant must cover velocities the background changed and vice versa. */
+static void test_background_with_binary_kernels(void **state)
+{
+    (void)state;
+    const double zero[3] = {0, 0, 0};
+    for (int bin = 0; bin < 2; bin++) {
+        for (int bg = 0; bg < 2; bg++) {
+            sim_scene s = background_scene(16, 300, bg ? SIM_KERNEL_HARD_SPHERES
+                                                        : SIM_KERNEL_MAXWELL, 1.0, 1.0, zero, 3.0);
+            s.background.velocity[1] = 2.0;   /* the gas is pulled, so speeds change a lot */
+            s.collisions.present = 1;
+            s.collisions.kernel = bin ? SIM_KERNEL_HARD_SPHERES : SIM_KERNEL_MAXWELL;
+            s.collisions.exponent = bin;
+            s.collisions.constant = 1.0;
+            s.collisions.restitution = 0.5;
+            sim_ensemble_result r;
+            run(&s, &r);
+            assert_true(r.counts.collisions > 1000);
+            assert_true(r.counts.background > 1000);
+            assert_int_equal(r.counts.violations, 0);
+            sim_ensemble_result_free(&r);
+        }
+    }
+}
+
 /* Valid scenes the engine cannot run yet are refused with the key at fault. */
 static void test_unsupported(void **state)
 {
@@ -205,6 +407,12 @@ static void test_unsupported(void **state)
     s.heating.type = SIM_HEATING_GAUSSIAN;
     assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
     assert_string_equal(err.key, "heating.type");
+    s = heated_maxwell_scene(8, 1);
+    s.particles.initial = SIM_INITIAL_TWO_MAXWELLIANS;
+    s.particles.first.mass = 1.0;
+    s.particles.second.mass = 2.0;
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
+    assert_string_equal(err.key, "particles.mass2");
     sim_engine_free(NULL);
     sim_workspace_free(NULL);
 }
@@ -217,6 +425,10 @@ int main(void)
         cmocka_unit_test(test_conservation),
         cmocka_unit_test(test_no_heating_draws_no_gaussians),
         cmocka_unit_test(test_thread_count_independence),
+        cmocka_unit_test(test_background_rates),
+        cmocka_unit_test(test_background_hs_equilibrium),
+        cmocka_unit_test(test_background_maxwell_exact),
+        cmocka_unit_test(test_background_with_binary_kernels),
         cmocka_unit_test(test_unsupported),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
