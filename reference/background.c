@@ -291,18 +291,21 @@ double ref_background_hs_E1(const ref_background_params *p, const double v[3])
 {
     if (!valid(p) || !v || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
         return NAN;
-    const double a = sqrt(dist2(v, p->bg_velocity)), b = sqrt(2.0 * p->bg_temperature / p->bg_mass);
+    const double a = sqrt(dist2(v, p->bg_velocity));
+    const double b = sqrt(2.0 * p->bg_temperature / p->bg_mass);
     const double scale = 4.0 * PI * p->C1 * p->bg_density;
     if (a < 1e-8 * b)   /* the limit a -> 0; the next term is O(a^2/b) */
         return scale * 2.0 * b / sqrt(PI);
-    return scale * (b / sqrt(PI) * exp(-a * a / (b * b)) + (2.0 * a * a + b * b) / (2.0 * a) * erf(a / b));
+    return scale * (b / sqrt(PI) * exp(-a * a / (b * b))
+                    + (2.0 * a * a + b * b) / (2.0 * a) * erf(a / b));
 }
 
 double ref_background_hs_E1_majorant(const ref_background_params *p, const double v[3])
 {
     if (!valid(p) || !v || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2]))
         return NAN;
-    const double a = sqrt(dist2(v, p->bg_velocity)), b = sqrt(2.0 * p->bg_temperature / p->bg_mass);
+    const double a = sqrt(dist2(v, p->bg_velocity));
+    const double b = sqrt(2.0 * p->bg_temperature / p->bg_mass);
     return p->C1 * p->bg_density * (4.0 * PI * a + 8.0 * sqrt(PI) * b);
 }
 

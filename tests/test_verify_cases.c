@@ -1,7 +1,7 @@
 /* The verify cases end to end at small sizes: with the right solver their
  * checks pass; with a deliberately wrong solver (restitution 0.45 instead of
- * 0.5, through the same --set overrides a user has) or a wrong reference
- * they fail.  Reports go to a temporary directory. */
+ * 0.5, a wrong background, through the same --solver-set overrides a user
+ * has) they fail.  Reports go to a temporary directory. */
 #include "test_util.h"
 
 #include <stdlib.h>
@@ -71,6 +71,28 @@ static void test_grw_ex5(void **state)
     assert_true(count_failed("grw-ex5", wrong, 1) >= 1);
 }
 
+static void test_brs_ex2(void **state)
+{
+    (void)state;
+    assert_int_equal(count_failed("brs-ex2", NULL, 0), 0);
+    /* binary collisions twice too frequent (Kn = 1/4): the exact finite-n T
+     * fails (T* moves by 4%); a heavier background relaxes u faster, which the
+     * exact E u_n = u(t) test sees */
+    const char *wrong_rate[] = {"collisions.constant=0.25"};
+    assert_true(count_failed("brs-ex2", wrong_rate, 1) >= 1);
+    const char *wrong_mass[] = {"background.mass=1.1"};
+    assert_true(count_failed("brs-ex2", wrong_mass, 1) >= 1);
+}
+
+static void test_brs_ex4(void **state)
+{
+    (void)state;
+    assert_int_equal(count_failed("brs-ex4", NULL, 0), 0);
+    /* a background 2% hotter moves the kinetic T* by about 0.02 */
+    const char *wrong[] = {"background.temperature=1.02"};
+    assert_true(count_failed("brs-ex4", wrong, 1) >= 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -78,6 +100,8 @@ int main(void)
         cmocka_unit_test(test_grw_ex3_wrong_solver_fails),
         cmocka_unit_test(test_grw_ex3_wrong_heating_fails),
         cmocka_unit_test(test_grw_ex5),
+        cmocka_unit_test(test_brs_ex2),
+        cmocka_unit_test(test_brs_ex4),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

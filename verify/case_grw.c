@@ -12,19 +12,16 @@
  * its O(1/n) extrapolation to n = infinity (weighted least squares in 1/n at
  * every output time), and both closures of SPEC §3 Ex 5.
  */
-#include <errno.h>
-#include <gsl/gsl_fit.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "case_report.h"
 #include "cases.h"
-#include "figure.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
 #include "table.h"
 
-#define ROWS_MAX 6
 #define ZMAX 4.5            /* max |z| over the output times for exact expectations */
 #define PAPER_RTOL 0.35     /* Emax within ±35% of the paper's */
 #define CF_LO 3.2
@@ -56,7 +53,7 @@ const struct grw_paper_table vfy_grw_table2 = {
  * quick_ensembles at quick sizes. */
 static sim_status load_rows(const vfy_case *c, const vfy_options *o, size_t paper_rows,
                             size_t quick_rows, size_t quick_ensembles, sim_scene *scene,
-                            sim_scene *solver, size_t n[ROWS_MAX], size_t *rows, char *msg,
+                            sim_scene *solver, size_t n[VFY_ROWS_MAX], size_t *rows, char *msg,
                             size_t msglen)
 {
     sim_status status = vfy_load_case_scene(c, o, scene, solver, msg, msglen);
@@ -68,116 +65,12 @@ static sim_status load_rows(const vfy_case *c, const vfy_options *o, size_t pape
     return status;
 }
 
-static const char *run_comment(const sim_scene *s, char *buf, size_t len)
-{
-    snprintf(buf, len, "gdsmc %s verify: scene %s, seed %llu, N = %zu ensembles, %zu outputs on "
-             "[0, %g]", GDSMC_VERSION, s->file, (unsigned long long)s->seed,
-             s->particles.ensembles, s->outputs, s->t_end);
-    return buf;
-}
-
-static sim_status io_error(const char *path, char *msg, size_t msglen)
-{
-    snprintf(msg, msglen, "%s: cannot write: %s", path, strerror(errno));
-    return SIM_EIO;
-}
-
-/* A column of observable k from a result. */
-static void column(const sim_ensemble_result *r, int k, double *mean, double *ci)
-{
-    for (size_t m = 0; m < r->outputs; m++) {
-        mean[m] = sim_result_mean(r, m, k);
-        if (ci)
-            ci[m] = sim_result_ci(r, m, k);
-    }
-}
-
-/* Curves file (t, reference columns, then mean and ci per row) and a gnuplot
- * script drawing each row's confidence band beside the references.  Returns
- * 0 or -1 (errno). */
-static int write_curves(const vfy_options *o, const char *name, const char *title,
-                        const double *t, size_t M, size_t nref, const char *const *ref_names,
-                        const double *const *refs, size_t rows, const size_t *n,
-                        const double *mean, const double *ci, const char *quantity,
-                        double x_from, int one_panel_per_row)
-{
-    char path[1024], tmp[1100], png[1024];
-    FILE *f = vfy_file_begin(vfy_report_path(o, name, "-curves.csv", path, sizeof path), tmp,
-                             sizeof tmp);
-    if (f == NULL)
-        return -1;
-    fprintf(f, "t");
-    for (size_t j = 0; j < nref; j++)
-        fprintf(f, ",%s", ref_names[j]);
-    for (size_t i = 0; i < rows; i++) {
-        if (n[i] == 0)   /* the O(1/n) extrapolation */
-            fprintf(f, ",%s_ninf,%s_ninf_ci", quantity, quantity);
-        else
-            fprintf(f, ",%s_n%zu,%s_n%zu_ci", quantity, n[i], quantity, n[i]);
-    }
-    fputc('\n', f);
-    for (size_t m = 0; m < M; m++) {
-        fprintf(f, "%.10g", t[m]);
-        for (size_t j = 0; j < nref; j++)
-            fprintf(f, ",%.12g", refs[j][m]);
-        for (size_t i = 0; i < rows; i++)
-            fprintf(f, ",%.12g,%.6g", mean[i * M + m], ci[i * M + m]);
-        fputc('\n', f);
-    }
-    if (vfy_file_commit(f, tmp, path, 1) != 0)
-        return -1;
-
-    char gp[1024];
-    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
-    if (f == NULL)
-        return -1;
-    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
-               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
-               "set xrange [%g:*]\n"
-               "set xlabel 't'\nset ylabel '%s'\nset key top right\n",
-            title, gp, one_panel_per_row ? 900 : 700,
-            vfy_report_path(o, name, ".png", png, sizeof png), x_from, quantity);
-    size_t panels = one_panel_per_row ? (rows < 4 ? rows : 4) : 1;
-    if (one_panel_per_row)
-        fprintf(f, "set multiplot layout 2,2 title '%s'\n", title);
-    else
-        fprintf(f, "set title '%s'\n", title);
-    for (size_t p = 0; p < panels; p++) {
-        size_t first = one_panel_per_row ? p : 0, last = one_panel_per_row ? p + 1 : rows;
-        if (one_panel_per_row)
-            fprintf(f, "set title 'n = %zu'\n", n[p]);
-        fprintf(f, "plot");
-        for (size_t j = 0; j < nref; j++)
-            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt 2 lw 2 title '%s'",
-                    j ? "," : "", path, 2 + j, ref_names[j]);
-        for (size_t i = first; i < last; i++) {
-            size_t col = 2 + nref + 2 * i;
-            char label[64];
-            if (n[i] == 0)
-                snprintf(label, sizeof label, "n = infinity (O(1/n) extrapolation) ± c");
-            else
-                snprintf(label, sizeof label, "n = %zu: mean ± c", n[i]);
-            fprintf(f, ", '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
-                       "fs transparent solid 0.25 lc %zu title '%s'",
-                    path, col, col + 1, col, col + 1, i + 1, label);
-        }
-        fputc('\n', f);
-    }
-    if (one_panel_per_row)
-        fprintf(f, "unset multiplot\n");
-    if (vfy_file_commit(f, tmp, gp, 1) != 0)
-        return -1;
-    if (vfy_gnuplot(gp) < 0 && o->progress)
-        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
-    return 0;
-}
-
 sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy_report *r,
                                     char *msg, size_t msglen)
 {
     const struct grw_paper_table *paper = c->data;
     sim_scene scene, solver;
-    size_t n[ROWS_MAX], rows;
+    size_t n[VFY_ROWS_MAX], rows;
     sim_status status = load_rows(c, o, 5, 3, 2000, &scene, &solver, n, &rows, msg, msglen);
     if (status != SIM_OK)
         return status;
@@ -185,7 +78,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
 
     static const char *const cols[] = {
         "n", "N", "Emax", "Emax_paper", "CF", "CF_paper", "V_inf", "V_inf_paper", "Emax_T",
-        "noise", "z_T_raw", "z_T", "cpu_s", "wall_s", "events", "ns_per_event"};
+        "noise", "z_T_raw", "z_T", VFY_COST_COLUMNS};
     vfy_table table;
     vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
     double *t = malloc(M * sizeof *t), *exact = malloc(M * sizeof *exact);
@@ -203,24 +96,15 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
     for (size_t i = 0; i < rows && status == SIM_OK; i++) {
         scene.particles.n = solver.particles.n = n[i];
         vfy_refs refs;
-        sim_error err;
-        if ((status = vfy_scene_references(&scene, &refs, &err)) != SIM_OK) {
-            vfy_scene_format_error(&scene, &err, msg, msglen);
-            break;
-        }
-        char label[96], name[128];
-        snprintf(label, sizeof label, "%s n=%zu", c->name, n[i]);
         sim_ensemble_result res;
-        if ((status = vfy_simulate(&solver, o, label, &res, msg, msglen)) != SIM_OK) {
-            vfy_refs_free(&refs);
-            sim_ensemble_result_free(&res);
+        if ((status = vfy_run_row(c, o, &scene, &solver, &refs, &res, msg, msglen)) != SIM_OK)
             break;
-        }
+        char name[128];
         memcpy(t, res.t, M * sizeof *t);
         vfy_refs_column(&refs, "T_exact", exact);
 
         /* Emax (T_raw, paper A's estimator) and beside it the centred T. */
-        column(&res, SIM_OBS_T_RAW, tmp_mean, tmp_ci);
+        vfy_result_column(&res, SIM_OBS_T_RAW, tmp_mean, tmp_ci);
         double emax = 0.0, emax_c = 0.0, noise = 0.0, vinf = 0.0;
         for (size_t m = 0; m < M; m++) {
             emax = fmax(emax, fabs(exact[m] - tmp_mean[m]) / exact[m]);
@@ -258,7 +142,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
         vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu T_raw vs exact finite-n "
                                      "expectation", c->name, n[i]),
                          tmp_mean + 1, tmp_ci + 1, finite + 1, M - 1, ZMAX, &z_raw);
-        column(&res, SIM_OBS_T, tmp_mean, tmp_ci);
+        vfy_result_column(&res, SIM_OBS_T, tmp_mean, tmp_ci);
         vfy_refs_column(&refs, "T_finite_n", finite);
         vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu T vs exact finite-n "
                                      "expectation", c->name, n[i]),
@@ -277,10 +161,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
         vfy_table_cell(&table, "%.3e", noise);
         vfy_table_cell(&table, "%.2f", z_raw);
         vfy_table_cell(&table, "%.2f", z_c);
-        vfy_table_cell(&table, "%.2f", res.cpu_seconds);
-        vfy_table_cell(&table, "%.2f", res.wall_seconds);
-        vfy_table_cell(&table, "%.0f", events);
-        vfy_table_cell(&table, "%.1f", events > 0 ? 1e9 * res.cpu_seconds / events : 0.0);
+        vfy_cost_cells(&table, res.cpu_seconds, res.wall_seconds, events);
         wall_total += res.wall_seconds;
         emax_prev = emax;
         noise_prev = noise;
@@ -291,7 +172,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
         goto done;
 
     char path[1024], comment[600], notes[2000], title[160];
-    run_comment(&solver, comment, sizeof comment);
+    vfy_run_comment(&solver, comment, sizeof comment);
     snprintf(title, sizeof title, "%s: paper A %s reproduced (%s sizes)", c->name, paper->label,
              o->size == VFY_PAPER ? "paper" : "quick");
     snprintf(notes, sizeof notes,
@@ -308,14 +189,14 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
                             comment) != 0
         || vfy_table_write_markdown(&table, vfy_report_path(o, c->name, ".md", path, sizeof path),
                                     title, notes) != 0) {
-        status = io_error(path, msg, msglen);
+        status = vfy_io_error(path, msg, msglen);
         goto done;
     }
     const char *ref_names[] = {"T_exact"};
     const double *ref_cols[] = {exact};
-    if (write_curves(o, c->name, title, t, M, 1, ref_names, ref_cols, rows, n, band_mean, band_ci,
+    if (vfy_write_curves(o, c->name, title, t, M, 1, ref_names, ref_cols, rows, n, band_mean, band_ci,
                      "T_raw", 2.0, 1) != 0)
-        status = io_error(c->name, msg, msglen);
+        status = vfy_io_error(c->name, msg, msglen);
 done:
     vfy_table_free(&table);
     free(t);
@@ -328,27 +209,11 @@ done:
     return status;
 }
 
-/* O(1/n) extrapolation at one output time: weighted least squares of
- * mean_i = T_inf + b / n_i with weights 1/sigma_i^2 (GSL).  Returns T_inf,
- * its standard error and the fit's chi^2. */
-static void extrapolate(size_t rows, const size_t *n, const double *mean, const double *sigma,
-                        double *T_inf, double *sd, double *chi2)
-{
-    double x[ROWS_MAX], w[ROWS_MAX], c0, c1, cov00, cov01, cov11;
-    for (size_t i = 0; i < rows; i++) {
-        x[i] = 1.0 / (double)n[i];
-        w[i] = sigma[i] > 0.0 ? 1.0 / (sigma[i] * sigma[i]) : 1e300;
-    }
-    gsl_fit_wlinear(x, 1, w, 1, mean, 1, rows, &c0, &c1, &cov00, &cov01, &cov11, chi2);
-    *T_inf = c0;
-    *sd = sqrt(cov00);
-}
-
 sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vfy_report *r,
                                      char *msg, size_t msglen)
 {
     sim_scene scene, solver;
-    size_t n[ROWS_MAX], rows;
+    size_t n[VFY_ROWS_MAX], rows;
     sim_status status = load_rows(c, o, 4, 3, 300, &scene, &solver, n, &rows, msg, msglen);
     if (status != SIM_OK)
         return status;
@@ -356,7 +221,7 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
 
     static const char *const cols[] = {"n", "N", "T_end", "T_end_ci", "dev_maxwell_closure",
                                        "dev_sonine_closure", "fictitious_fraction", "violations",
-                                       "cpu_s", "wall_s", "events", "ns_per_event"};
+                                       VFY_COST_COLUMNS};
     static const char *const xcols[] = {"t", "T_inf", "T_inf_ci", "T_maxwell_closure",
                                         "T_sonine_closure", "diff_maxwell", "diff_sonine",
                                         "chi2"};
@@ -393,7 +258,7 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
             goto done;
         }
         memcpy(t, res.t, M * sizeof *t);
-        column(&res, SIM_OBS_T, band_mean + i * M, band_ci + i * M);
+        vfy_result_column(&res, SIM_OBS_T, band_mean + i * M, band_ci + i * M);
         double dev_m = 0.0, dev_s = 0.0;
         for (size_t m = 0; m < M; m++) {
             dev_m = fmax(dev_m, fabs(band_mean[i * M + m] / maxw[m] - 1.0));
@@ -411,10 +276,7 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
         vfy_table_cell(&table, "%.4f", dev_s);
         vfy_table_cell(&table, "%.3f", 1.0 - (double)res.counts.collisions / events);
         vfy_table_cell(&table, "%llu", (unsigned long long)res.counts.violations);
-        vfy_table_cell(&table, "%.2f", res.cpu_seconds);
-        vfy_table_cell(&table, "%.2f", res.wall_seconds);
-        vfy_table_cell(&table, "%.0f", events);
-        vfy_table_cell(&table, "%.1f", 1e9 * res.cpu_seconds / events);
+        vfy_cost_cells(&table, res.cpu_seconds, res.wall_seconds, events);
         wall_total += res.wall_seconds;
         sim_ensemble_result_free(&res);
     }
@@ -423,12 +285,12 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
     double *T_inf = band_mean + rows * M, *T_inf_ci = band_ci + rows * M;
     double chi2_max = 0.0, diff_m_steady = 0.0, diff_s_steady = 0.0, ci_steady = 0.0;
     for (size_t m = 0; m < M; m++) {
-        double mean[ROWS_MAX], sigma[ROWS_MAX], sd, chi2;
+        double mean[VFY_ROWS_MAX], sigma[VFY_ROWS_MAX], sd, chi2;
         for (size_t i = 0; i < rows; i++) {
             mean[i] = band_mean[i * M + m];
             sigma[i] = band_ci[i * M + m] / SIM_LAMBDA_P;
         }
-        extrapolate(rows, n, mean, sigma, &T_inf[m], &sd, &chi2);
+        vfy_extrapolate_inverse_n(rows, n, mean, sigma, &T_inf[m], &sd, &chi2);
         T_inf_ci[m] = SIM_LAMBDA_P * sd;
         if (m > 0)
             chi2_max = fmax(chi2_max, chi2);
@@ -463,7 +325,7 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
                 diff_m_steady, diff_s_steady);
 
     char path[1024], comment[600], notes[2400], title[160];
-    run_comment(&solver, comment, sizeof comment);
+    vfy_run_comment(&solver, comment, sizeof comment);
     snprintf(title, sizeof title, "%s: paper A Ex 5, heated hard spheres (%s sizes)", c->name,
              o->size == VFY_PAPER ? "paper" : "quick");
     snprintf(notes, sizeof notes,
@@ -484,17 +346,17 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
                                     title, notes) != 0
         || vfy_table_write_csv(&xtable, vfy_report_path(o, xname, ".csv", path, sizeof path),
                                comment) != 0) {
-        status = io_error(path, msg, msglen);
+        status = vfy_io_error(path, msg, msglen);
         goto done;
     }
-    size_t n_all[ROWS_MAX + 1];
+    size_t n_all[VFY_ROWS_MAX + 1];
     memcpy(n_all, n, rows * sizeof *n);
     n_all[rows] = 0;   /* the extrapolated curve */
     const char *ref_names[] = {"T_maxwell_closure", "T_sonine_closure"};
     const double *ref_cols[] = {maxw, sonine};
-    if (write_curves(o, c->name, title, t, M, 2, ref_names, ref_cols, rows + 1, n_all, band_mean,
+    if (vfy_write_curves(o, c->name, title, t, M, 2, ref_names, ref_cols, rows + 1, n_all, band_mean,
                      band_ci, "T", 0.0, 0) != 0)
-        status = io_error(c->name, msg, msglen);
+        status = vfy_io_error(c->name, msg, msglen);
 done:
     vfy_refs_free(&refs);
     vfy_table_free(&table);

@@ -8,12 +8,19 @@
 #include "scene_ini.h"
 #include "table.h"
 
-/* The cases, in suite order (case_grw.c). */
+/* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
 sim_status vfy_case_grw_convergence(const vfy_case *, const vfy_options *, vfy_report *, char *,
                                     size_t);
 sim_status vfy_case_grw_hard_spheres(const vfy_case *, const vfy_options *, vfy_report *, char *,
                                      size_t);
 extern const struct grw_paper_table vfy_grw_table1, vfy_grw_table2;
+/* case_brs.c */
+sim_status vfy_case_brs_convergence(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                                    size_t);
+sim_status vfy_case_brs_steady(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                               size_t);
+extern const struct brs_paper_table vfy_brs_table1, vfy_brs_table2, vfy_brs_no_table;
+extern const struct brs_paper_steady vfy_brs_steady4, vfy_brs_steady5;
 
 static const vfy_case cases[] = {
     {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
@@ -22,6 +29,16 @@ static const vfy_case cases[] = {
      vfy_case_grw_convergence, &vfy_grw_table2},
     {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
      vfy_case_grw_hard_spheres, NULL},
+    {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",
+     1, vfy_case_brs_convergence, &vfy_brs_table1},
+    {"brs-ex2", "brs", "paper B Ex 2, Table 2: Maxwell kernels, drifting background", 1,
+     vfy_case_brs_convergence, &vfy_brs_table2},
+    {"brs-ex3", "brs", "paper B Ex 3: Maxwell kernels, light background (slow relaxation)", 0,
+     vfy_case_brs_convergence, &vfy_brs_no_table},
+    {"brs-ex4", "brs", "paper B Ex 4: hard spheres, K = 1/8: kinetic T* vs LE and Grad closures",
+     1, vfy_case_brs_steady, &vfy_brs_steady4},
+    {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,
+     vfy_case_brs_steady, &vfy_brs_steady5},
 };
 
 size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
@@ -44,6 +61,21 @@ int vfy_suite_exists(const char *name)
         if (strcmp(cases[i].suite, name) == 0)
             return 1;
     return 0;
+}
+
+const char *vfy_paper_suites(char *buf, size_t len)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < vfy_case_count(); i++) {
+        int seen = 0;
+        for (size_t j = 0; j < i && !seen; j++)
+            seen = strcmp(cases[j].suite, cases[i].suite) == 0;
+        if (!seen && used < len)
+            used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? ", " : "",
+                                     cases[i].suite);
+    }
+    return buf;
 }
 
 static int in_suite(const vfy_case *c, const char *suite)

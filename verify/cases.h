@@ -40,7 +40,7 @@ typedef sim_status (*vfy_case_fn)(const vfy_case *c, const vfy_options *o, vfy_r
 
 struct vfy_case {
     const char *name;      /* also the scene file's stem and the report's name */
-    const char *suite;     /* the paper's suite: "grw" */
+    const char *suite;     /* the paper's suite: "grw" (paper A), "brs" (paper B) */
     const char *summary;   /* one line for --list */
     int quick;             /* part of the quick suite */
     vfy_case_fn run;
@@ -53,6 +53,9 @@ const vfy_case *vfy_case_find(const char *name);
 
 /* Is `name` a suite ("quick", "paper" or a paper's suite such as "grw")? */
 int vfy_suite_exists(const char *name);
+
+/* The papers' suites in case order, comma-separated ("grw, brs"), in buf. */
+const char *vfy_paper_suites(char *buf, size_t len);
 
 /* Run every case of the suite, or only case_name (at the suite's sizes; the
  * default suite for a single case is "paper").  Stops at the first case that

@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -57,10 +58,14 @@ static const char usage_reference[] =
     "per reference named QUANTITY_MODEL: for heated Maxwell molecules T_exact\n"
     "(paper A Eq. 13) and the exact expectations of the n-particle estimators\n"
     "T_finite_n and T_raw_finite_n; for heated hard spheres T_maxwell_closure and\n"
-    "T_sonine_closure (CVODE). Exit 2 when no reference applies.\n";
+    "T_sonine_closure (CVODE). With a [background] (paper B): for Maxwell kernels\n"
+    "T_exact ux_exact uy_exact uz_exact (B.14-B.17) and T_finite_n (the exact\n"
+    "expectation of the n-particle T); for hard spheres the local-equilibrium and\n"
+    "Grad closures T_le ux_le uy_le uz_le, T_grad ux_grad uy_grad uz_grad (B.21,\n"
+    "B.22, CVODE). Exit 2 when no reference applies.\n";
 
 static const char usage_verify[] =
-    "usage: gdsmc verify [--suite quick|paper|grw] [--case NAME] [--out DIR]\n"
+    "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME] [--out DIR]\n"
     "                    [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
     "                    [--list]\n"
     "\n"
@@ -70,7 +75,8 @@ static const char usage_verify[] =
     "and exits 1 if any check fails.\n"
     "\n"
     "  --suite S    quick (CI sizes, minutes), paper (every case at the paper's\n"
-    "               sizes, the default), or a paper's own suite: grw (paper A)\n"
+    "               sizes, the default), or a paper's own suite at the paper's\n"
+    "               sizes: grw (paper A), brs (paper B), ... (--list shows all)\n"
     "  --case NAME  only this case (at the suite's sizes); --list shows them\n"
     "  --out DIR    where reports go (default: reports for the quick suite,\n"
     "               reports/paper for the papers' sizes)\n"
@@ -385,15 +391,20 @@ static int cmd_verify(int argc, char **argv)
     if (rc >= 0)
         return rc;
     if (a.list) {
-        printf("suites: quick (CI sizes), paper (all cases, paper sizes), grw (paper A)\n"
-               "cases:\n");
+        char suites[128];
+        printf("suites: quick (CI sizes), paper (all cases, paper sizes), and per paper: %s\n"
+               "cases:\n", vfy_paper_suites(suites, sizeof suites));
         for (size_t i = 0; i < vfy_case_count(); i++)
             printf("  %-10s %-6s %s%s\n", vfy_case_at(i)->name, vfy_case_at(i)->suite,
                    vfy_case_at(i)->summary, vfy_case_at(i)->quick ? " [quick]" : "");
         return EXIT_OK;
     }
-    if (a.suite && !vfy_suite_exists(a.suite))
-        return bad_usage("verify", "unknown suite '%s' (allowed quick, paper, grw)", a.suite);
+    if (a.suite && !vfy_suite_exists(a.suite)) {
+        char suites[128], why[256];
+        snprintf(why, sizeof why, "unknown suite '%s' (allowed quick, paper, %s)", a.suite,
+                 vfy_paper_suites(suites, sizeof suites));
+        return bad_usage("verify", "%s", why);
+    }
     if (a.case_name && !vfy_case_find(a.case_name))
         return bad_usage("verify", "unknown case '%s' (gdsmc verify --list shows them)",
                          a.case_name);
@@ -429,6 +440,9 @@ static int cmd_verify(int argc, char **argv)
 
 int gdsmc_main(int argc, char **argv)
 {
+    /* GSL reports errors through return codes here; its default handler aborts
+     * (STYLE: library code never aborts). */
+    gsl_set_error_handler_off();
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         fputs(usage_main, argc < 2 ? stderr : stdout);
         return argc < 2 ? EXIT_BAD_INPUT : EXIT_OK;

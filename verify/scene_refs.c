@@ -15,6 +15,132 @@ ref_heated_params vfy_heated_params(const sim_scene *scene)
     };
 }
 
+ref_background_params vfy_background_params(const sim_scene *scene)
+{
+    const struct sim_initial_spec *init = &scene->particles;
+    const double m = sim_scene_grain_mass(scene);
+    ref_background_params p = {
+        .mass = m,
+        .bg_density = scene->background.density,
+        .bg_mass = scene->background.mass,
+        .bg_temperature = scene->background.temperature,
+        .C1 = scene->background.constant,
+        .density = 1.0,
+        .C2 = scene->collisions.present ? scene->collisions.rate * scene->collisions.constant : 0.0,
+        .restitution = scene->collisions.present ? scene->collisions.restitution : 1.0,
+        .T0 = init->maxwellian.temperature,
+    };
+    for (int k = 0; k < 3; k++) {
+        p.bg_velocity[k] = scene->background.velocity[k];
+        p.u0[k] = init->maxwellian.velocity[k];
+    }
+    if (init->initial == SIM_INITIAL_TWO_MAXWELLIANS) {   /* paper B Eq. (35) */
+        const double f = init->fraction;
+        const sim_maxwellian *a = &init->first, *b = &init->second;
+        double da2 = 0.0, db2 = 0.0;
+        for (int k = 0; k < 3; k++)
+            p.u0[k] = f * a->velocity[k] + (1.0 - f) * b->velocity[k];
+        for (int k = 0; k < 3; k++) {
+            da2 += (a->velocity[k] - p.u0[k]) * (a->velocity[k] - p.u0[k]);
+            db2 += (b->velocity[k] - p.u0[k]) * (b->velocity[k] - p.u0[k]);
+        }
+        p.T0 = f * (a->temperature + m * da2 / 3.0) + (1.0 - f) * (b->temperature + m * db2 / 3.0);
+    }
+    return p;
+}
+
+/* Which paper B references the scene admits; the key at fault otherwise. */
+static sim_status check_paper_b(const sim_scene *s, sim_error *err)
+{
+    if (s->heating.present || s->shear.present || s->heat_flux.present)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "background",
+                             "no reference for a background combined with heating, shear or "
+                             "a heat-flux force");
+    if (s->background.kernel != SIM_KERNEL_MAXWELL
+        && s->background.kernel != SIM_KERNEL_HARD_SPHERES)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "background.kernel",
+                             "paper B references need kernel maxwell or hard-spheres");
+    if (s->collisions.present && s->collisions.exponent != (s->background.kernel
+                                                            == SIM_KERNEL_MAXWELL ? 0.0 : 1.0))
+        return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.kernel",
+                             "paper B references need the same kernel for binary and background "
+                             "collisions (background.kernel is %s)",
+                             s->background.kernel == SIM_KERNEL_MAXWELL ? "maxwell"
+                                                                        : "hard-spheres");
+    return SIM_OK;
+}
+
+static void set_name(vfy_refs *refs, const char *name)
+{
+    snprintf(refs->names[refs->count++], sizeof refs->names[0], "%s", name);
+}
+
+/* Paper B: closed forms and the exact finite-n T (Maxwell), or the two
+ * closures (hard spheres), into refs (values allocated, t the output times). */
+static sim_status background_references(const sim_scene *scene, const double *t,
+                                        vfy_refs *refs, sim_error *err)
+{
+    const size_t M = scene->outputs;
+    const ref_background_params p = vfy_background_params(scene);
+    char msg[256];
+    if (scene->background.kernel == SIM_KERNEL_MAXWELL) {
+        static const char *const names[] = {"T_exact", "ux_exact", "uy_exact", "uz_exact"};
+        for (size_t j = 0; j < 4; j++)
+            set_name(refs, names[j]);
+        for (size_t m = 0; m < M; m++) {
+            double *row = refs->values + m * VFY_REFS_MAX;
+            row[0] = ref_background_maxwell_T(&p, t[m]);
+            ref_background_maxwell_u(&p, t[m], row + 1);
+        }
+        if (scene->particles.zero_momentum)
+            return SIM_OK;
+        double *T = malloc(M * sizeof *T);
+        if (T == NULL)
+            return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+        ref_status st = ref_background_maxwell_T_mean(&p, (double)scene->particles.n, t, M, NULL,
+                                                      T, msg, sizeof msg);
+        if (st == REF_OK) {
+            set_name(refs, "T_finite_n");
+            for (size_t m = 0; m < M; m++)
+                refs->values[m * VFY_REFS_MAX + 4] = T[m];
+        }
+        free(T);
+        return st == REF_OK ? SIM_OK
+                            : sim_error_set(err, SIM_EINVAL, "", "T_finite_n: %s", msg);
+    }
+    static const struct {
+        ref_background_closure closure;
+        const char *suffix;
+    } closures[] = {{REF_BACKGROUND_LE, "le"}, {REF_BACKGROUND_GRAD, "grad"}};
+    double *u = malloc(3 * M * sizeof *u), *T = malloc(M * sizeof *T);
+    sim_status status = SIM_OK;
+    if (u == NULL || T == NULL)
+        status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    for (size_t c = 0; c < 2 && status == SIM_OK; c++) {
+        if (ref_background_hs(&p, closures[c].closure, t, M, NULL, u, T, msg, sizeof msg)
+            != REF_OK) {
+            status = sim_error_set(err, SIM_EINVAL, "", "T_%s: %s", closures[c].suffix, msg);
+            break;
+        }
+        static const char *const quantities[] = {"T", "ux", "uy", "uz"};
+        size_t first = refs->count;
+        for (size_t j = 0; j < 4; j++) {
+            char name[32];
+            snprintf(name, sizeof name, "%s_%s", quantities[j], closures[c].suffix);
+            set_name(refs, name);
+        }
+        for (size_t m = 0; m < M; m++) {
+            double *row = refs->values + m * VFY_REFS_MAX + first;
+            row[0] = T[m];
+            for (int k = 0; k < 3; k++)
+                row[1 + k] = u[3 * m + k];
+        }
+    }
+    free(u);
+    free(T);
+    return status;
+}
+
 /* Which paper A references the scene admits; the key at fault otherwise. */
 static sim_status check_paper_a(const sim_scene *s, sim_error *err)
 {
@@ -43,15 +169,11 @@ static sim_status check_paper_a(const sim_scene *s, sim_error *err)
     return SIM_OK;
 }
 
-static void set_name(vfy_refs *refs, const char *name)
-{
-    snprintf(refs->names[refs->count++], sizeof refs->names[0], "%s", name);
-}
-
 sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_error *err)
 {
     memset(refs, 0, sizeof *refs);
-    sim_status status = check_paper_a(scene, err);
+    const int paper_b = scene->background.present;
+    sim_status status = paper_b ? check_paper_b(scene, err) : check_paper_a(scene, err);
     if (status != SIM_OK)
         return status;
     const size_t M = scene->outputs;
@@ -69,7 +191,9 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
 
     const ref_heated_params p = vfy_heated_params(scene);
     const double n = (double)scene->particles.n;
-    if (scene->collisions.exponent == 0.0) {   /* Maxwell molecules: exact */
+    if (paper_b) {
+        status = background_references(scene, t, refs, err);
+    } else if (scene->collisions.exponent == 0.0) {   /* Maxwell molecules: exact */
         set_name(refs, "T_exact");
         if (!scene->particles.zero_momentum) {
             set_name(refs, "T_finite_n");

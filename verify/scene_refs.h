@@ -8,6 +8,13 @@
  *                        n-particle estimators, T_finite_n and T_raw_finite_n
  *                        (reference/heated.h; i.i.d. initial state only)
  *   hard-spheres kernel: T_maxwell_closure, T_sonine_closure (SPEC §3 Ex 5)
+ *
+ * Paper B scenes (a background, binary collisions optional, no other effect,
+ * i.i.d. initial state: Maxwellian, two Maxwellians or shell):
+ *   maxwell kernels:      T_exact, ux_exact, uy_exact, uz_exact (B.14-B.17),
+ *                         T_finite_n (exact E T_n, reference/background.h)
+ *   hard-spheres kernels: T_le, ux_le, uy_le, uz_le (B.21) and T_grad,
+ *                         ux_grad, uy_grad, uz_grad (B.22), with CVODE
  */
 #ifndef GDSMC_VFY_SCENE_REFS_H
 #define GDSMC_VFY_SCENE_REFS_H
@@ -15,10 +22,11 @@
 #include <stddef.h>
 
 #include "error.h"
+#include "background.h"
 #include "heated.h"
 #include "scene.h"
 
-#define VFY_REFS_MAX 4
+#define VFY_REFS_MAX 12
 
 typedef struct vfy_refs {
     size_t outputs;
@@ -39,5 +47,11 @@ void vfy_refs_free(vfy_refs *refs);
 
 /* The paper A parameters of a scene (no checks). */
 ref_heated_params vfy_heated_params(const sim_scene *scene);
+
+/* The paper B parameters of a scene (no checks): u0 and T0 are the initial
+ * distribution's mean velocity and temperature (for two Maxwellians, the
+ * mixture's, which includes the spread of the two drifts); rho = 1 and
+ * C2 = rate x constant of [collisions] (0 without collisions). */
+ref_background_params vfy_background_params(const sim_scene *scene);
 
 #endif

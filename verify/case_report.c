@@ -1,0 +1,158 @@
+#include "case_report.h"
+
+#include <errno.h>
+#include <gsl/gsl_fit.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "figure.h"
+#include "scene_ini.h"
+#include "table.h"
+
+void vfy_cost_cells(struct vfy_table *table, double cpu_seconds, double wall_seconds,
+                    double events)
+{
+    vfy_table_cell(table, "%.2f", cpu_seconds);
+    vfy_table_cell(table, "%.2f", wall_seconds);
+    vfy_table_cell(table, "%.0f", events);
+    vfy_table_cell(table, "%.1f", events > 0 ? 1e9 * cpu_seconds / events : 0.0);
+}
+
+sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene *scene,
+                       const sim_scene *solver, vfy_refs *refs, sim_ensemble_result *res,
+                       char *msg, size_t msglen)
+{
+    sim_error err;
+    memset(res, 0, sizeof *res);
+    sim_status status = vfy_scene_references(scene, refs, &err);
+    if (status != SIM_OK) {
+        vfy_scene_format_error(scene, &err, msg, msglen);
+        return status;
+    }
+    char label[96];
+    snprintf(label, sizeof label, "%s n=%zu", c->name, solver->particles.n);
+    if ((status = vfy_simulate(solver, o, label, res, msg, msglen)) != SIM_OK) {
+        vfy_refs_free(refs);
+        sim_ensemble_result_free(res);
+    }
+    return status;
+}
+
+const char *vfy_run_comment(const sim_scene *s, char *buf, size_t len)
+{
+    snprintf(buf, len, "gdsmc %s verify: scene %s, seed %llu, N = %zu ensembles, %zu outputs on "
+             "[0, %g]", GDSMC_VERSION, s->file, (unsigned long long)s->seed,
+             s->particles.ensembles, s->outputs, s->t_end);
+    return buf;
+}
+
+
+sim_status vfy_io_error(const char *path, char *msg, size_t msglen)
+{
+    snprintf(msg, msglen, "%s: cannot write: %s", path, strerror(errno));
+    return SIM_EIO;
+}
+
+
+void vfy_result_column(const sim_ensemble_result *r, int k, double *mean, double *ci)
+{
+    for (size_t m = 0; m < r->outputs; m++) {
+        mean[m] = sim_result_mean(r, m, k);
+        if (ci)
+            ci[m] = sim_result_ci(r, m, k);
+    }
+}
+
+
+int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
+                        const double *t, size_t M, size_t nref, const char *const *ref_names,
+                        const double *const *refs, size_t rows, const size_t *n,
+                        const double *mean, const double *ci, const char *quantity,
+                        double x_from, int one_panel_per_row)
+{
+    char path[1024], tmp[1100], png[1024];
+    FILE *f = vfy_file_begin(vfy_report_path(o, name, "-curves.csv", path, sizeof path), tmp,
+                             sizeof tmp);
+    if (f == NULL)
+        return -1;
+    fprintf(f, "t");
+    for (size_t j = 0; j < nref; j++)
+        fprintf(f, ",%s", ref_names[j]);
+    for (size_t i = 0; i < rows; i++) {
+        if (n[i] == 0)   /* the O(1/n) extrapolation */
+            fprintf(f, ",%s_ninf,%s_ninf_ci", quantity, quantity);
+        else
+            fprintf(f, ",%s_n%zu,%s_n%zu_ci", quantity, n[i], quantity, n[i]);
+    }
+    fputc('\n', f);
+    for (size_t m = 0; m < M; m++) {
+        fprintf(f, "%.10g", t[m]);
+        for (size_t j = 0; j < nref; j++)
+            fprintf(f, ",%.12g", refs[j][m]);
+        for (size_t i = 0; i < rows; i++)
+            fprintf(f, ",%.12g,%.6g", mean[i * M + m], ci[i * M + m]);
+        fputc('\n', f);
+    }
+    if (vfy_file_commit(f, tmp, path, 1) != 0)
+        return -1;
+
+    char gp[1024];
+    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
+               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
+               "set xrange [%g:*]\n"
+               "set xlabel 't'\nset ylabel '%s'\nset key top right\n",
+            title, gp, one_panel_per_row ? 900 : 700,
+            vfy_report_path(o, name, ".png", png, sizeof png), x_from, quantity);
+    size_t panels = one_panel_per_row ? (rows < 4 ? rows : 4) : 1;
+    if (one_panel_per_row)
+        fprintf(f, "set multiplot layout 2,2 title '%s'\n", title);
+    else
+        fprintf(f, "set title '%s'\n", title);
+    for (size_t p = 0; p < panels; p++) {
+        size_t first = one_panel_per_row ? p : 0, last = one_panel_per_row ? p + 1 : rows;
+        if (one_panel_per_row)
+            fprintf(f, "set title 'n = %zu'\n", n[p]);
+        fprintf(f, "plot");
+        for (size_t j = 0; j < nref; j++)
+            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt 2 lw 2 title '%s'",
+                    j ? "," : "", path, 2 + j, ref_names[j]);
+        for (size_t i = first; i < last; i++) {
+            size_t col = 2 + nref + 2 * i;
+            char label[64];
+            if (n[i] == 0)
+                snprintf(label, sizeof label, "n = infinity (O(1/n) extrapolation) ± c");
+            else
+                snprintf(label, sizeof label, "n = %zu: mean ± c", n[i]);
+            fprintf(f, ", '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
+                       "fs transparent solid 0.25 lc %zu title '%s'",
+                    path, col, col + 1, col, col + 1, i + 1, label);
+        }
+        fputc('\n', f);
+    }
+    if (one_panel_per_row)
+        fprintf(f, "unset multiplot\n");
+    if (vfy_file_commit(f, tmp, gp, 1) != 0)
+        return -1;
+    if (vfy_gnuplot(gp) < 0 && o->progress)
+        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
+    return 0;
+}
+
+
+void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
+                               const double *sigma, double *T_inf, double *sd, double *chi2)
+{
+    double x[VFY_ROWS_MAX], w[VFY_ROWS_MAX], c0, c1, cov00, cov01, cov11;
+    for (size_t i = 0; i < rows; i++) {
+        x[i] = 1.0 / (double)n[i];
+        w[i] = sigma[i] > 0.0 ? 1.0 / (sigma[i] * sigma[i]) : 1e300;
+    }
+    gsl_fit_wlinear(x, 1, w, 1, mean, 1, rows, &c0, &c1, &cov00, &cov01, &cov11, chi2);
+    *T_inf = c0;
+    *sd = sqrt(cov00);
+}
+

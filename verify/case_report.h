@@ -1,0 +1,55 @@
+/* Report pieces shared by the verify cases (SPEC §9): the provenance
+ * comment, result columns, curves files with gnuplot figures, and the O(1/n)
+ * extrapolation. */
+#ifndef GDSMC_VFY_CASE_REPORT_H
+#define GDSMC_VFY_CASE_REPORT_H
+
+#include <stddef.h>
+
+#include "cases.h"
+#include "ensemble.h"
+#include "scene_refs.h"
+
+#define VFY_ROWS_MAX 8   /* rows (particle numbers) of one case */
+
+/* One row of a convergence table: the references of `scene` into *refs and
+ * the simulation of `solver` into *res, with progress lines labelled
+ * "<case> n=<n>".  On failure both are freed and msg says why. */
+sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene *scene,
+                       const sim_scene *solver, vfy_refs *refs, sim_ensemble_result *res,
+                       char *msg, size_t msglen);
+
+/* The cost columns every table ends with: cpu_s, wall_s, events,
+ * ns_per_event (CPU nanoseconds per candidate event). */
+#define VFY_COST_COLUMNS "cpu_s", "wall_s", "events", "ns_per_event"
+struct vfy_table;
+void vfy_cost_cells(struct vfy_table *table, double cpu_seconds, double wall_seconds,
+                    double events);
+
+/* "gdsmc VERSION verify: scene FILE, seed S, N = ..., M outputs on [0, t_end]". */
+const char *vfy_run_comment(const sim_scene *s, char *buf, size_t len);
+
+/* msg = "PATH: cannot write: strerror(errno)"; returns SIM_EIO. */
+sim_status vfy_io_error(const char *path, char *msg, size_t msglen);
+
+/* Observable k of every output time: mean[m] and (if ci != NULL) ci[m]. */
+void vfy_result_column(const sim_ensemble_result *r, int k, double *mean, double *ci);
+
+/* out_dir/<name>-curves.csv (t, the reference columns, then mean and ci of
+ * each row; n[i] = 0 marks the O(1/n) extrapolation) and out_dir/<name>.gp
+ * drawing each row's confidence band beside the references (one panel per row
+ * for the first four rows, or all in one), rendered to <name>.png when gnuplot
+ * is installed.  mean and ci are rows x M.  Returns 0 or -1 (errno). */
+int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
+                     const double *t, size_t M, size_t nref, const char *const *ref_names,
+                     const double *const *refs, size_t rows, const size_t *n,
+                     const double *mean, const double *ci, const char *quantity,
+                     double x_from, int one_panel_per_row);
+
+/* O(1/n) extrapolation at one output time: weighted least squares of
+ * mean_i = T_inf + b / n_i with weights 1/sigma_i^2 (GSL).  Returns T_inf,
+ * its standard error and the fit's chi^2 (rows <= VFY_ROWS_MAX). */
+void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
+                               const double *sigma, double *T_inf, double *sd, double *chi2);
+
+#endif
