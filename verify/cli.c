@@ -9,6 +9,7 @@
 
 #include "cases.h"
 #include "engine.h"
+#include "bench.h"
 #include "ensemble.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
@@ -29,6 +30,7 @@ static const char usage_main[] =
     "  reference SCENE  the deterministic references that apply to a scene, as CSV\n"
     "  verify           run verification cases and write tables and figures to reports/\n"
     "  sonine           Sonine-approximation values of paper C (a2, mu2, mu4, tails), CSV\n"
+    "  bench            throughput of the engine against a bare floor loop, one core\n"
     "\n"
     "  gdsmc COMMAND --help   options of a command\n"
     "  gdsmc --version\n"
@@ -88,6 +90,26 @@ static const char usage_verify[] =
     "               wrong solver, which the checks must catch (e.g.\n"
     "               --solver-set collisions.restitution=0.45)\n"
     "  --list       list the cases and suites\n";
+
+static const char usage_bench[] =
+    "usage: gdsmc bench [--out FILE.csv] [--md FILE.md] [--max-n N] [--seconds S]\n"
+    "\n"
+    "Measure, on one core, events per CPU second of:\n"
+    "  floor     the bare hard-sphere kernel (random indices, acceptance test and\n"
+    "            collision arithmetic; no waiting times, majorants or counters)\n"
+    "  hs-relax  the engine on elastic hard spheres in one cell relaxing from two\n"
+    "            counter-streaming Maxwellians, n = 1e3, 1e4, ... up to --max-n\n"
+    "            (accepted collisions per second)\n"
+    "  grw-ex3   paper A Ex 3 at n = 1024 (candidate events per second)\n"
+    "  brs-ex4   paper B Ex 4, Algorithm 2, at n = 1024\n"
+    "and print the table (Markdown) with floor_ratio = rate / floor rate at the same\n"
+    "n (the paper scenes against the floor at n = 1000), the acceptance rate, bytes\n"
+    "per particle and the process's peak memory. Progress goes to standard error.\n"
+    "\n"
+    "  --out FILE    also write the table as CSV\n"
+    "  --md FILE     also write it as Markdown\n"
+    "  --max-n N     largest n of hs-relax (default 10000000; at least 1000)\n"
+    "  --seconds S   about S CPU seconds per row (default 2)\n";
 
 static const char usage_sonine[] =
     "usage: gdsmc sonine --alpha A [--d D] [--out FILE.csv]\n"
@@ -384,6 +406,67 @@ static int cmd_sonine(int argc, char **argv)
     return close_out("sonine", f, out, tmp);
 }
 
+static int cmd_bench(int argc, char **argv)
+{
+    const char *out = NULL, *md = NULL, *max_n_text = NULL, *seconds_text = NULL;
+    for (int i = 0; i < argc; i++) {
+        const char *opt = argv[i], **value;
+        if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0) {
+            fputs(usage_bench, stdout);
+            return EXIT_OK;
+        } else if (strcmp(opt, "--out") == 0) {
+            value = &out;
+        } else if (strcmp(opt, "--md") == 0) {
+            value = &md;
+        } else if (strcmp(opt, "--max-n") == 0) {
+            value = &max_n_text;
+        } else if (strcmp(opt, "--seconds") == 0) {
+            value = &seconds_text;
+        } else {
+            return bad_usage("bench", "unknown argument '%s'", opt);
+        }
+        if (i + 1 >= argc)
+            return bad_usage("bench", "option '%s' needs a value", opt);
+        *value = argv[++i];
+    }
+    vfy_bench_options o = {.max_n = 10000000, .seconds = 2.0,
+                           .scene_dir = GDSMC_SOURCE_DIR "/verify/scenes", .progress = stderr};
+    char *end;
+    if (max_n_text) {
+        double x = strtod(max_n_text, &end);
+        if (end == max_n_text || *end || !(x >= 1000 && x <= 1e9))
+            return bad_usage("bench", "--max-n '%s': allowed 1000 <= N <= 1e9", max_n_text);
+        o.max_n = (size_t)x;
+    }
+    if (seconds_text) {
+        o.seconds = strtod(seconds_text, &end);
+        if (end == seconds_text || *end || !(o.seconds > 0 && o.seconds <= 3600))
+            return bad_usage("bench", "--seconds '%s': allowed 0 < S <= 3600", seconds_text);
+    }
+    vfy_table table;
+    char msg[512];
+    if (vfy_bench_run(&o, &table, msg, sizeof msg) != SIM_OK) {
+        vfy_table_free(&table);
+        fprintf(stderr, "gdsmc bench: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    char comment[256];
+    snprintf(comment, sizeof comment, "gdsmc %s bench: one core, CPU seconds of the thread, "
+             "about %g s per row", GDSMC_VERSION, o.seconds);
+    int rc = EXIT_OK;
+    if (out && vfy_table_write_csv(&table, out, comment) != 0) {
+        fprintf(stderr, "gdsmc bench: %s: cannot write: %s\n", out, strerror(errno));
+        rc = EXIT_BAD_INPUT;
+    }
+    if (md && vfy_table_write_markdown(&table, md, "gdsmc bench", comment) != 0) {
+        fprintf(stderr, "gdsmc bench: %s: cannot write: %s\n", md, strerror(errno));
+        rc = EXIT_BAD_INPUT;
+    }
+    vfy_table_print_markdown(&table, stdout, "gdsmc bench", comment);
+    vfy_table_free(&table);
+    return rc;
+}
+
 static int cmd_verify(int argc, char **argv)
 {
     args a;
@@ -459,7 +542,9 @@ int gdsmc_main(int argc, char **argv)
         return cmd_verify(argc - 2, argv + 2);
     if (strcmp(argv[1], "sonine") == 0)
         return cmd_sonine(argc - 2, argv + 2);
-    fprintf(stderr, "gdsmc: unknown command '%s' (allowed run, reference, verify, sonine; see "
-            "gdsmc --help)\n", argv[1]);
+    if (strcmp(argv[1], "bench") == 0)
+        return cmd_bench(argc - 2, argv + 2);
+    fprintf(stderr, "gdsmc: unknown command '%s' (allowed run, reference, verify, sonine, "
+            "bench; see gdsmc --help)\n", argv[1]);
     return EXIT_BAD_INPUT;
 }

@@ -104,13 +104,9 @@ int vfy_table_write_csv(const vfy_table *t, const char *path, const char *commen
     return vfy_file_commit(f, tmp, path, 1);
 }
 
-int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *title,
-                             const char *notes)
+void vfy_table_print_markdown(const vfy_table *t, FILE *f, const char *title,
+                              const char *notes)
 {
-    char tmp[1024];
-    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
-    if (f == NULL)
-        return -1;
     fprintf(f, "# %s\n\n", title);
     if (notes && *notes)
         fprintf(f, "%s\n\n", notes);
@@ -128,5 +124,15 @@ int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *t
         if ((i + 1) % t->ncols == 0)
             fputc('\n', f);
     }
+}
+
+int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *title,
+                             const char *notes)
+{
+    char tmp[1024];
+    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    vfy_table_print_markdown(t, f, title, notes);
     return vfy_file_commit(f, tmp, path, 1);
 }

@@ -36,6 +36,10 @@ int vfy_table_write_csv(const vfy_table *t, const char *path, const char *commen
 int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *title,
                              const char *notes);
 
+/* The same Markdown on an open stream (e.g. stdout). */
+void vfy_table_print_markdown(const vfy_table *t, FILE *f, const char *title,
+                              const char *notes);
+
 /* Open path.tmp for writing (tmp receives its name, tmplen bytes); commit with
  * vfy_file_commit, which closes it and renames it over path (or removes it
  * when ok = 0).  Returns NULL (errno set) on failure. */
