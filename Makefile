@@ -1,17 +1,22 @@
 # gdsmc: the two commands of the README, plus their parts.
 #   make verify   install missing packages, configure, build, run the quick suite
-#   make test     the same set-up, then every test, and the unit tests again
-#                 in an address+undefined sanitizer build
+#   make test     the same set-up, then every test, and the unit tests and the
+#                 quick suite again in an address+undefined sanitizer build
+#   make fuzz     libFuzzer (clang, address sanitizer) over scene parsing and
+#                 validation for FUZZ_SECONDS (default 600), corpus verify/scenes
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 600
 CMAKE_FLAGS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages the build needs (SPEC: never vendored).
 PACKAGES = cmake make gcc pkg-config libgsl-dev libsundials-dev libcmocka-dev \
            librandom123-dev libinih-dev gnuplot-nox
+FUZZ_PACKAGES = clang libomp-dev
 
-.PHONY: all deps build verify test test-sanitize clean
+.PHONY: all deps build verify test test-sanitize fuzz clean
 
 all: build
 
@@ -44,6 +49,18 @@ test-sanitize: deps
 	cmake -S . -B $(SANITIZE_BUILD) -DGDSMC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug $(CMAKE_FLAGS)
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	ctest --test-dir $(SANITIZE_BUILD) -L unit -j $(JOBS) --output-on-failure
+	$(SANITIZE_BUILD)/gdsmc verify --suite quick --out $(SANITIZE_BUILD)/reports
+
+# The fuzzer's corpus grows in $(FUZZ_BUILD)/corpus (seeded from verify/scenes);
+# crashes are written to $(FUZZ_BUILD)/crash-*.
+fuzz:
+	$(MAKE) deps PACKAGES="$(PACKAGES) $(FUZZ_PACKAGES)"
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_C_COMPILER=clang -DGDSMC_FUZZ=ON $(CMAKE_FLAGS)
+	cmake --build $(FUZZ_BUILD) --target fuzz_scene -j $(JOBS)
+	mkdir -p $(FUZZ_BUILD)/corpus
+	cp -n verify/scenes/*.ini $(FUZZ_BUILD)/corpus/
+	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	  -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus
 
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)
