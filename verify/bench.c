@@ -137,7 +137,7 @@ static void add_row(vfy_table *t, const char *name, size_t n, const bench_row *r
     vfy_table_cell(t, "%.3f", row->cpu);
     vfy_table_cell(t, "%.4g", rate);
     vfy_table_cell(t, "%.1f", 1e9 / rate);
-    vfy_table_cell(t, floor_rate > 0 ? "%.3f" : "", rate / floor_rate);
+    vfy_table_number(t, floor_rate > 0, "%.3f", rate / floor_rate);
     vfy_table_cell(t, "%.3f", acceptance);
     vfy_table_cell(t, "%.0f", row->bytes_per_particle);
     vfy_table_cell(t, "%.1f", peak_rss_mb());

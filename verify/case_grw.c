@@ -153,8 +153,8 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
         vfy_table_cell(&table, "%zu", res.ensembles);
         vfy_table_cell(&table, "%.3e", emax);
         vfy_table_cell(&table, "%.3e", paper->emax[i]);
-        vfy_table_cell(&table, i ? "%.2f" : "", cf);
-        vfy_table_cell(&table, i ? "%.2f" : "", paper->cf[i]);
+        vfy_table_number(&table, i, "%.2f", cf);
+        vfy_table_number(&table, i, "%.2f", paper->cf[i]);
         vfy_table_cell(&table, "%.3e", vinf);
         vfy_table_cell(&table, "%.3e", paper->vinf[i]);
         vfy_table_cell(&table, "%.3e", emax_c);

@@ -43,6 +43,15 @@ int vfy_table_cell(vfy_table *t, const char *fmt, ...)
     return 0;
 }
 
+int vfy_table_number(vfy_table *t, int present, const char *fmt, double x)
+{
+    char buf[64];
+    if (!present)
+        return vfy_table_cell(t, "%s", "");
+    snprintf(buf, sizeof buf, fmt, x);
+    return vfy_table_cell(t, "%s", buf);
+}
+
 FILE *vfy_file_begin(const char *path, char *tmp, size_t tmplen)
 {
     if ((size_t)snprintf(tmp, tmplen, "%s.tmp", path) >= tmplen) {

@@ -25,6 +25,9 @@ void vfy_table_free(vfy_table *t);
  * Returns 0, or -1 when out of memory. */
 int vfy_table_cell(vfy_table *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
+/* A number in fmt when present, else an empty cell (e.g. the CF of a first row). */
+int vfy_table_number(vfy_table *t, int present, const char *fmt, double x);
+
 static inline size_t vfy_table_rows(const vfy_table *t) { return t->ncells / t->ncols; }
 
 /* Write the table as CSV; comment (may be NULL, may hold several lines) goes
