@@ -46,7 +46,7 @@ test: build
 	$(MAKE) test-sanitize
 
 test-sanitize: deps
-	cmake -S . -B $(SANITIZE_BUILD) -DGDSMC_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug $(CMAKE_FLAGS)
+	cmake -S . -B $(SANITIZE_BUILD) -DGDSMC_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo $(CMAKE_FLAGS)
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS)
 	ctest --test-dir $(SANITIZE_BUILD) -L unit -j $(JOBS) --output-on-failure
 	$(SANITIZE_BUILD)/gdsmc verify --suite quick --out $(SANITIZE_BUILD)/reports
