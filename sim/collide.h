@@ -28,6 +28,22 @@ static inline void sim_collide_inelastic(double v[3], double w[3], double alpha,
     }
 }
 
+/* The contact rule of paper C (SPEC §5): inelastic hard spheres meeting along
+ * the unit vector s with gs = (v - w).s > 0,
+ *   v' = v - (1+alpha)/2 gs s,   w' = w + (1+alpha)/2 gs s.
+ * With s drawn with density proportional to Θ(g.s)(g.s) on S^2 this is paper
+ * A's rule (above) with e uniform: g' = (1-alpha)/2 g + (1+alpha)/2 |g| e,
+ * e = g - 2 (g.s) s / |g| being uniform (SPEC §5). */
+static inline void sim_collide_contact(double v[3], double w[3], double alpha, double gs,
+                                       const double s[3])
+{
+    const double a = 0.5 * (1.0 + alpha) * gs;
+    for (int k = 0; k < 3; k++) {
+        v[k] -= a * s[k];
+        w[k] += a * s[k];
+    }
+}
+
 /* Elastic collision of a grain v with a background partner w (SPEC §4, paper B
  * Eq. (2)): v' = (1 - a) v + a w + a |v - w| e, with the mass ratio
  * a = m_B / (m + m_B).  The partner's post-collision velocity, which the fixed

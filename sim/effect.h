@@ -22,6 +22,12 @@
  * which flow (at most one lazy flow in the jump scheme), which events, and for
  * each event the `fire` specialised for its kernel and for the presence of a
  * flow, so the hot loop carries no branch on scene options.
+ *
+ * The time-step scheme (SPEC §5, §10) alternates whole-system stages of length
+ * h: an event process's `stage` (Bird's collision stage: candidates at the
+ * majorant rate, the fractional remainder kept in the per-run state) and a
+ * flow's `step`.  Both keep the shared velocity bound covering every velocity
+ * they change (sim_run_cover), so the majorant stays a true bound.
  */
 #ifndef GDSMC_SIM_EFFECT_H
 #define GDSMC_SIM_EFFECT_H
@@ -37,12 +43,16 @@ typedef struct sim_run sim_run;         /* one ensemble in progress (run.h) */
 typedef struct sim_effect sim_effect;
 
 typedef double (*sim_event_fire_fn)(const sim_effect *e, sim_run *run, void *state, double t);
+typedef void (*sim_event_stage_fn)(const sim_effect *e, sim_run *run, void *state, double h);
 
 typedef struct sim_effect_type {
     const char *name;   /* the scene section, e.g. "heating" */
 
     /* Flows (NULL for event processes). */
     void (*advance)(const sim_effect *e, double v[3], double dt, gsl_rng *rng);
+    /* The time-step scheme's free-flight stage: move every velocity by the flow
+     * over h, covering each new velocity (sim_run_cover).  NULL: the flow has
+     * no time-step form. */
     void (*step)(const sim_effect *e, sim_run *run, double h);
     /* How far the flow may move a velocity in time dt: a bound that event
      * majorants add as a margin (for random flows a bound exceeded with
@@ -67,6 +77,11 @@ typedef struct sim_effect_type {
      * engine maintains the velocity bound (then every velocity change must be
      * covered). */
     sim_event_fire_fn (*select_fire)(const sim_effect *e, int lazy_flow, int bounded);
+    /* The time-step scheme's stage of length h for this process (NULL: none,
+     * and the engine refuses the scene).  The per-run state is zeroed at the
+     * start of each run and `reset` is called at each output time, as in the
+     * jump scheme. */
+    sim_event_stage_fn (*select_stage)(const sim_effect *e);
 } sim_effect_type;
 
 struct sim_effect {
@@ -75,7 +90,8 @@ struct sim_effect {
 };
 
 /* Constructors: fill *effect from the scene's section (which must be present).
- * They check what the engine supports and name the scene key otherwise. */
+ * They check what the engine supports (for the scene's scheme) and name the
+ * scene key otherwise. */
 sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim_error *err);

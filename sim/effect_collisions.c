@@ -17,6 +17,21 @@
  * synchronised, R is recomputed from scratch, so the majorant also shrinks
  * when the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
  * candidate is accepted and the rate never changes.
+ *
+ * The time-step scheme (SPEC §5, paper C §3), hard spheres only: a collision
+ * stage of length h draws candidates at the rate R_c = 8 pi gamma C (n - 1) U_max
+ * (Bird's (1/2) n omega_max h per stage with omega_max = 16 pi gamma C
+ * (n - 1)/n U_max; the fractional remainder is kept for the next stage), each an
+ * ordered pair i != j with s uniform on S^2, accepted with probability
+ * Θ(g.s) (g.s)/U_max, and collides by the contact rule (collide.h).  Since
+ * E_s[Θ(g.s)(g.s)] = |g|/4, each unordered pair collides at the rate
+ * 4 pi gamma C |g|/n, exactly that of the jump scheme above, so that as h -> 0
+ * the two schemes simulate the same n-particle process (up to Bird's
+ * deterministic candidate count, an O(1/n) effect in transients).  U_max = 2R
+ * follows the shared bound as above, so g.s <= |g| <= U_max always holds and
+ * the paper's "omega_max updated when exceeded" never has to act; a candidate
+ * with g.s > U_max would still be counted as a violation.  When U_max grows
+ * within the stage, the remaining stage time is spent at the new rate.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -30,12 +45,15 @@ typedef struct collisions_params {
     double lambda;      /* VHS exponent */
     double alpha;       /* restitution */
     double prefactor;   /* 2 pi gamma C (n - 1) */
+    double stage_time;  /* time-step scheme: 1 / (8 pi gamma C (n - 1)), the time per
+                           candidate times U_max */
 } collisions_params;
 
 typedef struct collisions_state {
     double radius;      /* the bound's R when umax was last computed */
     double umax;        /* 2 R */
     double rate;        /* prefactor umax^lambda */
+    double credit;      /* time-step scheme: stage time not yet spent on candidates */
 } collisions_state;
 
 enum kernel_case { KERNEL_MAXWELL, KERNEL_HARD_SPHERES, KERNEL_VHS };
@@ -151,6 +169,61 @@ static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_fl
     return lazy_flow ? fire_vhs_flow : fire_vhs;
 }
 
+/* One collision stage of the time-step scheme (hard spheres, contact rule). */
+static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    gsl_rng *rng = run->rng;
+    const size_t n = run->p.n;
+    const double alpha = p->alpha;
+
+    follow_bound(p, s, run);
+    if (!(s->umax > 0.0)) {   /* every velocity equal: no collision can happen */
+        s->credit = 0.0;
+        return;
+    }
+    double dtc = p->stage_time / s->umax;   /* time per candidate */
+    double credit = s->credit + h;
+    uint64_t candidates = 0, collisions = 0;
+    while (credit >= dtc) {
+        credit -= dtc;
+        candidates++;
+        size_t i = (size_t)sim_rng_index(rng, n);
+        size_t j = (size_t)sim_rng_index(rng, n - 1);
+        j += (j >= i);
+        double unit[3];
+        sim_rng_unit_sphere(rng, unit);
+        double *vi = run->p.v[i], *vj = run->p.v[j];
+        double gs = (vi[0] - vj[0]) * unit[0] + (vi[1] - vj[1]) * unit[1]
+                    + (vi[2] - vj[2]) * unit[2];
+        if (gs <= 0.0)   /* Θ(g.s): the spheres move apart */
+            continue;
+        if (gs > s->umax)
+            run->counts.violations++;
+        if (sim_rng_uniform(rng) * s->umax >= gs)
+            continue;
+        sim_collide_contact(vi, vj, alpha, gs, unit);
+        collisions++;
+        sim_run_cover(run, vi);
+        sim_run_cover(run, vj);
+        if (run->radius != s->radius) {
+            follow_bound(p, s, run);
+            dtc = p->stage_time / s->umax;
+        }
+    }
+    s->credit = credit;
+    run->bound_grew = 0;   /* followed above; no other process shares the bound */
+    run->counts.candidates += candidates;
+    run->counts.collisions += collisions;
+}
+
+static sim_event_stage_fn collisions_select_stage(const sim_effect *e)
+{
+    const collisions_params *p = e->params;
+    return p->lambda == 1.0 ? stage_hard_spheres : NULL;
+}
+
 static const sim_effect_type collisions_type = {
     .name = "collisions",
     .state_size = sizeof(collisions_state),
@@ -158,6 +231,7 @@ static const sim_effect_type collisions_type = {
     .reset = collisions_reset,
     .rate = collisions_rate,
     .select_fire = collisions_select_fire,
+    .select_stage = collisions_select_stage,
 };
 
 sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err)
@@ -165,6 +239,11 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
     if (scene->collisions.model != SIM_MODEL_IHS)
         return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.model",
                              "model ehs is not implemented yet (supported: ihs)");
+    if (scene->scheme == SIM_SCHEME_TIMESTEP && scene->collisions.exponent != 1.0)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.kernel",
+                             "the time-step scheme implements hard spheres only (the contact "
+                             "rule of paper C; kernel exponent is %g)",
+                             scene->collisions.exponent);
     collisions_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
@@ -172,6 +251,7 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
     p->alpha = scene->collisions.restitution;
     p->prefactor = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
                    * (double)(scene->particles.n - 1);
+    p->stage_time = 1.0 / (4.0 * p->prefactor);
     *effect = (sim_effect){.type = &collisions_type, .params = p};
     return SIM_OK;
 }

@@ -1,53 +1,193 @@
-/* Thermostats (SPEC §2, §3, §5).  White noise (paper A Eq. (18)): between
- * collisions each velocity performs Brownian motion,
+/* Thermostats (SPEC §2, §3, §5): the three of paper C, each its own type.
+ *
+ * White noise (paper A Eq. (18), paper C Eq. (8)): between collisions each
+ * velocity performs Brownian motion,
  *     v(t + dt) = v(t) + sqrt(2 beta dt) xi,   xi standard normal in R^3,
- * exact for any dt, so the jump scheme applies it lazily.  The Gaussian and
- * non-Gaussian thermostats of paper C come with the time-step scheme. */
+ * exact for any dt, so the jump scheme applies it lazily (`advance`) and the
+ * time-step scheme adds it to every particle (`step`, paper C Eqs. (59)-(60)
+ * with xi0^2 = 2 beta).
+ *
+ * Gaussian (paper C Eq. (12), F = m zeta v): v -> v e^{zeta h} (Eq. (61)),
+ * exact for any h.  With keep_temperature, zeta is chosen at every step so
+ * that the centred temperature returns to particles.temperature:
+ * v -> V + (v - V) sqrt(T0/T), the homogeneous cooling state in scaled
+ * variables.  A projection, not a flow: both halves of a Strang step rescale,
+ * so Strang and Euler coincide for it.
+ *
+ * Non-Gaussian (paper C Eq. (14), F = m g v/|v|): v_i -> v_i + g h (v̂_i - k)
+ * with k = (1/n) Σ v̂_j (Eq. (62)), so the total momentum is kept to round-off.
+ * It couples the particles (through k), so it has only `step`.
+ *
+ * Only white noise runs in the jump scheme; the constructor refuses the others
+ * there, naming heating.type.
+ */
 #include <math.h>
 #include <stdlib.h>
 
 #include "effect.h"
 #include "rng.h"
+#include "run.h"
 
-typedef struct white_noise_params {
-    double beta;
-} white_noise_params;
+typedef struct heating_params {
+    double strength;   /* beta, zeta or g */
+    double target;     /* keep_temperature: T0/m */
+} heating_params;
+
+/* ------------------------------------------------------------ white noise */
 
 static void white_noise_advance(const sim_effect *e, double v[3], double dt, gsl_rng *rng)
 {
-    const white_noise_params *p = e->params;
-    double xi[3], s = sqrt(2.0 * p->beta * dt);
+    const heating_params *p = e->params;
+    double xi[3], s = sqrt(2.0 * p->strength * dt);
     sim_rng_normal3(rng, xi);
     v[0] += s * xi[0];
     v[1] += s * xi[1];
     v[2] += s * xi[2];
 }
 
+static void white_noise_step(const sim_effect *e, sim_run *run, double h)
+{
+    const heating_params *p = e->params;
+    const double s = sqrt(2.0 * p->strength * h);
+    const size_t n = run->p.n;
+    gsl_rng *rng = run->rng;
+    for (size_t i = 0; i < n; i++) {
+        double xi[3], *v = run->p.v[i];
+        sim_rng_normal3(rng, xi);
+        v[0] += s * xi[0];
+        v[1] += s * xi[1];
+        v[2] += s * xi[2];
+        sim_run_cover(run, v);
+    }
+}
+
 /* Each component moves by N(0, 2 beta dt); 4 standard deviations. */
 static double white_noise_reach(const sim_effect *e, double dt)
 {
-    const white_noise_params *p = e->params;
-    return 4.0 * sqrt(2.0 * p->beta * dt);
+    const heating_params *p = e->params;
+    return 4.0 * sqrt(2.0 * p->strength * dt);
 }
 
 static const sim_effect_type white_noise_type = {
     .name = "heating",
     .advance = white_noise_advance,
+    .step = white_noise_step,
     .reach = white_noise_reach,
 };
 
+/* --------------------------------------------------------------- Gaussian */
+
+static void gaussian_step(const sim_effect *e, sim_run *run, double h)
+{
+    const heating_params *p = e->params;
+    const double f = exp(p->strength * h);
+    const size_t n = run->p.n;
+    for (size_t i = 0; i < n; i++) {
+        double *v = run->p.v[i];
+        v[0] *= f;
+        v[1] *= f;
+        v[2] *= f;
+        sim_run_cover(run, v);
+    }
+}
+
+static const sim_effect_type gaussian_type = {
+    .name = "heating",
+    .step = gaussian_step,
+};
+
+/* Rescale the peculiar velocities so that T/m = target (h does not enter). */
+static void keep_temperature_step(const sim_effect *e, sim_run *run, double h)
+{
+    (void)h;
+    const heating_params *p = e->params;
+    const size_t n = run->p.n;
+    double V[3] = {0, 0, 0}, c2 = 0.0;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            V[k] += run->p.v[i][k];
+    for (int k = 0; k < 3; k++)
+        V[k] /= (double)n;
+    for (size_t i = 0; i < n; i++) {
+        const double *v = run->p.v[i];
+        double c[3] = {v[0] - V[0], v[1] - V[1], v[2] - V[2]};
+        c2 += c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    }
+    if (!(c2 > 0.0))   /* every velocity equal: nothing to rescale */
+        return;
+    const double f = sqrt(3.0 * (double)n * p->target / c2);
+    for (size_t i = 0; i < n; i++) {
+        double *v = run->p.v[i];
+        for (int k = 0; k < 3; k++)
+            v[k] = V[k] + f * (v[k] - V[k]);
+        sim_run_cover(run, v);
+    }
+}
+
+static const sim_effect_type keep_temperature_type = {
+    .name = "heating",
+    .step = keep_temperature_step,
+};
+
+/* ----------------------------------------------------------- non-Gaussian */
+
+static void non_gaussian_step(const sim_effect *e, sim_run *run, double h)
+{
+    const heating_params *p = e->params;
+    const size_t n = run->p.n;
+    const double gh = p->strength * h;
+    double k[3] = {0, 0, 0};
+    for (size_t i = 0; i < n; i++) {
+        const double *v = run->p.v[i];
+        double norm = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        if (norm > 0.0)   /* v = 0 has probability 0; its direction counts as 0 */
+            for (int c = 0; c < 3; c++)
+                k[c] += v[c] / norm;
+    }
+    for (int c = 0; c < 3; c++)
+        k[c] /= (double)n;
+    for (size_t i = 0; i < n; i++) {
+        double *v = run->p.v[i];
+        double norm = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        double inv = norm > 0.0 ? 1.0 / norm : 0.0;
+        for (int c = 0; c < 3; c++)
+            v[c] += gh * (v[c] * inv - k[c]);
+        sim_run_cover(run, v);
+    }
+}
+
+static const sim_effect_type non_gaussian_type = {
+    .name = "heating",
+    .step = non_gaussian_step,
+};
+
+/* ------------------------------------------------------------ constructor */
+
 sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err)
 {
-    if (scene->heating.type != SIM_HEATING_WHITE_NOISE)
+    const sim_effect_type *type = &white_noise_type;
+    switch (scene->heating.type) {
+    case SIM_HEATING_WHITE_NOISE:
+        type = &white_noise_type;
+        break;
+    case SIM_HEATING_GAUSSIAN:
+        type = scene->heating.keep_temperature ? &keep_temperature_type : &gaussian_type;
+        break;
+    case SIM_HEATING_NON_GAUSSIAN:
+        type = &non_gaussian_type;
+        break;
+    }
+    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL)
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
-                             "%s heating needs the time-step scheme, not implemented yet "
-                             "(supported: white-noise)",
+                             "%s heating needs scene.scheme = timestep (the jump scheme "
+                             "supports white-noise)",
                              scene->heating.type == SIM_HEATING_GAUSSIAN ? "gaussian"
                                                                          : "non-gaussian");
-    white_noise_params *p = malloc(sizeof *p);
+    heating_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
-    p->beta = scene->heating.strength;
-    *effect = (sim_effect){.type = &white_noise_type, .params = p};
+    p->strength = scene->heating.strength;
+    p->target = scene->particles.maxwellian.temperature / sim_scene_grain_mass(scene);
+    *effect = (sim_effect){.type = type, .params = p};
     return SIM_OK;
 }

@@ -1,4 +1,5 @@
-/* The engine: scene -> effects -> the exact jump scheme (SPEC §2, §3).
+/* The engine: scene -> effects -> the exact jump scheme (SPEC §2, §3) or the
+ * time-step scheme (SPEC §5, §10).
  *
  * The jump scheme simulates the Markov jump process without time splitting
  * (paper A §3, paper B §3): candidate events arrive at rate pi_hat = Σ of the event
@@ -9,6 +10,20 @@
  * majorants are recomputed from the synchronised system; the pending waiting
  * time is then redrawn, which is exact because the waiting times are
  * exponential (memoryless).
+ *
+ * The time-step scheme (Bird; paper C §3) advances the whole system in steps
+ * of h, the largest h <= scene.dt that divides the interval between output
+ * times, so output times fall on step boundaries.  A step composes the event
+ * processes' stages (collisions for h) and the flow's step (free flight with
+ * the thermostat) by Lie splitting, collisions then flow (paper C's order,
+ * "euler", first order in h), or Strang splitting, flow h/2, collisions h,
+ * flow h/2 (second order); the engine picks the step function once.  The
+ * velocity bound is recomputed from scratch at each output time and grows
+ * (sim_run_cover) whenever a stage moves a velocity beyond it.
+ *
+ * Steady-state observers (steady.h), when the scene has [steady], sample at
+ * the output times t >= steady.from in either scheme, after the standard
+ * observables; pair sampling uses its own random substream.
  */
 #include "engine.h"
 
@@ -20,14 +35,19 @@
 #include "effect.h"
 #include "rng.h"
 #include "run.h"
+#include "steady.h"
 
 #define MAX_EVENTS 4
+
+typedef void (*step_fn)(const sim_engine *e, sim_workspace *ws, double h);
+typedef void (*interval_fn)(const sim_engine *e, sim_workspace *ws);
 
 struct sim_engine {
     sim_scene scene;
     double mass;          /* the grain mass */
     char effects[64];
     int has_flow;
+    int lazy_flow;        /* jump scheme: the flow is applied lazily (stamps) */
     sim_effect flow;
     int bounded;          /* some event needs the velocity bound (run.h) */
     int fixed_centre;     /* ... centred at `centre`, else at the bulk velocity */
@@ -37,11 +57,22 @@ struct sim_engine {
     sim_event_fire_fn fire[MAX_EVENTS];
     size_t state_offset[MAX_EVENTS];
     size_t state_bytes;
+    /* time-step scheme */
+    sim_event_stage_fn stage[MAX_EVENTS];
+    step_fn step;         /* Lie (euler) step, or collisions only */
+    interval_fn interval; /* one output interval of steps */
+    size_t steps;         /* steps per output interval */
+    double h;             /* the step */
+    /* steady-state observers */
+    size_t nsteady;
+    size_t steady_from;   /* first output index with t >= steady.from */
 };
 
 struct sim_workspace {
     sim_run run;
     unsigned char *states;   /* the event processes' per-run states */
+    gsl_rng *observer_rng;   /* pair sampling (steady observers), or NULL */
+    double *steady_sum;      /* [nsteady] sums of the samples of the current run */
 };
 
 static void append_name(sim_engine *e, const char *name)
@@ -60,12 +91,93 @@ static void add_event(sim_engine *e, sim_effect effect)
     append_name(e, effect.type->name);
 }
 
+/* The time-step scheme's steps: stages and the flow's step composed. */
+static void stages(const sim_engine *e, sim_workspace *ws, double h)
+{
+    for (size_t k = 0; k < e->nevents; k++)
+        e->stage[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], h);
+}
+
+static void step_euler(const sim_engine *e, sim_workspace *ws, double h)
+{
+    stages(e, ws, h);
+    e->flow.type->step(&e->flow, &ws->run, h);
+}
+
+static void step_no_flow(const sim_engine *e, sim_workspace *ws, double h)
+{
+    stages(e, ws, h);
+}
+
+/* One output interval of `steps` steps. */
+static void interval_lie(const sim_engine *e, sim_workspace *ws)
+{
+    for (size_t k = 0; k < e->steps; k++)
+        e->step(e, ws, e->h);
+}
+
+/* Strang: flow h/2, collisions h, flow h/2 per step, with the two half flows
+ * of adjacent steps merged into one flow of h (as in leapfrog): exact in
+ * distribution for white noise (Gaussian increments add) and for the Gaussian
+ * thermostat (scalings multiply), so Strang costs one flow per step like
+ * Euler.  For the non-Gaussian flow the merged step differs from two half
+ * steps by O(h^2 |k|), k = the mean direction (about 0 in an isotropic gas);
+ * the keep-T rescaling is a projection, for which Strang and Euler coincide.
+ * The output times see whole steps. */
+static void interval_strang(const sim_engine *e, sim_workspace *ws)
+{
+    const sim_effect *flow = &e->flow;
+    flow->type->step(flow, &ws->run, 0.5 * e->h);
+    for (size_t k = 1; k < e->steps; k++) {
+        stages(e, ws, e->h);
+        flow->type->step(flow, &ws->run, e->h);
+    }
+    stages(e, ws, e->h);
+    flow->type->step(flow, &ws->run, 0.5 * e->h);
+}
+
+/* Resolve the time-step scheme: stages, the step function, h. */
+static sim_status build_timestep(sim_engine *e, sim_error *err)
+{
+    const sim_scene *scene = &e->scene;
+    for (size_t k = 0; k < e->nevents; k++) {
+        const sim_effect *ev = &e->events[k];
+        e->stage[k] = ev->type->select_stage ? ev->type->select_stage(ev) : NULL;
+        if (e->stage[k] == NULL)
+            return sim_error_set(err, SIM_EUNSUPPORTED, ev->type->name,
+                                 "%s is not implemented in the time-step scheme",
+                                 ev->type->name);
+    }
+    if (e->has_flow && e->flow.type->step == NULL)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
+                             "this thermostat has no time-step form");
+    e->step = e->has_flow ? step_euler : step_no_flow;
+    e->interval = e->has_flow && scene->splitting == SIM_SPLIT_STRANG ? interval_strang
+                                                                      : interval_lie;
+    if (!(scene->dt > 0.0) || !isfinite(scene->dt))
+        return sim_error_set(err, SIM_EINVAL, "scene.dt", "%g is not a positive step",
+                             scene->dt);
+    const double interval = sim_scene_output_time(scene, 1);
+    double steps = ceil(interval / scene->dt * (1.0 - 1e-9));
+    if (steps < 1.0)
+        steps = 1.0;
+    if (steps > 1e12)
+        return sim_error_set(err, SIM_EINVAL, "scene.dt",
+                             "%g gives %.3g steps between output times (allowed at most 1e12)",
+                             scene->dt, steps);
+    e->steps = (size_t)steps;
+    e->h = interval / steps;
+    return SIM_OK;
+}
+
 sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err)
 {
     *engine = NULL;
-    if (scene->scheme != SIM_SCHEME_JUMP)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "scene.scheme",
-                             "the time-step scheme is not implemented yet (supported: jump)");
+    const int timestep = scene->scheme == SIM_SCHEME_TIMESTEP;
+    if (timestep && scene->background.present)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "background",
+                             "the background is not implemented in the time-step scheme "
+                             "(supported: jump)");
     if (scene->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS
         && scene->particles.first.mass != scene->particles.second.mass)
         return sim_error_set(err, SIM_EUNSUPPORTED, "particles.mass2",
@@ -105,8 +217,25 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         status = sim_effect_heating(scene, &e->flow, err);
         if (status == SIM_OK) {
             e->has_flow = 1;
+            e->lazy_flow = !timestep;
             append_name(e, e->flow.type->name);
         }
+    }
+    if (status == SIM_OK && timestep)
+        status = build_timestep(e, err);
+    if (status == SIM_OK && scene->steady.present) {
+        e->nsteady = sim_steady_count(scene);
+        e->steady_from = scene->outputs;
+        for (size_t m = 0; m < scene->outputs && e->steady_from == scene->outputs; m++)
+            if (sim_scene_output_time(scene, m) >= scene->steady.from)
+                e->steady_from = m;
+        if (scene->steady.bins > 0 && !(scene->steady.c_max > 0.0))
+            status = sim_error_set(err, SIM_EINVAL, "steady.c_max", "%g is not positive",
+                                   scene->steady.c_max);
+        if (e->steady_from == scene->outputs)
+            status = sim_error_set(err, SIM_EINVAL, "steady.from",
+                                   "%g is after the last output time %g",
+                                   scene->steady.from, scene->t_end);
     }
     if (status != SIM_OK) {
         sim_engine_free(e);
@@ -119,7 +248,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
             e->fixed_centre = 1;
     }
     for (size_t k = 0; k < e->nevents; k++)
-        e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->has_flow, e->bounded);
+        e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow, e->bounded);
     *engine = e;
     return SIM_OK;
 }
@@ -138,6 +267,13 @@ const sim_scene *sim_engine_scene(const sim_engine *engine) { return &engine->sc
 
 const char *sim_engine_effects(const sim_engine *engine) { return engine->effects; }
 
+size_t sim_engine_steady_count(const sim_engine *engine) { return engine->nsteady; }
+
+double sim_engine_step(const sim_engine *engine)
+{
+    return engine->scene.scheme == SIM_SCHEME_TIMESTEP ? engine->h : 0.0;
+}
+
 sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, sim_error *err)
 {
     *ws = NULL;
@@ -145,18 +281,25 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
     if (w == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     sim_status status = sim_particles_alloc(&w->run.p, engine->scene.particles.n,
-                                            engine->has_flow, err);
+                                            engine->lazy_flow, err);
     if (status == SIM_OK) {
         w->run.rng = sim_rng_alloc();
         w->states = calloc(1, engine->state_bytes + 16);
         if (w->run.rng == NULL || w->states == NULL)
             status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     }
+    if (status == SIM_OK && engine->nsteady > 0) {
+        w->steady_sum = calloc(engine->nsteady, sizeof *w->steady_sum);
+        if (engine->scene.steady.pairs > 0)
+            w->observer_rng = sim_rng_alloc();
+        if (w->steady_sum == NULL || (engine->scene.steady.pairs > 0 && !w->observer_rng))
+            status = sim_error_set(err, SIM_ENOMEM, "steady", "out of memory");
+    }
     if (status != SIM_OK) {
         sim_workspace_free(w);
         return status;
     }
-    w->run.flow = engine->has_flow ? &engine->flow : NULL;
+    w->run.flow = engine->lazy_flow ? &engine->flow : NULL;
     *ws = w;
     return SIM_OK;
 }
@@ -168,6 +311,9 @@ void sim_workspace_free(sim_workspace *ws)
     sim_particles_free(&ws->run.p);
     if (ws->run.rng)
         gsl_rng_free(ws->run.rng);
+    if (ws->observer_rng)
+        gsl_rng_free(ws->observer_rng);
+    free(ws->steady_sum);
     free(ws->states);
     free(ws);
 }
@@ -246,19 +392,24 @@ static size_t pick_event(const sim_engine *e, gsl_rng *rng, const double *rates,
     return k;
 }
 
-void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs,
-                    sim_counts *counts)
+/* Output time m: the standard observables, and a steady sample if t_m >= from. */
+static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double *obs,
+                       size_t *samples)
+{
+    sim_observe(&ws->run.p, e->mass, obs + m * SIM_OBS_COUNT);
+    if (e->nsteady > 0 && m >= e->steady_from) {
+        sim_steady_sample(&e->scene, &ws->run.p, e->mass, ws->observer_rng, ws->steady_sum);
+        (*samples)++;
+    }
+}
+
+/* The exact jump scheme from t = 0 to t_end (the initial state is sampled). */
+static void run_jump(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
 {
     const sim_scene *scene = &e->scene;
     sim_run *run = &ws->run;
     gsl_rng *rng = run->rng;
-    const double mass = e->mass;
     const size_t n = run->p.n;
-
-    sim_rng_set_stream(rng, scene->seed, index);
-    memset(&run->counts, 0, sizeof run->counts);
-    sim_particles_sample(&run->p, scene, rng);
-    sim_observe(&run->p, mass, obs);
 
     const double interval = sim_scene_output_time(scene, 1);   /* between resets */
     double rates[MAX_EVENTS] = {0};
@@ -279,10 +430,54 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
         if (run->flow)
             for (size_t i = 0; i < n; i++)
                 sim_run_bring(run, i, t);
-        sim_observe(&run->p, mass, obs + m * SIM_OBS_COUNT);
+        observe_at(e, ws, m, obs, samples);
         total = reset_events(e, ws, rates, interval);
     }
+}
 
+/* The time-step scheme from t = 0 to t_end. */
+static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
+{
+    const sim_scene *scene = &e->scene;
+    const double interval = sim_scene_output_time(scene, 1);
+    double rates[MAX_EVENTS] = {0};
+    memset(ws->states, 0, e->state_bytes);   /* the stages' remainders start at 0 */
+    reset_events(e, ws, rates, interval);
+    for (size_t m = 1; m < scene->outputs; m++) {
+        e->interval(e, ws);
+        observe_at(e, ws, m, obs, samples);
+        reset_events(e, ws, rates, interval);
+    }
+}
+
+void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs,
+                    sim_counts *counts)
+{
+    const sim_scene *scene = &e->scene;
+    sim_run *run = &ws->run;
+    gsl_rng *rng = run->rng;
+
+    sim_rng_set_stream(rng, scene->seed, index);
+    memset(&run->counts, 0, sizeof run->counts);
+    size_t samples = 0;
+    if (e->nsteady > 0) {
+        memset(ws->steady_sum, 0, e->nsteady * sizeof *ws->steady_sum);
+        if (ws->observer_rng)
+            sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
+    }
+    sim_particles_sample(&run->p, scene, rng);
+    observe_at(e, ws, 0, obs, &samples);
+
+    if (scene->scheme == SIM_SCHEME_TIMESTEP)
+        run_timestep(e, ws, obs, &samples);
+    else
+        run_jump(e, ws, obs, &samples);
+
+    if (e->nsteady > 0) {   /* the time averages follow the rows */
+        double *avg = obs + scene->outputs * SIM_OBS_COUNT;
+        for (size_t k = 0; k < e->nsteady; k++)
+            avg[k] = ws->steady_sum[k] / (double)samples;
+    }
     if (counts) {
         run->counts.normals = sim_rng_state_of(rng)->normals;
         sim_counts_add(counts, &run->counts);

@@ -33,8 +33,10 @@ void sim_counts_add(sim_counts *to, const sim_counts *from);
 
 /* Build the engine for a validated scene: the scheme and the effects it names,
  * each resolved once.  Returns SIM_EUNSUPPORTED, naming the scene key, for a
- * valid combination that no scheme implements yet, SIM_EINVAL for values the
- * parser should have refused, SIM_ENOMEM. */
+ * valid combination that no scheme implements yet (the time-step scheme:
+ * hard-sphere collisions and the three thermostats, no background; the jump
+ * scheme: white-noise heating only), SIM_EINVAL for values the parser should
+ * have refused, SIM_ENOMEM. */
 sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err);
 void sim_engine_free(sim_engine *engine);
 
@@ -45,13 +47,23 @@ const sim_scene *sim_engine_scene(const sim_engine *engine);
  * "collisions heating"; "" for free flight. */
 const char *sim_engine_effects(const sim_engine *engine);
 
+/* Number of steady-state quantities each run appends (steady.h): 0 without a
+ * [steady] section. */
+size_t sim_engine_steady_count(const sim_engine *engine);
+
+/* The time-step scheme's step h (the largest h <= scene.dt dividing the
+ * output interval); 0 for the jump scheme. */
+double sim_engine_step(const sim_engine *engine);
+
 /* Per-thread memory: the particle system, the random stream, effect states. */
 sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, sim_error *err);
 void sim_workspace_free(sim_workspace *ws);
 
 /* Simulate ensemble `index` (its random stream is (scene seed, index)) from
- * t = 0 to t_end.  obs must hold outputs * SIM_OBS_COUNT doubles; row m gets
- * the observables at output time m.  counts (may be NULL) is incremented. */
+ * t = 0 to t_end.  obs must hold outputs * SIM_OBS_COUNT +
+ * sim_engine_steady_count() doubles; row m gets the observables at output
+ * time m, and the steady-state time averages (steady.h) follow the last row.
+ * counts (may be NULL) is incremented. */
 void sim_engine_run(const sim_engine *engine, sim_workspace *ws, uint64_t index, double *obs,
                     sim_counts *counts);
 

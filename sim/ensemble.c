@@ -67,7 +67,9 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
 {
     const sim_scene *scene = sim_engine_scene(engine);
     const size_t outputs = scene->outputs, N = scene->particles.ensembles;
-    const size_t len = outputs * SIM_OBS_COUNT;
+    /* the rows, then the steady-state time averages of each run */
+    const size_t rows_len = outputs * SIM_OBS_COUNT, nsteady = sim_engine_steady_count(engine);
+    const size_t len = rows_len + nsteady;
     const size_t bsize = block_size(N), nblocks = (N + bsize - 1) / bsize;
 
     memset(res, 0, sizeof *res);
@@ -89,6 +91,10 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
     }
     for (size_t m = 0; m < outputs; m++)
         res->t[m] = sim_scene_output_time(scene, m);
+    res->nsteady = nsteady;
+    res->steady_mean = res->mean + rows_len;
+    res->steady_var = res->var + rows_len;
+    res->steady_ci = res->ci + rows_len;
 
     const double cpu0 = now(CLOCK_PROCESS_CPUTIME_ID), wall0 = now(CLOCK_MONOTONIC);
     sim_status status = SIM_OK;

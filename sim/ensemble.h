@@ -9,6 +9,9 @@
  *         a block, Chan et al. to merge blocks)
  *   ci    c = lambda_p sqrt(var / N), lambda_p = 3.2 (p = 0.999): the
  *         confidence half-width of paper A Eq. (25).
+ * The steady-state time averages (steady.h) get the same statistics over the
+ * ensembles: each ensemble's time average is one independent sample, so their
+ * confidence half-width is honest however correlated the samples in time.
  */
 #ifndef GDSMC_SIM_ENSEMBLE_H
 #define GDSMC_SIM_ENSEMBLE_H
@@ -27,6 +30,10 @@ typedef struct sim_ensemble_result {
     double *mean;        /* [outputs * SIM_OBS_COUNT] */
     double *var;         /* [outputs * SIM_OBS_COUNT] */
     double *ci;          /* [outputs * SIM_OBS_COUNT] */
+    size_t nsteady;      /* steady-state quantities (0 without [steady]) */
+    double *steady_mean; /* [nsteady], pointing into mean/var/ci after the rows */
+    double *steady_var;
+    double *steady_ci;
     sim_counts counts;   /* summed over ensembles */
     double cpu_seconds;  /* process CPU time, all threads */
     double wall_seconds;
@@ -51,6 +58,15 @@ static inline double sim_result_mean(const sim_ensemble_result *r, size_t m, int
 static inline double sim_result_ci(const sim_ensemble_result *r, size_t m, int k)
 {
     return r->ci[m * SIM_OBS_COUNT + (size_t)k];
+}
+
+static inline double sim_result_steady_mean(const sim_ensemble_result *r, size_t k)
+{
+    return r->steady_mean[k];
+}
+static inline double sim_result_steady_ci(const sim_ensemble_result *r, size_t k)
+{
+    return r->steady_ci[k];
 }
 
 #endif

@@ -47,3 +47,9 @@ void sim_rng_set_stream(gsl_rng *r, uint64_t seed, uint64_t stream)
     s->key.v[1] = stream;
     s->next = 4;
 }
+
+void sim_rng_set_substream(gsl_rng *r, uint64_t seed, uint64_t stream, uint64_t sub)
+{
+    sim_rng_set_stream(r, seed, stream);
+    sim_rng_state_of(r)->ctr.v[3] = sub;
+}

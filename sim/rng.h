@@ -36,6 +36,13 @@ gsl_rng *sim_rng_alloc(void);
 /* Restart r as stream `stream` of `seed`, at its first word. */
 void sim_rng_set_stream(gsl_rng *r, uint64_t seed, uint64_t stream);
 
+/* Restart r as substream `sub` of stream (seed, stream): the same key with the
+ * counter's last word set to sub, so substreams never overlap each other or the
+ * stream itself (sub = 0), which uses only the first counter word.  Observers
+ * that need random numbers (pair sampling) draw from substream 1 so that
+ * observing never changes the simulated trajectory. */
+void sim_rng_set_substream(gsl_rng *r, uint64_t seed, uint64_t stream, uint64_t sub);
+
 __extension__ typedef unsigned __int128 sim_u128;  /* for the exact index draw */
 _Static_assert(sizeof(unsigned long) == 8, "gsl_rng words must hold 64 bits");
 

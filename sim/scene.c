@@ -32,6 +32,8 @@ void sim_scene_defaults(sim_scene *scene)
     scene->background.kernel = SIM_KERNEL_MAXWELL;
     scene->background.constant = 1.0;
 
+    scene->steady.c_max = 5.0;
+
     scene->shear.boundary = SIM_SHEAR_HOMOGENEOUS;
     scene->shear.length = 1.0;
     scene->shear.layers = 1;

@@ -17,6 +17,12 @@ typedef enum sim_scheme {
     SIM_SCHEME_TIMESTEP  /* Bird-style splitting with step dt */
 } sim_scheme;
 
+/* How the time-step scheme composes its stages in one step h (SPEC §10). */
+typedef enum sim_splitting {
+    SIM_SPLIT_EULER,   /* Lie: collisions for h, then free flight for h (paper C §3) */
+    SIM_SPLIT_STRANG   /* free flight h/2, collisions h, free flight h/2 */
+} sim_splitting;
+
 typedef enum sim_initial {
     SIM_INITIAL_MAXWELLIAN,
     SIM_INITIAL_TWO_MAXWELLIANS,  /* paper B Eq. (35) */
@@ -67,7 +73,9 @@ typedef struct sim_scene {
     /* [scene] */
     char title[128];
     sim_scheme scheme;
-    double dt;          /* timestep only */
+    double dt;          /* timestep only: the largest step; the engine uses the largest
+                           h <= dt that divides the interval between output times */
+    sim_splitting splitting;   /* timestep only (default euler) */
     double t_end;
     size_t outputs;     /* equally spaced output times, 0 and t_end included (>= 2) */
     uint64_t seed;
@@ -99,6 +107,9 @@ typedef struct sim_scene {
         int present;
         sim_heating_kind type;
         double strength;     /* white-noise: beta; gaussian: zeta; non-gaussian: g */
+        int keep_temperature;/* gaussian only: instead of a fixed zeta, rescale after every
+                                step so that T stays at particles.temperature (the
+                                homogeneous cooling state in scaled variables, paper C) */
     } heating;
 
     /* [background] host medium (SPEC §4) */
@@ -125,15 +136,29 @@ typedef struct sim_scene {
         double strength;
     } heat_flux;
 
+    /* [steady] steady-state observers (SPEC §5): time averages, per ensemble, over the
+     * output times t >= from of the reduced moments, the collisional moments mu2, mu4
+     * (by `pairs` random pairs per sample) and the reduced speed distribution
+     * (`bins` shells on 0 <= c < c_max); see sim/steady.h. */
+    struct {
+        int present;
+        double from;
+        size_t pairs;
+        size_t bins;
+        double c_max;
+    } steady;
+
     /* Provenance of each key that was set, for messages. */
     sim_scene_key_origin keys[SIM_SCENE_MAX_KEYS];
     size_t nkeys;
 } sim_scene;
 
-/* Fill every field with its documented default: jump scheme, t_end = 1,
- * outputs = 2, seed = 1, n = 64, N = 1, standard Maxwellian (m = 1, T = 1,
- * at rest), no effects present; collisions (once present): maxwell kernel,
- * C = 1/(4 pi), rate 1, restitution 1, model ihs. */
+/* Fill every field with its documented default: jump scheme (splitting
+ * euler for timestep), t_end = 1, outputs = 2, seed = 1, n = 64, N = 1,
+ * standard Maxwellian (m = 1, T = 1, at rest), no effects present;
+ * collisions (once present): maxwell kernel, C = 1/(4 pi), rate 1,
+ * restitution 1, model ihs; heating: keep_temperature false; steady (once
+ * present): from 0, no pairs, no bins, c_max 5. */
 void sim_scene_defaults(sim_scene *scene);
 
 /* Line at which "section.key" was set, or 0 if it kept its default. */

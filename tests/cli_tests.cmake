@@ -23,8 +23,19 @@ gdsmc_add_cli_test(cli_negative_temperature 2
                    run ${S}/grw-ex3.ini --set particles.temperature=-2)
 gdsmc_add_cli_test(cli_n_zero 2 "particles.n" run ${S}/grw-ex3.ini --set particles.n=0)
 gdsmc_add_cli_test(cli_unsupported_scheme 2
-                   "scene.scheme: the time-step scheme is not implemented yet"
+                   "collisions.kernel: the time-step scheme implements hard spheres only"
                    run ${S}/grw-ex3.ini --set scene.scheme=timestep --set scene.dt=0.01)
+gdsmc_add_cli_test(cli_gaussian_needs_timestep 2
+                   "heating.type: gaussian heating needs scene.scheme = timestep"
+                   run ${S}/grw-ex5.ini --set heating.type=gaussian)
+gdsmc_add_cli_test(cli_splitting_needs_timestep 2
+                   "--set scene.splitting: only used with scheme = timestep"
+                   run ${S}/grw-ex5.ini --set scene.splitting=strang)
+gdsmc_add_cli_test(cli_timestep_small 0 "t,T,T_ci,T_raw"
+                   run ${S}/grw-ex5.ini --set scene.scheme=timestep --set scene.dt=0.01
+                   --set scene.splitting=strang --set particles.n=16
+                   --set particles.ensembles=10 --set scene.t_end=0.5 --set scene.outputs=6
+                   --quiet)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 gdsmc_add_cli_test(cli_reference_ex3 0 "t,T_exact,T_finite_n,T_raw_finite_n"
                    reference ${S}/grw-ex3.ini)

@@ -160,6 +160,36 @@ static void test_good_scene(void **state)
 }
 
 /* Paper B Ex 1 initial state (SPEC §4), hard spheres with the implied exponent. */
+/* The keys of the time-step scheme, the Gaussian thermostat's rescaling and
+ * the steady-state observers (SPEC §5, §10), and their defaults. */
+static void test_timestep_and_steady_keys(void **state)
+{
+    (void)state;
+    sim_scene s;
+    parse_ok("[scene]\nscheme = timestep\ndt = 0.0375\nsplitting = strang\nt_end = 3.5\n"
+             "[heating]\ntype = gaussian\nkeep_temperature = true\n"
+             "[steady]\nfrom = 1.25\npairs = 12345\nbins = 48\nc_max = 6.5\n",
+             NULL, 0, &s);
+    assert_int_equal(s.splitting, SIM_SPLIT_STRANG);
+    assert_int_equal(s.heating.type, SIM_HEATING_GAUSSIAN);
+    assert_int_equal(s.heating.keep_temperature, 1);
+    assert_int_equal(s.steady.present, 1);
+    assert_close(s.steady.from, 1.25, 0.0, 0.0);
+    assert_int_equal(s.steady.pairs, 12345);
+    assert_int_equal(s.steady.bins, 48);
+    assert_close(s.steady.c_max, 6.5, 0.0, 0.0);
+    assert_int_equal(sim_scene_key_line(&s, "steady.c_max"), 13);
+
+    parse_ok("[scene]\nscheme = timestep\ndt = 0.5\n[steady]\n", NULL, 0, &s);
+    assert_int_equal(s.splitting, SIM_SPLIT_EULER);
+    assert_int_equal(s.heating.keep_temperature, 0);
+    assert_int_equal(s.steady.present, 1);   /* an empty section turns the observers on */
+    assert_close(s.steady.from, 0.0, 0.0, 0.0);
+    assert_int_equal(s.steady.pairs, 0);
+    assert_int_equal(s.steady.bins, 0);
+    assert_close(s.steady.c_max, 5.0, 0.0, 0.0);
+}
+
 static void test_two_maxwellians(void **state)
 {
     (void)state;
@@ -316,6 +346,53 @@ static void test_grw_ex3_file(void **state)
     assert_int_equal(sim_scene_key_line(&s, "collisions.restitution"), 29);
 }
 
+static void load_scene_file(const char *name, sim_scene *s)
+{
+    char path[1024], msg[1024];
+    snprintf(path, sizeof path, "%s/verify/scenes/%s", source_dir(), name);
+    sim_status st = vfy_scene_load(path, NULL, 0, s, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("%s\n", msg);
+    assert_int_equal(st, SIM_OK);
+}
+
+/* split-ex5.ini is paper A Ex 5's gas (grw-ex5.ini) in the time-step scheme
+ * with [steady]; every h of its ladder dt/2^k (k < 5) divides the output
+ * interval.  The paper C scenes are hard spheres with 4 pi gamma C = 1 in the
+ * time-step scheme, one thermostat each. */
+static void test_split_and_ms_files(void **state)
+{
+    (void)state;
+    sim_scene a, b;
+    load_scene_file("grw-ex5.ini", &a);
+    load_scene_file("split-ex5.ini", &b);
+    assert_int_equal(b.scheme, SIM_SCHEME_TIMESTEP);
+    assert_int_equal(b.steady.present, 1);
+    assert_memory_equal(&a.collisions, &b.collisions, sizeof a.collisions);
+    assert_memory_equal(&a.heating, &b.heating, sizeof a.heating);
+    assert_memory_equal(&a.particles.maxwellian, &b.particles.maxwellian,
+                        sizeof a.particles.maxwellian);
+    double interval = sim_scene_output_time(&b, 1);
+    for (int k = 0; k < 5; k++) {
+        double ratio = interval / (b.dt / (double)(1 << k));
+        assert_close(ratio, round(ratio), 1e-12, 0.0);
+    }
+    static const char *const ms[] = {"ms-white-noise.ini", "ms-gaussian.ini",
+                                      "ms-non-gaussian.ini"};
+    static const sim_heating_kind type[] = {SIM_HEATING_WHITE_NOISE, SIM_HEATING_GAUSSIAN,
+                                            SIM_HEATING_NON_GAUSSIAN};
+    for (int i = 0; i < 3; i++) {
+        load_scene_file(ms[i], &a);
+        assert_int_equal(a.scheme, SIM_SCHEME_TIMESTEP);
+        assert_int_equal(a.collisions.kernel, SIM_KERNEL_HARD_SPHERES);
+        assert_close(4.0 * M_PI * a.collisions.rate * a.collisions.constant, 1.0, 1e-15, 0.0);
+        assert_int_equal(a.heating.type, type[i]);
+        assert_int_equal(a.heating.keep_temperature, i == 1);
+        assert_int_equal(a.steady.present, 1);
+        assert_true(a.steady.from < a.t_end);
+    }
+}
+
 /* Every file in verify/scenes/ loads. */
 static void test_all_scene_files(void **state)
 {
@@ -377,7 +454,7 @@ static void expect_error(const char *text, const char *const *ov, size_t nov,
         expect_error(text, ov, 2, SIM_EINVAL, expected);      \
     }
 
-#define SECTIONS "scene, particles, collisions, heating, background, shear, heat-flux"
+#define SECTIONS "scene, particles, collisions, heating, background, shear, heat-flux, steady"
 
 TRAP(trap_unknown_key, "[collisions]\nrestitution = 0.5\nalpha = 0.5\n",
      "t.ini:3: collisions.alpha: unknown key (allowed kernel, exponent, constant, rate, "
@@ -473,6 +550,25 @@ TRAP(trap_single_key_with_mixture,
      "keys ending in 1 and 2)")
 TRAP(trap_white_noise_negative, "[heating]\ntype = white-noise\nstrength = -0.5\n",
      "t.ini:3: heating.strength: -0.5 is negative (allowed strength >= 0 for type = white-noise)")
+/* Keys of the time-step scheme, the thermostats and [steady] (SPEC §5, §10). */
+TRAP(trap_splitting_with_jump, "[scene]\nt_end = 2\nsplitting = strang\n",
+     "t.ini:3: scene.splitting: only used with scheme = timestep (scheme is jump)")
+TRAP(trap_bad_splitting, "[scene]\nscheme = timestep\ndt = 0.1\nsplitting = verlet\n",
+     "t.ini:4: scene.splitting: 'verlet' is unknown (allowed euler, strang)")
+TRAP(trap_keep_temperature_white_noise, "[heating]\ntype = white-noise\nkeep_temperature = true\n",
+     "t.ini:3: heating.keep_temperature: only used with type = gaussian")
+TRAP(trap_keep_temperature_with_strength,
+     "[heating]\ntype = gaussian\nstrength = 0.3\nkeep_temperature = true\n",
+     "t.ini:3: heating.strength: not used with keep_temperature = true (the rescaling sets zeta)")
+TRAP(trap_steady_after_t_end, "[scene]\nt_end = 2\n[steady]\nfrom = 2.5\n",
+     "t.ini:4: steady.from: 2.5 is after t_end = 2 (allowed 0 <= from <= t_end: the time "
+     "averages need at least one output time)")
+TRAP(trap_steady_negative_from, "[steady]\nfrom = -1\n",
+     "t.ini:2: steady.from: '-1' is out of range (allowed from >= 0)")
+TRAP(trap_steady_c_max_zero, "[steady]\nc_max = 0\n",
+     "t.ini:2: steady.c_max: '0' is out of range (allowed c_max > 0)")
+TRAP(trap_steady_unknown_key, "[steady]\nsamples = 10\n",
+     "t.ini:2: steady.samples: unknown key (allowed from, pairs, bins, c_max)")
 TRAP(trap_line_too_long,
      "[scene]\ntitle = "
      "0123456789012345678901234567890123456789012345678901234567890123456789012345678901234"
@@ -488,8 +584,8 @@ TRAP_SET(trap_override_empty_key, "", "scene. = 4",
 TRAP_SET(trap_override_unknown_section, "", "collision.rate=4",
          "--set collision.rate=4: [collision]: unknown section (allowed " SECTIONS ")")
 TRAP_SET(trap_override_unknown_key, "", "scene.tend=4",
-         "--set scene.tend=4: scene.tend: unknown key (allowed title, scheme, dt, t_end, "
-         "outputs, seed)")
+         "--set scene.tend=4: scene.tend: unknown key (allowed title, scheme, dt, splitting, "
+         "t_end, outputs, seed)")
 TRAP_SET(trap_override_bad_value, "[collisions]\nrestitution = 0.5\n",
          "collisions.restitution=1.7",
          "--set collisions.restitution=1.7: collisions.restitution: '1.7' is out of range "
@@ -564,6 +660,8 @@ int main(void)
 {
     const struct CMUnitTest good[] = {
         cmocka_unit_test(test_good_scene),
+        cmocka_unit_test(test_timestep_and_steady_keys),
+        cmocka_unit_test(test_split_and_ms_files),
         cmocka_unit_test(test_two_maxwellians),
         cmocka_unit_test(test_defaults_and_empty_section),
         cmocka_unit_test(test_layout),
@@ -613,6 +711,14 @@ int main(void)
         cmocka_unit_test(trap_mixture_missing_key),
         cmocka_unit_test(trap_single_key_with_mixture),
         cmocka_unit_test(trap_white_noise_negative),
+        cmocka_unit_test(trap_splitting_with_jump),
+        cmocka_unit_test(trap_bad_splitting),
+        cmocka_unit_test(trap_keep_temperature_white_noise),
+        cmocka_unit_test(trap_keep_temperature_with_strength),
+        cmocka_unit_test(trap_steady_after_t_end),
+        cmocka_unit_test(trap_steady_negative_from),
+        cmocka_unit_test(trap_steady_c_max_zero),
+        cmocka_unit_test(trap_steady_unknown_key),
         cmocka_unit_test(trap_line_too_long),
         cmocka_unit_test(trap_override_no_equals),
         cmocka_unit_test(trap_override_no_dot),

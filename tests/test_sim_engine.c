@@ -399,14 +399,25 @@ static void test_unsupported(void **state)
     sim_scene s = heated_maxwell_scene(8, 1);
     sim_engine *e = NULL;
     sim_error err;
-    s.scheme = SIM_SCHEME_TIMESTEP;
+    s.scheme = SIM_SCHEME_TIMESTEP;   /* Maxwell molecules: hard spheres only */
+    s.dt = 0.01;
     assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
-    assert_string_equal(err.key, "scene.scheme");
+    assert_string_equal(err.key, "collisions.kernel");
     assert_null(e);
-    s = heated_maxwell_scene(8, 1);
+    s = heated_maxwell_scene(8, 1);   /* the jump scheme runs white noise only */
     s.heating.type = SIM_HEATING_GAUSSIAN;
     assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
     assert_string_equal(err.key, "heating.type");
+    s.heating.type = SIM_HEATING_NON_GAUSSIAN;
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
+    assert_string_equal(err.key, "heating.type");
+    s = heated_maxwell_scene(8, 1);   /* no background in the time-step scheme */
+    s.scheme = SIM_SCHEME_TIMESTEP;
+    s.dt = 0.01;
+    s.collisions.present = 0;
+    s.background.present = 1;
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
+    assert_string_equal(err.key, "background");
     s = heated_maxwell_scene(8, 1);
     s.particles.initial = SIM_INITIAL_TWO_MAXWELLIANS;
     s.particles.first.mass = 1.0;

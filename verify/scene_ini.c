@@ -34,7 +34,8 @@
 
 /* ---- the key table --------------------------------------------------- */
 
-enum { S_SCENE, S_PARTICLES, S_COLLISIONS, S_HEATING, S_BACKGROUND, S_SHEAR, S_HEAT_FLUX };
+enum { S_SCENE, S_PARTICLES, S_COLLISIONS, S_HEATING, S_BACKGROUND, S_SHEAR, S_HEAT_FLUX,
+       S_STEADY };
 
 typedef struct section_desc {
     const char *name;
@@ -52,6 +53,7 @@ static const section_desc sections[] = {
     {"background", 1, OFF(background.present)},
     {"shear", 1, OFF(shear.present)},
     {"heat-flux", 1, OFF(heat_flux.present)},
+    {"steady", 1, OFF(steady.present)},
 };
 #define NSECTIONS (sizeof sections / sizeof sections[0])
 
@@ -78,6 +80,7 @@ typedef struct key_desc {
 
 /* Enum fields are written as int. */
 _Static_assert(sizeof(sim_scheme) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_splitting) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_initial) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_kernel_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_collision_model) == sizeof(int), "enum size");
@@ -86,6 +89,8 @@ _Static_assert(sizeof(sim_shear_boundary) == sizeof(int), "enum size");
 
 static const word_desc scheme_words[] = {
     {"jump", SIM_SCHEME_JUMP}, {"timestep", SIM_SCHEME_TIMESTEP}, {NULL, 0}};
+static const word_desc splitting_words[] = {
+    {"euler", SIM_SPLIT_EULER}, {"strang", SIM_SPLIT_STRANG}, {NULL, 0}};
 static const word_desc initial_words[] = {{"maxwellian", SIM_INITIAL_MAXWELLIAN},
                                           {"two-maxwellians", SIM_INITIAL_TWO_MAXWELLIANS},
                                           {"shell", SIM_INITIAL_SHELL},
@@ -122,6 +127,7 @@ static const key_desc keys[] = {
     TEXT(S_SCENE, "title", title),
     WORDS(S_SCENE, "scheme", scheme, scheme_words),
     POSITIVE(S_SCENE, "dt", dt),
+    WORDS(S_SCENE, "splitting", splitting, splitting_words),
     POSITIVE(S_SCENE, "t_end", t_end),
     COUNT(S_SCENE, "outputs", outputs, 2, SIZE_MAX),
     {.section = S_SCENE, .name = "seed", .kind = K_U64, .offset = OFF(seed), .min = 0,
@@ -151,6 +157,7 @@ static const key_desc keys[] = {
 
     WORDS(S_HEATING, "type", heating.type, heating_words),
     FINITE(S_HEATING, "strength", heating.strength), /* sign checked in check_scene() */
+    WORDS(S_HEATING, "keep_temperature", heating.keep_temperature, bool_words),
 
     POSITIVE(S_BACKGROUND, "density", background.density),
     POSITIVE(S_BACKGROUND, "mass", background.mass),
@@ -165,6 +172,11 @@ static const key_desc keys[] = {
     COUNT(S_SHEAR, "layers", shear.layers, 1, SIZE_MAX),
 
     FINITE(S_HEAT_FLUX, "strength", heat_flux.strength),
+
+    REAL(S_STEADY, "from", steady.from, LO_GE, 0.0, 0.0),
+    COUNT(S_STEADY, "pairs", steady.pairs, 0, SIZE_MAX),
+    COUNT(S_STEADY, "bins", steady.bins, 0, 100000),
+    POSITIVE(S_STEADY, "c_max", steady.c_max),
 };
 #define NKEYS (sizeof keys / sizeof keys[0])
 _Static_assert(NKEYS <= SIM_SCENE_MAX_KEYS, "every key must fit in sim_scene.keys");
@@ -538,6 +550,9 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
     if (s->scheme == SIM_SCHEME_TIMESTEP && !is_set(s, "scene.dt"))
         return sim_error_set(err, SIM_EINVAL, "scene.scheme",
                              "timestep needs scene.dt (allowed dt > 0)");
+    if (s->scheme != SIM_SCHEME_TIMESTEP && is_set(s, "scene.splitting"))
+        return sim_error_set(err, SIM_EINVAL, "scene.splitting",
+                             "only used with scheme = timestep (scheme is jump)");
 
     int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
     for (size_t i = 0; i < sizeof two / sizeof two[0]; i++) {
@@ -578,6 +593,17 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
         return sim_error_set(err, SIM_EINVAL, "heating.strength",
                              "%g is negative (allowed strength >= 0 for type = white-noise)",
                              s->heating.strength);
+    if (s->heating.keep_temperature && s->heating.type != SIM_HEATING_GAUSSIAN)
+        return sim_error_set(err, SIM_EINVAL, "heating.keep_temperature",
+                             "only used with type = gaussian");
+    if (s->heating.keep_temperature && is_set(s, "heating.strength"))
+        return sim_error_set(err, SIM_EINVAL, "heating.strength",
+                             "not used with keep_temperature = true (the rescaling sets zeta)");
+    if (s->steady.present && s->steady.from > s->t_end)
+        return sim_error_set(err, SIM_EINVAL, "steady.from",
+                             "%g is after t_end = %g (allowed 0 <= from <= t_end: the time "
+                             "averages need at least one output time)", s->steady.from,
+                             s->t_end);
     return SIM_OK;
 }
 

@@ -21,14 +21,16 @@
  * its present flag.  Every key set is recorded in scene->keys with its line
  * (overrides: -1), so sim_scene_key_line() finds it.  Checks across keys,
  * after the overrides, name the key at fault (format as vfy_scene_format_error):
- *   - scheme = timestep needs dt;
+ *   - scheme = timestep needs dt; splitting is only for timestep;
  *   - kernel = maxwell implies exponent 0, hard-spheres 1 (an explicit exponent
  *     that differs is an error), vhs needs an explicit exponent in [0, 1];
  *   - initial = two-maxwellians needs all of fraction, mass1, velocity1,
  *     temperature1, mass2, velocity2, temperature2 (no defaults) and refuses
  *     mass, temperature, velocity; those seven keys are refused otherwise;
  *   - heating type = white-noise needs strength (beta) >= 0; gaussian and
- *     non-gaussian take any finite strength.
+ *     non-gaussian take any finite strength; keep_temperature = true only with
+ *     type = gaussian and without strength;
+ *   - steady.from <= t_end.
  * Overrides may repeat a key (the last wins); a file may not.
  *
  * Thread safety: no global state is touched (inih's option globals are only

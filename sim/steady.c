@@ -1,0 +1,144 @@
+#include "steady.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "rng.h"
+
+static const char *const names[SIM_STEADY_BIN0] = {
+    "T", "a2", "a3", "c1", "c3", "mu2", "mu4", "mu4_white", "mu4_gaussian", "mu4_nongaussian",
+};
+
+size_t sim_steady_count(const sim_scene *scene)
+{
+    return scene->steady.present ? SIM_STEADY_BIN0 + scene->steady.bins : 0;
+}
+
+const char *sim_steady_name(size_t k, char *buf, size_t len)
+{
+    if (k < SIM_STEADY_BIN0)
+        snprintf(buf, len, "%s", names[k]);
+    else
+        snprintf(buf, len, "f_%zu", k - SIM_STEADY_BIN0);
+    return buf;
+}
+
+double sim_steady_bin_lower(const sim_scene *scene, size_t k)
+{
+    return scene->steady.c_max * (double)k / (double)scene->steady.bins;
+}
+
+double sim_steady_bin_centre(const sim_scene *scene, size_t k)
+{
+    return scene->steady.c_max * ((double)k + 0.5) / (double)scene->steady.bins;
+}
+
+/* Paper C Eqs. (65), (66): Phi2 and Phi4 of one pair of peculiar velocities. */
+static void phi24(const double *v1, const double *v2, double alpha, double *phi2, double *phi4)
+{
+    double g[3], G[3];
+    for (int k = 0; k < 3; k++) {
+        g[k] = v1[k] - v2[k];
+        G[k] = 0.5 * (v1[k] + v2[k]);
+    }
+    const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+    const double G2 = G[0] * G[0] + G[1] * G[1] + G[2] * G[2];
+    const double gG = g[0] * G[0] + g[1] * G[1] + g[2] * G[2];
+    const double gn = sqrt(g2), a2 = alpha * alpha;
+    *phi2 = M_PI * (1.0 - a2) / 8.0 * g2 * gn;
+    *phi4 = 0.25 * M_PI * gn
+            * (5.0 * (1.0 - a2) / 3.0 * g2 * G2 + (1.0 - a2) * (2.0 + a2) / 12.0 * g2 * g2
+               + (3.0 - alpha) * (1.0 + alpha) * (gG * gG - g2 * G2 / 3.0));
+}
+
+/* Reduced speed moments <c>, <c^3>, <c^4>, <c^6> (sums over the particles)
+ * and, when `histogram` (a constant in each caller), the shell counts. */
+static inline void speed_moments(const sim_particles *p, const double V[3], double inv_v0,
+                                 const int histogram, double c_max, size_t bins, double *sum,
+                                 double m[4])
+{
+    const size_t n = p->n;
+    const double delta = c_max / (double)bins;
+    const double shell = 4.0 * M_PI / 3.0 * delta * delta * delta * (double)n;
+    double m1 = 0.0, m3 = 0.0, m4 = 0.0, m6 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
+        const double c2 = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) * inv_v0 * inv_v0;
+        const double cn = sqrt(c2);
+        m1 += cn;
+        m3 += c2 * cn;
+        m4 += c2 * c2;
+        m6 += c2 * c2 * c2;
+        if (histogram && cn < c_max) {
+            size_t b = (size_t)(cn / delta);
+            if (b >= bins)   /* round-off at the last edge */
+                b = bins - 1;
+            const double kb = (double)b;   /* shell volume ∝ (k+1)^3 - k^3 */
+            sum[SIM_STEADY_BIN0 + b] += 1.0 / (shell * (3.0 * kb * kb + 3.0 * kb + 1.0));
+        }
+    }
+    m[0] = m1, m[1] = m3, m[2] = m4, m[3] = m6;
+}
+
+void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
+                       gsl_rng *rng, double *sum)
+{
+    const size_t n = p->n, bins = scene->steady.bins;
+    const double w = 1.0 / (double)n;
+    double V[3] = {0, 0, 0};
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            V[k] += p->v[i][k];
+    for (int k = 0; k < 3; k++)
+        V[k] *= w;
+    double s2 = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
+        s2 += c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    }
+    const double theta = w * s2 / 3.0;          /* T/m */
+    const double v0 = sqrt(2.0 * theta), inv_v0 = 1.0 / v0;
+
+    /* Reduced speed moments and the histogram. */
+    double m[4];
+    if (bins > 0)
+        speed_moments(p, V, inv_v0, 1, scene->steady.c_max, bins, sum, m);
+    else
+        speed_moments(p, V, inv_v0, 0, 1.0, 1, sum, m);
+    const double m1 = m[0] * w, m3 = m[1] * w, m4 = m[2] * w, m6 = m[3] * w;
+    /* a2 = (4/15) <c^4> - 1, a3 = -(8/105) <c^6> + 1 + 3 a2 (SPEC §1) */
+    const double a2 = 4.0 / 15.0 * m4 - 1.0;
+    const double a3 = -8.0 / 105.0 * m6 + 1.0 + 3.0 * a2;
+
+    /* Collisional moments by pair sampling, paper C Eq. (67). */
+    double mu2 = NAN, mu4 = NAN;
+    const size_t pairs = scene->steady.pairs;
+    if (pairs > 0 && rng != NULL) {
+        const double alpha = scene->collisions.restitution;   /* 1 unless set */
+        double s_2 = 0.0, s_4 = 0.0;
+        for (size_t q = 0; q < pairs; q++) {
+            size_t i = (size_t)sim_rng_index(rng, n);
+            size_t j = (size_t)sim_rng_index(rng, n - 1);
+            j += (j >= i);
+            const double ci[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
+            const double cj[3] = {p->v[j][0] - V[0], p->v[j][1] - V[1], p->v[j][2] - V[2]};
+            double f2, f4;
+            phi24(ci, cj, alpha, &f2, &f4);
+            s_2 += f2;
+            s_4 += f4;
+        }
+        mu2 = s_2 / (double)pairs * pow(inv_v0, 3.0);
+        mu4 = s_4 / (double)pairs * pow(inv_v0, 5.0);
+    }
+
+    sum[SIM_STEADY_T] += mass * theta;
+    sum[SIM_STEADY_A2] += a2;
+    sum[SIM_STEADY_A3] += a3;
+    sum[SIM_STEADY_C1] += m1;
+    sum[SIM_STEADY_C3] += m3;
+    sum[SIM_STEADY_MU2] += mu2;
+    sum[SIM_STEADY_MU4] += mu4;
+    sum[SIM_STEADY_MU4_WHITE] += 5.0 * mu2;                   /* (d + 2) mu2 */
+    sum[SIM_STEADY_MU4_GAUSSIAN] += 5.0 * (1.0 + a2) * mu2;
+    sum[SIM_STEADY_MU4_NONGAUSSIAN] += 2.0 * mu2 * m3 / m1;
+}
