@@ -93,6 +93,100 @@ static void test_brs_ex4(void **state)
     assert_true(count_failed("brs-ex4", wrong, 1) >= 1);
 }
 
+/* Failed checks of a quick case run as it is (no reference overrides), with
+ * solver overrides; fills *skipped and *passed when not NULL. */
+static size_t count_failed_plain(const char *case_name, const char *const *wrong, size_t nwrong,
+                                 size_t *passed)
+{
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir,
+                     .solver_overrides = wrong, .nsolver_overrides = nwrong};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512];
+    sim_status st = vfy_run("quick", case_name, &o, &r, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("%s\n", msg);
+    assert_int_equal(st, SIM_OK);
+    size_t failed = r.failed, ok = 0;
+    for (size_t i = 0; i < r.count; i++) {
+        ok += r.checks[i].verdict == VFY_PASS;
+        if (r.checks[i].verdict == VFY_FAIL)
+            print_message("  FAIL %s: %s\n", r.checks[i].name, r.checks[i].detail);
+    }
+    if (passed)
+        *passed = ok;
+    vfy_report_free(&r);
+    return failed;
+}
+
+/* Paper C (SPEC §5): the steady a2 of the white-noise thermostat against
+ * (C.10).  Wrong solvers: the Gaussian thermostat in its place (a2 twice as
+ * large), or alpha = 0.3 where the case asks for 0.5. */
+static void test_ms_a2_white_noise(void **state)
+{
+    (void)state;
+    size_t passed;
+    assert_int_equal(count_failed_plain("ms-a2-white-noise", NULL, 0, &passed), 0);
+    assert_true(passed >= 2);
+    const char *gaussian[] = {"heating.type=gaussian"};
+    assert_true(count_failed_plain("ms-a2-white-noise", gaussian, 1, NULL) >= 1);
+    const char *alpha[] = {"collisions.restitution=0.3"};
+    assert_true(count_failed_plain("ms-a2-white-noise", alpha, 1, NULL) >= 1);
+}
+
+/* The Gaussian thermostat's a2 is closer to (C.40) than to (C.5) for
+ * alpha <= 0.4 (the quick row is alpha = 0.2), and its a3 is large there
+ * (paper C Figure 6); a solver at alpha = 0.05 gives an a2 above both
+ * estimates. */
+static void test_ms_a2_gaussian(void **state)
+{
+    (void)state;
+    size_t passed;
+    assert_int_equal(count_failed_plain("ms-a2-gaussian", NULL, 0, &passed), 0);
+    assert_true(passed >= 2);   /* the closer-to check was judged, not skipped */
+    const char *alpha[] = {"collisions.restitution=0.05"};
+    assert_true(count_failed_plain("ms-a2-gaussian", alpha, 1, NULL) >= 1);
+    /* the white-noise thermostat in its place: a3 stays small at alpha = 0.2 */
+    const char *white[] = {"heating.type=white-noise", "heating.keep_temperature=false",
+                           "heating.strength=0.3"};
+    assert_true(count_failed_plain("ms-a2-gaussian", white, 3, NULL) >= 1);
+}
+
+/* The non-Gaussian thermostat's a2 is negative and near (C.76); the
+ * white-noise thermostat in its place gives a positive a2. */
+static void test_ms_a2_non_gaussian(void **state)
+{
+    (void)state;
+    assert_int_equal(count_failed_plain("ms-a2-non-gaussian", NULL, 0, NULL), 0);
+    const char *white[] = {"heating.type=white-noise"};
+    assert_true(count_failed_plain("ms-a2-non-gaussian", white, 1, NULL) >= 2);
+}
+
+/* Table 1: direct and indirect mu4 agree for each thermostat's own relation;
+ * with the Gaussian thermostat everywhere the white-noise and non-Gaussian
+ * relations (and the paper's values) fail. */
+static void test_ms_table1(void **state)
+{
+    (void)state;
+    assert_int_equal(count_failed_plain("ms-table1", NULL, 0, NULL), 0);
+    const char *gaussian[] = {"heating.type=gaussian"};
+    assert_true(count_failed_plain("ms-table1", gaussian, 1, NULL) >= 4);
+}
+
+/* SPEC §10: the time-step scheme's difference from the jump scheme shrinks
+ * as h (Euler) and h^2 (Strang); a time-step solver of another gas (heating
+ * 20% stronger than the jump run's) leaves an offset, and Strang's
+ * convergence factor fails. */
+static void test_split_ex5(void **state)
+{
+    (void)state;
+    size_t passed;
+    assert_int_equal(count_failed_plain("split-ex5", NULL, 0, &passed), 0);
+    assert_true(passed >= 10);   /* violations, and the CFs that the noise allows */
+    const char *wrong[] = {"heating.strength=0.15"};
+    assert_true(count_failed_plain("split-ex5", wrong, 1, NULL) >= 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -102,6 +196,11 @@ int main(void)
         cmocka_unit_test(test_grw_ex5),
         cmocka_unit_test(test_brs_ex2),
         cmocka_unit_test(test_brs_ex4),
+        cmocka_unit_test(test_ms_a2_white_noise),
+        cmocka_unit_test(test_ms_a2_gaussian),
+        cmocka_unit_test(test_ms_a2_non_gaussian),
+        cmocka_unit_test(test_ms_table1),
+        cmocka_unit_test(test_split_ex5),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }
