@@ -225,10 +225,15 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         status = build_timestep(e, err);
     if (status == SIM_OK && scene->steady.present) {
         e->nsteady = sim_steady_count(scene);
-        e->steady_from = scene->outputs;
-        for (size_t m = 0; m < scene->outputs && e->steady_from == scene->outputs; m++)
-            if (sim_scene_output_time(scene, m) >= scene->steady.from)
-                e->steady_from = m;
+        /* the first output time >= from, in O(1) (outputs may be large) */
+        double first = ceil(scene->steady.from * (double)(scene->outputs - 1) / scene->t_end);
+        size_t m = first <= 0.0 ? 0 : first >= (double)scene->outputs ? scene->outputs
+                                                                        : (size_t)first;
+        while (m > 0 && sim_scene_output_time(scene, m - 1) >= scene->steady.from)
+            m--;
+        while (m < scene->outputs && sim_scene_output_time(scene, m) < scene->steady.from)
+            m++;
+        e->steady_from = m;
         if (scene->steady.bins > 0 && !(scene->steady.c_max > 0.0))
             status = sim_error_set(err, SIM_EINVAL, "steady.c_max", "%g is not positive",
                                    scene->steady.c_max);

@@ -82,3 +82,7 @@ gdsmc_add_cli_test(cli_sonine_unknown_option 2 "^gdsmc sonine: unknown option '-
 gdsmc_add_cli_test(cli_bench_small 0 "\\| hs-relax \\| 1000 \\|"
                    bench --max-n 1000 --seconds 0.05)
 gdsmc_add_cli_test(cli_bench_bad_n 2 "--max-n '10': allowed 1000 <= N" bench --max-n 10)
+# found by the fuzzer: a huge output count used to be accepted (and scanned)
+gdsmc_add_cli_test(cli_outputs_too_many 2
+                   "scene.outputs: '20000000' is out of range \\(allowed 2 <= outputs <= 10000000\\)"
+                   run ${S}/grw-ex3.ini --set scene.outputs=20000000)

@@ -485,7 +485,7 @@ TRAP(trap_n_overflow, "[particles]\nn = 99999999999999999999999\n",
      "t.ini:2: particles.n: '99999999999999999999999' is out of range "
      "(allowed 2 <= n <= 1000000000)")
 TRAP(trap_outputs_1, "[scene]\noutputs = 1\n",
-     "t.ini:2: scene.outputs: '1' is out of range (allowed outputs >= 2)")
+     "t.ini:2: scene.outputs: '1' is out of range (allowed 2 <= outputs <= 10000000)")
 TRAP(trap_not_a_number, "[scene]\nt_end = abc\n",
      "t.ini:2: scene.t_end: 'abc' is not a number (allowed t_end > 0)")
 TRAP(trap_empty_number, "[scene]\nt_end =\n",

@@ -129,7 +129,7 @@ static const key_desc keys[] = {
     POSITIVE(S_SCENE, "dt", dt),
     WORDS(S_SCENE, "splitting", splitting, splitting_words),
     POSITIVE(S_SCENE, "t_end", t_end),
-    COUNT(S_SCENE, "outputs", outputs, 2, SIZE_MAX),
+    COUNT(S_SCENE, "outputs", outputs, 2, 10000000),
     {.section = S_SCENE, .name = "seed", .kind = K_U64, .offset = OFF(seed), .min = 0,
      .max = UINT64_MAX},
 
