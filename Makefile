@@ -59,7 +59,7 @@ fuzz:
 	cmake --build $(FUZZ_BUILD) --target fuzz_scene -j $(JOBS)
 	mkdir -p $(FUZZ_BUILD)/corpus
 	cp -n verify/scenes/*.ini $(FUZZ_BUILD)/corpus/
-	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 \
+	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus
 
 clean:
