@@ -4,7 +4,6 @@
 #include "background.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,19 +11,9 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
-static const double PI = 3.14159265358979323846;
+#include "message.h"
 
-/* Record a message about a bad argument in buf (may be NULL) and return 1 ("bad"). */
-static int say(char *buf, size_t len, const char *fmt, ...)
-{
-    if (buf && len > 0) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(buf, len, fmt, ap);
-        va_end(ap);
-    }
-    return 1;
-}
+static const double PI = 3.14159265358979323846;
 
 static int positive(double x)
 {
@@ -37,7 +26,7 @@ static int positive(double x)
 static int bad_params(const ref_background_params *p, char *buf, size_t len)
 {
     if (!p)
-        return say(buf, len, "p is NULL");
+        return ref_say(buf, len, "p is NULL");
     const struct {
         const char *name;
         double value;
@@ -48,16 +37,16 @@ static int bad_params(const ref_background_params *p, char *buf, size_t len)
     };
     for (size_t i = 0; i < sizeof pos / sizeof pos[0]; i++)
         if (!positive(pos[i].value))
-            return say(buf, len, "%s = %g must be finite and > 0", pos[i].name, pos[i].value);
+            return ref_say(buf, len, "%s = %g must be finite and > 0", pos[i].name, pos[i].value);
     if (!(isfinite(p->C2) && p->C2 >= 0.0))
-        return say(buf, len, "C2 = %g must be finite and >= 0", p->C2);
+        return ref_say(buf, len, "C2 = %g must be finite and >= 0", p->C2);
     if (!(p->restitution > 0.0 && p->restitution <= 1.0))
-        return say(buf, len, "restitution = %g out of range (0, 1]", p->restitution);
+        return ref_say(buf, len, "restitution = %g out of range (0, 1]", p->restitution);
     for (int i = 0; i < 3; i++) {
         if (!isfinite(p->bg_velocity[i]))
-            return say(buf, len, "bg_velocity[%d] = %g is not finite", i, p->bg_velocity[i]);
+            return ref_say(buf, len, "bg_velocity[%d] = %g is not finite", i, p->bg_velocity[i]);
         if (!isfinite(p->u0[i]))
-            return say(buf, len, "u0[%d] = %g is not finite", i, p->u0[i]);
+            return ref_say(buf, len, "u0[%d] = %g is not finite", i, p->u0[i]);
     }
     return 0;
 }
@@ -71,14 +60,14 @@ static int valid(const ref_background_params *p)
 static int bad_times(const double *t, size_t nt, char *buf, size_t len)
 {
     if (!t)
-        return say(buf, len, "t is NULL");
+        return ref_say(buf, len, "t is NULL");
     if (nt == 0)
-        return say(buf, len, "nt = 0: at least one time (the initial one) is required");
+        return ref_say(buf, len, "nt = 0: at least one time (the initial one) is required");
     for (size_t m = 0; m < nt; m++) {
         if (!isfinite(t[m]))
-            return say(buf, len, "t[%zu] = %g is not finite", m, t[m]);
+            return ref_say(buf, len, "t[%zu] = %g is not finite", m, t[m]);
         if (m > 0 && !(t[m] > t[m - 1]))
-            return say(buf, len, "t[%zu] = %.17g must be > t[%zu] = %.17g (strictly increasing)",
+            return ref_say(buf, len, "t[%zu] = %.17g must be > t[%zu] = %.17g (strictly increasing)",
                        m, t[m], m - 1, t[m - 1]);
     }
     return 0;
@@ -199,12 +188,12 @@ static ref_status solve_4(ref_rhs_fn f, void *params, const ref_background_param
                           double *T_out, char *msg, size_t msglen)
 {
     if (nt > SIZE_MAX / (4 * sizeof(double))) {
-        say(msg, msglen, "nt = %zu is too large to allocate the solution", nt);
+        ref_say(msg, msglen, "nt = %zu is too large to allocate the solution", nt);
         return REF_ENOMEM;
     }
     double *y = malloc(4 * nt * sizeof *y);
     if (!y) {
-        say(msg, msglen, "cannot allocate the solution for nt = %zu times", nt);
+        ref_say(msg, msglen, "cannot allocate the solution for nt = %zu times", nt);
         return REF_ENOMEM;
     }
     double y0[4] = {p->u0[0], p->u0[1], p->u0[2], p->T0};
@@ -228,7 +217,7 @@ ref_status ref_background_maxwell_ode(const ref_background_params *p, const doub
     if (bad_params(p, msg, msglen) || bad_times(t, nt, msg, msglen))
         return REF_EINVAL;
     if (!T_out) {
-        say(msg, msglen, "T_out is NULL");
+        ref_say(msg, msglen, "T_out is NULL");
         return REF_EINVAL;
     }
     maxwell_const k = maxwell_constants(p);
@@ -261,16 +250,16 @@ ref_status ref_background_maxwell_T_mean(const ref_background_params *p, double 
     if (bad_params(p, msg, msglen) || bad_times(t, nt, msg, msglen))
         return REF_EINVAL;
     if (!(n >= 2.0 && isfinite(n))) {
-        say(msg, msglen, "n = %g out of range (allowed n >= 2)", n);
+        ref_say(msg, msglen, "n = %g out of range (allowed n >= 2)", n);
         return REF_EINVAL;
     }
     if (!T_out) {
-        say(msg, msglen, "T_out is NULL");
+        ref_say(msg, msglen, "T_out is NULL");
         return REF_EINVAL;
     }
     double *y = malloc(2 * nt * sizeof *y);
     if (!y) {
-        say(msg, msglen, "cannot allocate the solution for nt = %zu times", nt);
+        ref_say(msg, msglen, "cannot allocate the solution for nt = %zu times", nt);
         return REF_ENOMEM;
     }
     const double e = p->restitution, d2 = dist2(p->u0, p->bg_velocity);
@@ -388,7 +377,7 @@ static int hs_rhs(double t, const double *y, double *ydot, void *params)
 static int bad_closure(ref_background_closure c, char *buf, size_t len)
 {
     if (c != REF_BACKGROUND_LE && c != REF_BACKGROUND_GRAD)
-        return say(buf, len, "closure = %d is not REF_BACKGROUND_LE or REF_BACKGROUND_GRAD", (int)c);
+        return ref_say(buf, len, "closure = %d is not REF_BACKGROUND_LE or REF_BACKGROUND_GRAD", (int)c);
     return 0;
 }
 
@@ -399,7 +388,7 @@ ref_status ref_background_hs(const ref_background_params *p, ref_background_clos
     if (bad_params(p, msg, msglen) || bad_closure(c, msg, msglen) || bad_times(t, nt, msg, msglen))
         return REF_EINVAL;
     if (!T_out) {
-        say(msg, msglen, "T_out is NULL");
+        ref_say(msg, msglen, "T_out is NULL");
         return REF_EINVAL;
     }
     hs_rhs_params q = hs_params(p, c);

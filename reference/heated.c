@@ -2,41 +2,29 @@
 #include "heated.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 
+#include "message.h"
 #include "sonine.h"
 
 static const double PI = 3.14159265358979323846;
-
-/* Record a message about a bad argument in buf (may be NULL) and return 1 ("bad"). */
-static int say(char *buf, size_t len, const char *fmt, ...)
-{
-    if (buf && len > 0) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(buf, len, fmt, ap);
-        va_end(ap);
-    }
-    return 1;
-}
 
 /* Describe the first out-of-range parameter into buf; return 0 when all are valid.
  * Ranges: SPEC §3 (alpha in (0,1], beta >= 0, gamma > 0), C > 0, T0 > 0, all finite. */
 static int bad_params(const ref_heated_params *p, char *buf, size_t len)
 {
     if (!p)
-        return say(buf, len, "p is NULL");
+        return ref_say(buf, len, "p is NULL");
     if (!(p->alpha > 0.0 && p->alpha <= 1.0))
-        return say(buf, len, "alpha = %g out of range (0, 1]", p->alpha);
+        return ref_say(buf, len, "alpha = %g out of range (0, 1]", p->alpha);
     if (!(p->beta >= 0.0 && isfinite(p->beta)))
-        return say(buf, len, "beta = %g must be finite and >= 0", p->beta);
+        return ref_say(buf, len, "beta = %g must be finite and >= 0", p->beta);
     if (!(p->gamma > 0.0 && isfinite(p->gamma)))
-        return say(buf, len, "gamma = %g must be finite and > 0", p->gamma);
+        return ref_say(buf, len, "gamma = %g must be finite and > 0", p->gamma);
     if (!(p->C > 0.0 && isfinite(p->C)))
-        return say(buf, len, "C = %g must be finite and > 0", p->C);
+        return ref_say(buf, len, "C = %g must be finite and > 0", p->C);
     if (!(p->T0 > 0.0 && isfinite(p->T0)))
-        return say(buf, len, "T0 = %g must be finite and > 0", p->T0);
+        return ref_say(buf, len, "T0 = %g must be finite and > 0", p->T0);
     return 0;
 }
 
@@ -143,16 +131,16 @@ static int bad_hs_args(const ref_heated_params *p, ref_heated_closure closure, c
     if (bad_params(p, buf, len))
         return 1;
     if (closure != REF_HEATED_MAXWELLIAN_CLOSURE && closure != REF_HEATED_SONINE_CLOSURE)
-        return say(buf, len, "closure = %d is not MAXWELLIAN or SONINE", (int)closure);
+        return ref_say(buf, len, "closure = %d is not MAXWELLIAN or SONINE", (int)closure);
     if (!t || !T_out)
-        return say(buf, len, "%s is NULL", !t ? "t" : "T_out");
+        return ref_say(buf, len, "%s is NULL", !t ? "t" : "T_out");
     if (nt == 0)
-        return say(buf, len, "nt = 0: at least one time (the initial one) is required");
+        return ref_say(buf, len, "nt = 0: at least one time (the initial one) is required");
     for (size_t m = 0; m < nt; m++) {
         if (!isfinite(t[m]))
-            return say(buf, len, "t[%zu] = %g is not finite", m, t[m]);
+            return ref_say(buf, len, "t[%zu] = %g is not finite", m, t[m]);
         if (m > 0 && !(t[m] > t[m - 1]))
-            return say(buf, len, "t[%zu] = %.17g must be > t[%zu] = %.17g (strictly increasing)",
+            return ref_say(buf, len, "t[%zu] = %.17g must be > t[%zu] = %.17g (strictly increasing)",
                        m, t[m], m - 1, t[m - 1]);
     }
     return 0;

@@ -1,7 +1,7 @@
 /* Unit tests of the reference/ layer, first part: the CVODE adapter (ode.h),
  * paper A's references (heated.h) and the Sonine formula (C.10) (sonine.h).
  * Every known answer names its source; SPEC = /work/shared/SPEC.md. */
-#include "test_util.h"
+#include "test_reference_util.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -27,34 +27,6 @@ static ref_heated_params ex4(void)
     ref_heated_params p = ex3();
     p.beta = 0.125;
     return p;
-}
-
-static void grid(double *t, size_t n, double t_end)
-{
-    for (size_t m = 0; m < n; m++)
-        t[m] = t_end * (double)m / (double)(n - 1);
-}
-
-static ref_ode_options opts(ref_ode_method method, double rtol, double atol)
-{
-    ref_ode_options o = ref_ode_default_options();
-    o.method = method;
-    o.rtol = rtol;
-    o.atol = atol;
-    return o;
-}
-
-/* Assert a status and that the message contains each of up to two fragments. */
-static void assert_failure(ref_status st, ref_status expected, const char *msg, const char *frag1,
-                           const char *frag2)
-{
-    if (st != expected || !strstr(msg, frag1) || (frag2 && !strstr(msg, frag2)))
-        print_error("status %d (expected %d), message \"%s\", wanted \"%s\"%s%s\n", (int)st,
-                    (int)expected, msg, frag1, frag2 ? " and " : "", frag2 ? frag2 : "");
-    assert_int_equal(st, expected);
-    assert_non_null(strstr(msg, frag1));
-    if (frag2)
-        assert_non_null(strstr(msg, frag2));
 }
 
 /* ---------------------------------------------------------------- closed form (A.13-14) */

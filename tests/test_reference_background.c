@@ -2,7 +2,7 @@
  * forms (B.14)-(B.18) against SPEC §4's checks and against CVODE on (B.13), the
  * hard-sphere closures (B.21)/(B.22) and their steady states, and the traps.
  * Every known answer names its source; SPEC = /work/shared/SPEC.md. */
-#include "test_util.h"
+#include "test_reference_util.h"
 
 #include <string.h>
 
@@ -64,34 +64,6 @@ static ref_background_params hs_ex(double K)
     ref_background_params p = ex2();
     p.C2 = K;
     return p;
-}
-
-static void grid(double *t, size_t n, double t_end)
-{
-    for (size_t m = 0; m < n; m++)
-        t[m] = t_end * (double)m / (double)(n - 1);
-}
-
-static ref_ode_options opts(ref_ode_method method, double rtol, double atol)
-{
-    ref_ode_options o = ref_ode_default_options();
-    o.method = method;
-    o.rtol = rtol;
-    o.atol = atol;
-    return o;
-}
-
-/* Assert a status and that the message contains each of up to two fragments. */
-static void assert_failure(ref_status st, ref_status expected, const char *msg, const char *frag1,
-                           const char *frag2)
-{
-    if (st != expected || !strstr(msg, frag1) || (frag2 && !strstr(msg, frag2)))
-        print_error("status %d (expected %d), message \"%s\", wanted \"%s\"%s%s\n", (int)st,
-                    (int)expected, msg, frag1, frag2 ? " and " : "", frag2 ? frag2 : "");
-    assert_int_equal(st, expected);
-    assert_non_null(strstr(msg, frag1));
-    if (frag2)
-        assert_non_null(strstr(msg, frag2));
 }
 
 static void assert_u(const ref_background_params *p, double t, double u0, double u1, double u2,
