@@ -56,23 +56,6 @@ static int valid(const ref_background_params *p)
     return !bad_params(p, NULL, 0);
 }
 
-/* Check the output times of the CVODE functions (the names are the caller's). */
-static int bad_times(const double *t, size_t nt, char *buf, size_t len)
-{
-    if (!t)
-        return ref_say(buf, len, "t is NULL");
-    if (nt == 0)
-        return ref_say(buf, len, "nt = 0: at least one time (the initial one) is required");
-    for (size_t m = 0; m < nt; m++) {
-        if (!isfinite(t[m]))
-            return ref_say(buf, len, "t[%zu] = %g is not finite", m, t[m]);
-        if (m > 0 && !(t[m] > t[m - 1]))
-            return ref_say(buf, len, "t[%zu] = %.17g must be > t[%zu] = %.17g (strictly increasing)",
-                       m, t[m], m - 1, t[m - 1]);
-    }
-    return 0;
-}
-
 /* alpha = m_B/(m + m_B), SPEC §4 (a mass ratio, not a restitution coefficient). */
 static double mass_ratio(const ref_background_params *p)
 {
@@ -214,7 +197,7 @@ ref_status ref_background_maxwell_ode(const ref_background_params *p, const doub
                                       const ref_ode_options *opt, double *u_out, double *T_out,
                                       char *msg, size_t msglen)
 {
-    if (bad_params(p, msg, msglen) || bad_times(t, nt, msg, msglen))
+    if (bad_params(p, msg, msglen) || ref_bad_times(t, nt, msg, msglen))
         return REF_EINVAL;
     if (!T_out) {
         ref_say(msg, msglen, "T_out is NULL");
@@ -247,7 +230,7 @@ ref_status ref_background_maxwell_T_mean(const ref_background_params *p, double 
                                          const ref_ode_options *opt, double *T_out, char *msg,
                                          size_t msglen)
 {
-    if (bad_params(p, msg, msglen) || bad_times(t, nt, msg, msglen))
+    if (bad_params(p, msg, msglen) || ref_bad_times(t, nt, msg, msglen))
         return REF_EINVAL;
     if (!(n >= 2.0 && isfinite(n))) {
         ref_say(msg, msglen, "n = %g out of range (allowed n >= 2)", n);
@@ -385,7 +368,8 @@ ref_status ref_background_hs(const ref_background_params *p, ref_background_clos
                              const double *t, size_t nt, const ref_ode_options *opt,
                              double *u_out, double *T_out, char *msg, size_t msglen)
 {
-    if (bad_params(p, msg, msglen) || bad_closure(c, msg, msglen) || bad_times(t, nt, msg, msglen))
+    if (bad_params(p, msg, msglen) || bad_closure(c, msg, msglen)
+        || ref_bad_times(t, nt, msg, msglen))
         return REF_EINVAL;
     if (!T_out) {
         ref_say(msg, msglen, "T_out is NULL");

@@ -134,16 +134,7 @@ static int bad_hs_args(const ref_heated_params *p, ref_heated_closure closure, c
         return ref_say(buf, len, "closure = %d is not MAXWELLIAN or SONINE", (int)closure);
     if (!t || !T_out)
         return ref_say(buf, len, "%s is NULL", !t ? "t" : "T_out");
-    if (nt == 0)
-        return ref_say(buf, len, "nt = 0: at least one time (the initial one) is required");
-    for (size_t m = 0; m < nt; m++) {
-        if (!isfinite(t[m]))
-            return ref_say(buf, len, "t[%zu] = %g is not finite", m, t[m]);
-        if (m > 0 && !(t[m] > t[m - 1]))
-            return ref_say(buf, len, "t[%zu] = %.17g must be > t[%zu] = %.17g (strictly increasing)",
-                       m, t[m], m - 1, t[m - 1]);
-    }
-    return 0;
+    return ref_bad_times(t, nt, buf, len);
 }
 
 ref_status ref_heated_hs_T(const ref_heated_params *p, ref_heated_closure closure,

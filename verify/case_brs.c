@@ -219,7 +219,7 @@ sim_status vfy_case_brs_convergence(const vfy_case *c, const vfy_options *o, vfy
     }
 
     if (status == SIM_OK) {
-        char path[1024], comment[600], notes[2400], title[160], name[160];
+        char comment[600], notes[2400], title[160], name[160];
         vfy_run_comment(&solver, comment, sizeof comment);
         snprintf(title, sizeof title, "%s: paper B %s (%s sizes)", c->name,
                  paper->label ? paper->label : "Maxwell kernels, relaxation",
@@ -236,13 +236,8 @@ sim_status vfy_case_brs_convergence(const vfy_case *c, const vfy_options *o, vfy
                  "1 - accepted/candidates (0 for Maxwell kernels, Algorithm 1); cpu_s is "
                  "process CPU time over all threads. Total wall time %.1f s.",
                  comment, M, wall_total);
-        if (vfy_table_write_csv(&table, vfy_report_path(o, c->name, ".csv", path, sizeof path),
-                                comment) != 0
-            || vfy_table_write_markdown(&table,
-                                        vfy_report_path(o, c->name, ".md", path, sizeof path),
-                                        title, notes) != 0) {
-            status = vfy_io_error(path, msg, msglen);
-        } else {
+        status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg, msglen);
+        if (status == SIM_OK) {
             const char *T_names[] = {"T_exact"}, *u_names[] = {"uy_exact"};
             const double *T_refs[] = {exact}, *u_refs[] = {buf[U_EXACT] + M};
             snprintf(name, sizeof name, "%s-T", c->name);
@@ -433,7 +428,7 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
         fprintf(o->progress, "   %s: kinetic T* = %.5f ± %.5f (paper %.3f); closures LE %.5f, "
                 "Grad %.5f\n", c->name, T_inf, T_inf_ci, paper->kinetic, le, grad);
 
-    char path[1024], comment[600], notes[2400], title[160];
+    char comment[600], notes[2400], title[160];
     vfy_run_comment(&solver, comment, sizeof comment);
     snprintf(title, sizeof title, "%s: paper B, hard spheres, steady temperature (%s sizes)",
              c->name, o->size == VFY_PAPER ? "paper" : "quick");
@@ -450,13 +445,9 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
              comment, nN, BATCHES, t_from, scene.t_end, BATCHES - 1, T_inf, T_inf_ci,
              paper->kinetic, le, paper->le,
              grad, paper->grad, chi2, wall_total);
-    if (vfy_table_write_csv(&table, vfy_report_path(o, c->name, ".csv", path, sizeof path),
-                            comment) != 0
-        || vfy_table_write_markdown(&table, vfy_report_path(o, c->name, ".md", path, sizeof path),
-                                    title, notes) != 0) {
-        status = vfy_io_error(path, msg, msglen);
+    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
+                                        msglen)) != SIM_OK)
         goto done;
-    }
     n[rows] = 0;   /* the extrapolated curve */
     const char *T_names[] = {"T_le", "T_grad"}, *u_names[] = {"uy_le", "uy_grad"};
     const double *T_refs[] = {buf[T_LE], buf[T_GRAD]}, *u_refs[] = {buf[UY_LE], buf[UY_GRAD]};

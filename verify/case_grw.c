@@ -171,7 +171,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
     if (status != SIM_OK)
         goto done;
 
-    char path[1024], comment[600], notes[2000], title[160];
+    char comment[600], notes[2000], title[160];
     vfy_run_comment(&solver, comment, sizeof comment);
     snprintf(title, sizeof title, "%s: paper A %s reproduced (%s sizes)", c->name, paper->label,
              o->size == VFY_PAPER ? "paper" : "quick");
@@ -185,13 +185,9 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
              "SPEC §10). events = candidate collisions (all accepted for Maxwell molecules); "
              "cpu_s is process CPU time over all threads. Total wall time %.1f s.",
              comment, M, wall_total);
-    if (vfy_table_write_csv(&table, vfy_report_path(o, c->name, ".csv", path, sizeof path),
-                            comment) != 0
-        || vfy_table_write_markdown(&table, vfy_report_path(o, c->name, ".md", path, sizeof path),
-                                    title, notes) != 0) {
-        status = vfy_io_error(path, msg, msglen);
+    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
+                                        msglen)) != SIM_OK)
         goto done;
-    }
     const char *ref_names[] = {"T_exact"};
     const double *ref_cols[] = {exact};
     if (vfy_write_curves(o, c->name, title, t, M, 1, ref_names, ref_cols, rows, n, band_mean, band_ci,
@@ -340,12 +336,11 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
              diff_s_steady, chi2_max, rows, wall_total);
     char xname[160];
     snprintf(xname, sizeof xname, "%s-extrapolated", c->name);
-    if (vfy_table_write_csv(&table, vfy_report_path(o, c->name, ".csv", path, sizeof path),
-                            comment) != 0
-        || vfy_table_write_markdown(&table, vfy_report_path(o, c->name, ".md", path, sizeof path),
-                                    title, notes) != 0
-        || vfy_table_write_csv(&xtable, vfy_report_path(o, xname, ".csv", path, sizeof path),
-                               comment) != 0) {
+    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
+                                        msglen)) != SIM_OK)
+        goto done;
+    if (vfy_table_write_csv(&xtable, vfy_report_path(o, xname, ".csv", path, sizeof path),
+                            comment) != 0) {
         status = vfy_io_error(path, msg, msglen);
         goto done;
     }

@@ -330,20 +330,6 @@ static int ms_write_figure(const vfy_options *o, const ms_figure *f)
     return 0;
 }
 
-/* Write the table as CSV and Markdown. */
-static sim_status ms_write_table(const vfy_options *o, const char *name, const vfy_table *t,
-                                 const char *comment, const char *title, const char *notes,
-                                 char *msg, size_t msglen)
-{
-    char path[1024];
-    if (vfy_table_write_csv(t, vfy_report_path(o, name, ".csv", path, sizeof path), comment)
-            != 0
-        || vfy_table_write_markdown(t, vfy_report_path(o, name, ".md", path, sizeof path),
-                                    title, notes) != 0)
-        return vfy_io_error(path, msg, msglen);
-    return SIM_OK;
-}
-
 /* ---------------------------------------------------- a2 against alpha */
 
 sim_status vfy_case_ms_a2(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
@@ -484,7 +470,7 @@ sim_status vfy_case_ms_a2(const vfy_case *c, const vfy_options *o, vfy_report *r
                                        "(Figure 6)"
                                      : "a2 < 0 (with its ci) and within 25% of C76 for alpha < 1",
                  wall_total);
-        status = ms_write_table(o, c->name, &table, comment, title, notes, msg, msglen);
+        status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg, msglen);
     }
     if (status == SIM_OK) {
         /* The figure: a2, (mu2 - mu2^(0))/mu2^(1), (mu4 - mu4^(0))/mu4^(1) and
@@ -660,7 +646,7 @@ sim_status vfy_case_ms_table1(const vfy_case *c, const vfy_options *o, vfy_repor
                  "paper's value.%s Total wall time %.1f s.",
                  comment, sizes, o->size == VFY_PAPER ? paper_table1_long_note : "",
                  wall_total);
-        status = ms_write_table(o, c->name, &table, comment, title, notes, msg, msglen);
+        status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg, msglen);
     }
     vfy_table_free(&table);
     return status;
@@ -875,7 +861,7 @@ sim_status vfy_case_ms_tails(const vfy_case *c, const vfy_options *o, vfy_report
                  "tolerance is widened by the value's own half-width). Total wall time "
                  "%.1f s.",
                  comment, sizes, wall_total);
-        status = ms_write_table(o, c->name, &table, comment, title, notes, msg, msglen);
+        status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg, msglen);
     }
     vfy_table_free(&table);
     return status;

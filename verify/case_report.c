@@ -10,13 +10,26 @@
 #include "scene_ini.h"
 #include "table.h"
 
-void vfy_cost_cells(struct vfy_table *table, double cpu_seconds, double wall_seconds,
+void vfy_cost_cells(vfy_table *table, double cpu_seconds, double wall_seconds,
                     double events)
 {
     vfy_table_cell(table, "%.2f", cpu_seconds);
     vfy_table_cell(table, "%.2f", wall_seconds);
     vfy_table_cell(table, "%.0f", events);
     vfy_table_cell(table, "%.1f", events > 0 ? 1e9 * cpu_seconds / events : 0.0);
+}
+
+sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const vfy_table *table,
+                                 const char *comment, const char *title, const char *notes,
+                                 char *msg, size_t msglen)
+{
+    char path[1024];
+    if (vfy_table_write_csv(table, vfy_report_path(o, name, ".csv", path, sizeof path),
+                            comment) != 0
+        || vfy_table_write_markdown(table, vfy_report_path(o, name, ".md", path, sizeof path),
+                                    title, notes) != 0)
+        return vfy_io_error(path, msg, msglen);
+    return SIM_OK;
 }
 
 sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene *scene,

@@ -9,6 +9,7 @@
 #include "cases.h"
 #include "ensemble.h"
 #include "scene_refs.h"
+#include "table.h"
 
 #define VFY_ROWS_MAX 8   /* rows (particle numbers) of one case */
 
@@ -22,12 +23,17 @@ sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene 
 /* The cost columns every table ends with: cpu_s, wall_s, events,
  * ns_per_event (CPU nanoseconds per candidate event). */
 #define VFY_COST_COLUMNS "cpu_s", "wall_s", "events", "ns_per_event"
-struct vfy_table;
-void vfy_cost_cells(struct vfy_table *table, double cpu_seconds, double wall_seconds,
+void vfy_cost_cells(vfy_table *table, double cpu_seconds, double wall_seconds,
                     double events);
 
 /* "gdsmc VERSION verify: scene FILE, seed S, N = ..., M outputs on [0, t_end]". */
 const char *vfy_run_comment(const sim_scene *s, char *buf, size_t len);
+
+/* A case's table as out_dir/<name>.csv (comment first) and out_dir/<name>.md
+ * (title, notes); SIM_EIO with "PATH: cannot write: ..." on failure. */
+sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const vfy_table *table,
+                                 const char *comment, const char *title, const char *notes,
+                                 char *msg, size_t msglen);
 
 /* msg = "PATH: cannot write: strerror(errno)"; returns SIM_EIO. */
 sim_status vfy_io_error(const char *path, char *msg, size_t msglen);

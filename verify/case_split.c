@@ -362,7 +362,7 @@ sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r
     double wall = jump.wall;
     for (size_t k = 0; k < 2 * levels; k++)
         wall += rows[k].wall;
-    char path[1024], comment[600], notes[4000], title[200];
+    char comment[600], notes[4000], title[200];
     vfy_run_comment(&solver, comment, sizeof comment);
     snprintf(title, sizeof title, "%s: splitting error of the time-step scheme against the "
              "exact jump scheme, paper A Ex 5's gas (%s sizes)", c->name,
@@ -392,13 +392,9 @@ sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r
              comment, solver.particles.n, solver.particles.ensembles, solver.steady.from,
              solver.t_end, EULER_CF_LO, EULER_CF_HI, STRANG_CF_LO, STRANG_CF_HI, CLEAN_RATIO,
              cost, wall);
-    if (vfy_table_write_csv(&table, vfy_report_path(o, c->name, ".csv", path, sizeof path),
-                            comment) != 0
-        || vfy_table_write_markdown(&table, vfy_report_path(o, c->name, ".md", path, sizeof path),
-                                    title, notes) != 0) {
-        status = vfy_io_error(path, msg, msglen);
+    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
+                                        msglen)) != SIM_OK)
         goto done;
-    }
     if (split_figure(o, c->name, rows, levels) != 0)
         status = vfy_io_error(c->name, msg, msglen);
 done:
