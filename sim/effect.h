@@ -33,6 +33,7 @@
 #define GDSMC_SIM_EFFECT_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include <gsl/gsl_rng.h>
 
@@ -44,6 +45,11 @@ typedef struct sim_effect sim_effect;
 
 typedef double (*sim_event_fire_fn)(const sim_effect *e, sim_run *run, void *state, double t);
 typedef void (*sim_event_stage_fn)(const sim_effect *e, sim_run *run, void *state, double h);
+/* Fire up to `max` (>= 1) candidates in a row, as `fire` would one by one,
+ * and stop after the first one that changes the majorant rate; returns the
+ * number fired and sets *rate to the rate after the last. */
+typedef uint64_t (*sim_event_fire_many_fn)(const sim_effect *e, sim_run *run, void *state,
+                                          uint64_t max, double *rate);
 
 typedef struct sim_effect_type {
     const char *name;   /* the scene section, e.g. "heating" */
@@ -58,6 +64,11 @@ typedef struct sim_effect_type {
      * majorants add as a margin (for random flows a bound exceeded with
      * negligible probability; the majorant-violation counter is the proof). */
     double (*reach)(const sim_effect *e, double dt);
+    /* For a flow whose increment over dt is Gaussian with mean 0 and the same
+     * variance in each component, independent of the velocity (white noise):
+     * that variance per unit time; 0 otherwise.  Conditional observation
+     * (observe.h, sim_observe_pending) needs it. */
+    double (*spread)(const sim_effect *e);
 
     /* Event processes (NULL for flows). */
     size_t state_size;
@@ -82,6 +93,10 @@ typedef struct sim_effect_type {
      * start of each run and `reset` is called at each output time, as in the
      * jump scheme. */
     sim_event_stage_fn (*select_stage)(const sim_effect *e);
+    /* Optional (may be NULL): the fast path of the jump scheme for an engine in
+     * which this is the only event process and no flow is lazy, so candidate
+     * times are never needed (engine.c).  See sim_event_fire_many_fn. */
+    sim_event_fire_many_fn (*select_fire_many)(const sim_effect *e);
 } sim_effect_type;
 
 struct sim_effect {

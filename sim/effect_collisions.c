@@ -1,22 +1,43 @@
 /* Binary inelastic collisions, the exact jump scheme of paper A §3 (SPEC §3),
  * also the binary part of paper B's Algorithms 1 and 2 (SPEC §4).
  *
- * VHS kernel B = C |g|^lambda with e uniform on S^2, 0 <= lambda <= 1.  The
- * majorant rate is pi_hat = 2 pi gamma C (n - 1) U_max^lambda; a candidate is
- * an ordered pair i != j chosen uniformly, accepted with (|g| / U_max)^lambda.
+ * VHS kernel B = C |g|^lambda with e uniform on S^2, 0 <= lambda <= 1: each
+ * unordered pair {i, j} collides at the rate 4 pi gamma C |g|^lambda / n.  The
+ * majorant rate is pi_hat = 2 pi gamma C (n - 1) U_max^lambda with U_max = 2 R
+ * from the shared velocity bound of run.h: |v_i - c| <= R for every i, so
+ * |v_i - v_j| <= |v_i - c| + |v_j - c| <= 2 R.  Paper A takes c = the bulk
+ * velocity, paper B's Algorithm 2 c = u_B (U2max = max |v_i - u_B|); the engine
+ * chooses.  R is raised whenever a velocity changes (after its flow is applied
+ * and after any collision), so R bounds every velocity the scheme has seen.
+ * A lazy flow can carry an untouched particle beyond R; that shows when the
+ * particle is drawn and is counted as a majorant violation; to make that
+ * negligible the engine adds the flow's reach over the time to the next reset
+ * to R.  The engine recomputes R from scratch at each output time (and, in
+ * runs without a lazy flow, every few n candidates), so the majorant also
+ * shrinks when the gas cools.  Maxwell molecules (lambda = 0) need no
+ * majorant: every candidate is accepted and the rate never changes.
  *
- * U_max = 2 R from the shared velocity bound of run.h: |v_i - v_j| <=
- * |v_i - c| + |v_j - c| <= 2 R.  Paper A takes c = the bulk velocity, paper B's
- * Algorithm 2 c = u_B (U2max = max |v_i - u_B|, accept |g| / (2 U2max)); the
- * engine chooses.  R is raised whenever a velocity changes (after its flow is
- * applied and after any collision), so 2 R bounds every pair the scheme has
- * seen.  A lazy flow can carry an untouched particle beyond R; that would show
- * when the pair is drawn (|g| > U_max in use) and is counted as a majorant
- * violation; to make that negligible the engine adds the flow's reach over
- * the time to the next reset to R.  At each output time, with every particle
- * synchronised, R is recomputed from scratch, so the majorant also shrinks
- * when the gas cools.  Maxwell molecules (lambda = 0) need no majorant: every
- * candidate is accepted and the rate never changes.
+ * Hard spheres (lambda = 1) use the tighter pairwise bound |g| <= a_i + a_j,
+ * a_i = |v_i - c| <= R, in two stages, at the same candidate rate
+ * pi_hat = 4 pi gamma C (n - 1) R:
+ *   1. i uniform, kept with probability a_i / R (else the candidate is
+ *      fictitious after one particle load);
+ *   2. j uniform among the others, accepted with |g| / (a_i + a_j).
+ * The ordered pair (i, j) then collides at the rate
+ *   pi_hat (1/n) (a_i / R) (1/(n-1)) |g| / (a_i + a_j),
+ * and since the collision rule is symmetric in i and j (e -> -e is again
+ * uniform), the unordered pair at the sum of (i, j) and (j, i):
+ *   pi_hat |g| (a_i + a_j) / (n (n-1) R (a_i + a_j)) = 4 pi gamma C |g| / n,
+ * exactly the hard-sphere rate.  Compared with one test |g| / (2R) on a
+ * uniform pair, the expected number of collisions per candidate is the same,
+ * but a candidate rejected in stage 1 (most of them) costs one particle
+ * instead of two and no square root of |g|, and stage 2 accepts about 0.7 of
+ * the pairs of a Maxwellian (E|g| / E(a_i + a_j) = sqrt(2)/2).  A violation
+ * is now a drawn particle with a_i > R.
+ *
+ * Particle indices come from the run's index stream (particles.h: drawn
+ * ahead, their memory prefetched) with a 32-bit uniform each for the
+ * acceptance test that follows (rng.h: exact Bernoulli trials).
  *
  * The time-step scheme (SPEC §5, paper C §3), hard spheres only: a collision
  * stage of length h draws candidates at the rate R_c = 8 pi gamma C (n - 1) U_max
@@ -27,17 +48,23 @@
  * E_s[Θ(g.s)(g.s)] = |g|/4, each unordered pair collides at the rate
  * 4 pi gamma C |g|/n, exactly that of the jump scheme above, so that as h -> 0
  * the two schemes simulate the same n-particle process (up to Bird's
- * deterministic candidate count, an O(1/n) effect in transients).  U_max = 2R
- * follows the shared bound as above, so g.s <= |g| <= U_max always holds and
- * the paper's "omega_max updated when exceeded" never has to act; a candidate
- * with g.s > U_max would still be counted as a violation.  When U_max grows
- * within the stage, the remaining stage time is spent at the new rate.
+ * deterministic candidate count, an O(1/n) effect in transients).  The pair
+ * and the acceptance are drawn in the two stages above: i kept with a_i / R,
+ * then j and s, accepted with Θ(g.s) (g.s) / (a_i + a_j); the unordered pair
+ * with contact direction s (g.s > 0; (j, i) with -s is the same contact)
+ * collides at R_c (g.s) (a_i + a_j) / (n (n-1) R (a_i + a_j)) ds / (4 pi), the
+ * rate of the one-stage test (g.s) / U_max.  U_max = 2R follows the shared
+ * bound, so the paper's "omega_max updated when exceeded" never has to act;
+ * a drawn particle beyond R would still be counted as a violation.  When R
+ * grows within the stage, the remaining stage time is spent at the new rate.
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "collide.h"
 #include "effect.h"
+#include "particles.h"
 #include "rng.h"
 #include "run.h"
 
@@ -53,7 +80,14 @@ typedef struct collisions_state {
     double radius;      /* the bound's R when umax was last computed */
     double umax;        /* 2 R */
     double rate;        /* prefactor umax^lambda */
+    double scale;       /* 2^32 / R: stage 1's acceptance a_i / R as sim_rng_accept32's x */
     double credit;      /* time-step scheme: stage time not yet spent on candidates */
+    double margin;      /* the lazy flow's reach until the next reset (0 without one) */
+    int started;        /* the index stream is filled (the engine zeroes the state
+                           at the start of every run) */
+    int batch_started;  /* ... and the blocks of first particles */
+    sim_pick pick;      /* the run's particle indices, drawn ahead */
+    sim_batch batch;    /* first particles in blocks (the batched loops below) */
 } collisions_state;
 
 enum kernel_case { KERNEL_MAXWELL, KERNEL_HARD_SPHERES, KERNEL_VHS };
@@ -65,10 +99,19 @@ static inline double follow_bound(const collisions_params *p, collisions_state *
     if (run->radius != s->radius) {
         s->radius = run->radius;
         s->umax = 2.0 * run->radius;
+        s->scale = run->radius > 0.0 ? 0x1p32 / run->radius : 0.0;
         s->rate = p->lambda == 1.0 ? p->prefactor * s->umax
                                    : p->prefactor * pow(s->umax, p->lambda);
     }
     return s->rate;
+}
+
+/* |v - c|^2, in the order reset_bound (engine.c) and sim_run_cover use, so
+ * that a_i <= R holds to the last bit for every covered velocity. */
+static inline double dist2(const double v[3], const double c[3])
+{
+    const double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
 
 static int collisions_needs_bound(const sim_effect *e)
@@ -86,56 +129,140 @@ static double collisions_rate(const sim_effect *e, const sim_run *run, void *vst
 
 static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, double horizon)
 {
-    (void)horizon;   /* the engine has added the flow's reach to the bound */
+    /* the engine has added the flow's reach to the bound; velocities this
+     * process changes get the same margin (cover_moving) */
     collisions_state *s = vstate;
+    s->margin = run->flow ? run->flow->type->reach(run->flow, horizon) : 0.0;
+    if (!s->started) {   /* the first reset of a run, after the initial state */
+        sim_pick_start(&s->pick, &run->p, run->rng);
+        s->started = 1;
+    }
     s->radius = -1.0;   /* force a recomputation */
     return collisions_rate(e, run, s);
 }
 
-/* One candidate collision at time t (paper A Algorithm, steps 2.3-2.10).
- * kernel, lazy_flow and bounded are compile-time constants in each instance
- * below (bounded is implied by kernel != KERNEL_MAXWELL). */
-static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t,
-                                    const enum kernel_case kernel, const int lazy_flow,
-                                    const int bounded)
+/* The next particle of the index stream, brought to time t by a lazy flow;
+ * j != i when called with the first particle i (else i = UINT32_MAX). */
+static inline uint32_t draw_particle(collisions_state *s, sim_run *run, uint32_t other,
+                                     double t, uint32_t *spare, const int lazy_flow)
+{
+    uint32_t i;
+    do
+        i = sim_pick_next(&s->pick, &run->p, run->rng, spare, lazy_flow);
+    while (i == other);   /* uniform over the others: redraw (probability 1/n) */
+    if (lazy_flow)
+        sim_run_bring(run, i, t);
+    return i;
+}
+
+/* Let the bound cover velocity v of a particle that a lazy flow will keep
+ * moving: with the flow's reach until the next reset as a margin, as the
+ * engine gives every particle at the reset.  Without it a particle just
+ * covered (a = R) would outrun R with probability 1/2 as soon as the flow
+ * moves it, and stage 1 (a_i / R) needs a_i <= R for every drawn particle. */
+static inline void cover_moving(sim_run *run, const collisions_state *s, const double v[3])
+{
+    const double a = sqrt(dist2(v, run->centre)) + s->margin;
+    if (a > run->radius) {
+        run->radius = a;
+        run->bound_grew = 1;
+    }
+}
+
+/* a = |v - c|; a drawn particle beyond the bound is a majorant violation,
+ * which only a lazy flow can cause (with probability below P(chi_3 > 7) per
+ * particle and interval, effect_heating.c): it is counted and covered. */
+static inline double bounded_distance(const collisions_params *p, collisions_state *s,
+                                      sim_run *run, const double v[3], const int lazy_flow)
+{
+    const double a = sqrt(dist2(v, run->centre));
+    if (a > run->radius) {
+        run->counts.violations++;
+        if (lazy_flow) {
+            cover_moving(run, s, v);
+            follow_bound(p, s, run);
+        }
+    }
+    return a;
+}
+
+/* One candidate hard-sphere collision at time t (paper A Algorithm, steps
+ * 2.3-2.10, with the two-stage acceptance of the header comment). */
+static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate,
+                                          double t, const int lazy_flow)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
-    gsl_rng *rng = run->rng;
-    const size_t n = run->p.n;
-
-    size_t i = (size_t)sim_rng_index(rng, n);
-    size_t j = (size_t)sim_rng_index(rng, n - 1);
-    j += (j >= i);   /* uniform over j != i */
-    if (lazy_flow) {
-        sim_run_bring(run, i, t);
-        sim_run_bring(run, j, t);
-    }
-    double *vi = run->p.v[i], *vj = run->p.v[j];
-    double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
-    double gnorm = sim_norm3(g);
+    follow_bound(p, s, run);   /* another process may have grown the bound */
     run->counts.candidates++;
 
-    if (kernel != KERNEL_MAXWELL) {
+    uint32_t ui, i = draw_particle(s, run, UINT32_MAX, t, &ui, lazy_flow);
+    double *vi = run->p.v[i];
+    const double ai = bounded_distance(p, s, run, vi, lazy_flow);
+    if (!sim_rng_accept32(run->rng, ui, ai * s->scale))
+        return s->rate;   /* stage 1: fictitious */
+
+    uint32_t uj, j = draw_particle(s, run, i, t, &uj, lazy_flow);
+    double *vj = run->p.v[j];
+    const double aj = bounded_distance(p, s, run, vj, lazy_flow);
+    const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+    const double gnorm = sim_norm3(g);
+    if (!sim_rng_accept32_ratio(run->rng, uj, gnorm, ai + aj))
+        return s->rate;   /* stage 2: fictitious */
+
+    double unit[3];
+    sim_rng_unit_sphere(run->rng, unit);
+    sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
+    run->counts.collisions++;
+    if (lazy_flow) {
+        cover_moving(run, s, vi);
+        cover_moving(run, s, vj);
+    } else {
+        sim_run_cover(run, vi);
+        sim_run_cover(run, vj);
+    }
+    return follow_bound(p, s, run);
+}
+
+/* One candidate collision with a uniform pair at time t: Maxwell molecules
+ * (always accepted) or VHS (accepted with (|g| / U_max)^lambda).  kernel,
+ * lazy_flow and bounded are constants in each instance below (bounded is
+ * implied by kernel == KERNEL_VHS). */
+static inline double fire_uniform_pair(const sim_effect *e, sim_run *run, void *vstate,
+                                       double t, const enum kernel_case kernel,
+                                       const int lazy_flow, const int bounded)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    run->counts.candidates++;
+
+    uint32_t ui, i = draw_particle(s, run, UINT32_MAX, t, &ui, lazy_flow);
+    uint32_t uj, j = draw_particle(s, run, i, t, &uj, lazy_flow);
+    double *vi = run->p.v[i], *vj = run->p.v[j];
+    const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+    const double gnorm = sim_norm3(g);
+
+    if (kernel == KERNEL_VHS) {
+        follow_bound(p, s, run);   /* another process may have grown the bound */
         if (gnorm > s->umax)
             run->counts.violations++;
         if (lazy_flow) {   /* the flow moved i and j since R last covered them */
-            sim_run_cover(run, vi);
-            sim_run_cover(run, vj);
+            cover_moving(run, s, vi);
+            cover_moving(run, s, vj);
             follow_bound(p, s, run);
         }
-        double u = sim_rng_uniform(rng);
-        int fictitious = kernel == KERNEL_HARD_SPHERES ? u * s->umax >= gnorm
-                                                       : u >= pow(gnorm / s->umax, p->lambda);
-        if (fictitious)
+        if (!sim_rng_accept32(run->rng, uj, pow(gnorm / s->umax, p->lambda) * 0x1p32))
             return s->rate;
     }
 
     double unit[3];
-    sim_rng_unit_sphere(rng, unit);
+    sim_rng_unit_sphere(run->rng, unit);
     sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
     run->counts.collisions++;
-    if (bounded) {
+    if (bounded && lazy_flow) {
+        cover_moving(run, s, vi);
+        cover_moving(run, s, vj);
+    } else if (bounded) {
         sim_run_cover(run, vi);
         sim_run_cover(run, vj);
     }
@@ -145,16 +272,24 @@ static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vst
 #define FIRE_INSTANCE(name, kernel, lazy, bounded)                                           \
     static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
-        return fire_candidate(e, run, state, t, kernel, lazy, bounded);                      \
+        return fire_uniform_pair(e, run, state, t, kernel, lazy, bounded);                   \
     }
 FIRE_INSTANCE(fire_maxwell, KERNEL_MAXWELL, 0, 0)
 FIRE_INSTANCE(fire_maxwell_flow, KERNEL_MAXWELL, 1, 0)
 FIRE_INSTANCE(fire_maxwell_bounded, KERNEL_MAXWELL, 0, 1)
 FIRE_INSTANCE(fire_maxwell_flow_bounded, KERNEL_MAXWELL, 1, 1)
-FIRE_INSTANCE(fire_hard_spheres, KERNEL_HARD_SPHERES, 0, 1)
-FIRE_INSTANCE(fire_hard_spheres_flow, KERNEL_HARD_SPHERES, 1, 1)
 FIRE_INSTANCE(fire_vhs, KERNEL_VHS, 0, 1)
 FIRE_INSTANCE(fire_vhs_flow, KERNEL_VHS, 1, 1)
+
+static double fire_hard_spheres(const sim_effect *e, sim_run *run, void *state, double t)
+{
+    return fire_hard_spheres_at(e, run, state, t, 0);
+}
+
+static double fire_hard_spheres_flow(const sim_effect *e, sim_run *run, void *state, double t)
+{
+    return fire_hard_spheres_at(e, run, state, t, 1);
+}
 
 static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow, int bounded)
 {
@@ -169,53 +304,201 @@ static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_fl
     return lazy_flow ? fire_vhs_flow : fire_vhs;
 }
 
-/* One collision stage of the time-step scheme (hard spheres, contact rule). */
-static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h)
+/* ------------------------------------------------------ batched loops */
+
+/* Bits lo .. hi - 1 (0 <= lo <= hi <= SIM_BATCH). */
+static inline uint32_t bit_range(unsigned lo, unsigned hi)
+{
+    return ((1u << hi) - 1u) & ~((1u << lo) - 1u);
+}
+
+/* Stage 1 for the entries `which` of the current block: bit k of the result
+ * is set when entry k's particle is kept (a_k / R: sim_rng_accept32's test
+ * without branches; the undecided case u < x < u + 1, of probability 2^-32,
+ * draws its further bits here).  A particle beyond the bound (a_k > R, a
+ * violation) has x > 2^32 and is always kept: the caller counts it then. */
+static inline __attribute__((always_inline)) uint32_t
+stage1(const sim_batch *b, uint32_t which, const sim_particles *p, const double c[3],
+       double scale, gsl_rng *rng)
+{
+    /* u + 1 <= x and u < x compared as squares: no square root (a few
+     * cycles of throughput each) for the three in four entries rejected */
+    const double scale2 = scale * scale;
+    uint32_t keep = 0, below = 0;
+    for (unsigned k = 0; k < SIM_BATCH; k++) {
+        const double x2 = dist2(p->v[b->index[k]], c) * scale2;
+        const double u = (double)b->spare[k], u1 = u + 1.0;
+        keep |= (uint32_t)(u1 * u1 <= x2) << k;
+        below |= (uint32_t)(u * u < x2) << k;
+    }
+    for (uint32_t tie = below & ~keep & which; tie; tie &= tie - 1) {
+        const unsigned k = (unsigned)__builtin_ctz(tie);
+        const double x = sqrt(dist2(p->v[b->index[k]], c)) * scale;
+        keep |= (uint32_t)(sim_rng_uniform(rng) < x - (double)b->spare[k]) << k;
+    }
+    return keep & which;
+}
+
+/* Hard-sphere candidates without a lazy flow, first particles from the
+ * blocks: up to `max` of them, stopping after a collision that grows the
+ * bound; returns how many.  The first stage is decided for a whole block at
+ * once and the loop jumps from kept entry to kept entry (most candidates end
+ * there, and a data-dependent branch per candidate costs more than the test).
+ * After a collision the block's later entries of the two particles are
+ * tested again, so every entry is decided with the state at its turn.
+ * contact = 0: the jump scheme (stage 2: |g| / (a_i + a_j), then e uniform and
+ * the rule of collide.h); 1: the time-step scheme's contact rule (s uniform,
+ * stage 2: Θ(g.s) (g.s) / (a_i + a_j)); a constant in each caller. */
+static inline uint64_t batched_hard_spheres(const collisions_params *p, collisions_state *s,
+                                            sim_run *run, uint64_t max, const int contact)
+{
+    gsl_rng *rng = run->rng;
+    sim_particles *ps = &run->p;
+    sim_batch *b = &s->batch;
+    if (!s->batch_started) {
+        sim_batch_start(b, ps, rng);
+        s->batch_started = 1;
+    }
+    const double c[3] = {run->centre[0], run->centre[1], run->centre[2]};
+    const double radius = run->radius, scale = s->scale, alpha = p->alpha;
+    uint32_t keep = stage1(b, bit_range(b->pos, SIM_BATCH), ps, c, scale, rng);
+    uint64_t done = 0, collisions = 0, violations = 0;
+    while (done < max) {
+        if (b->pos == SIM_BATCH) {
+            sim_batch_advance(b, ps, rng);
+            keep = stage1(b, bit_range(0, SIM_BATCH), ps, c, scale, rng);
+        }
+        const uint32_t later = keep & bit_range(b->pos, SIM_BATCH);
+        const unsigned k = later ? (unsigned)__builtin_ctz(later) : SIM_BATCH;
+        const uint64_t left = max - done;
+        if (k - b->pos >= left) {   /* the last candidates are all rejected in stage 1 */
+            b->pos += (unsigned)left;
+            done = max;
+            break;
+        }
+        const unsigned end = k < SIM_BATCH ? k + 1 : SIM_BATCH;
+        done += end - b->pos;
+        b->pos = end;
+        if (k == SIM_BATCH)
+            continue;
+
+        const uint32_t i = b->index[k];   /* kept in stage 1 */
+        double *vi = ps->v[i];
+        const double ai = sqrt(dist2(vi, c));
+        uint32_t uj, j;
+        do
+            j = sim_pick_next(&s->pick, ps, rng, &uj, 0);
+        while (j == i);
+        double *vj = ps->v[j];
+        const double aj = sqrt(dist2(vj, c));
+        violations += (ai > radius) + (aj > radius);   /* never, without a lazy flow */
+        double unit[3];
+        if (contact) {
+            sim_rng_unit_sphere(rng, unit);
+            const double gs = (vi[0] - vj[0]) * unit[0] + (vi[1] - vj[1]) * unit[1]
+                              + (vi[2] - vj[2]) * unit[2];
+            /* Θ(g.s): gs <= 0 (the spheres move apart) never passes */
+            if (!sim_rng_accept32_ratio(rng, uj, gs, ai + aj))
+                continue;
+            sim_collide_contact(vi, vj, alpha, gs, unit);
+        } else {
+            const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+            const double gnorm = sim_norm3(g);
+            if (!sim_rng_accept32_ratio(rng, uj, gnorm, ai + aj))
+                continue;
+            sim_rng_unit_sphere(rng, unit);
+            sim_collide_inelastic(vi, vj, alpha, gnorm, unit);
+        }
+        collisions++;
+        sim_run_cover(run, vi);
+        sim_run_cover(run, vj);
+        if (run->radius != radius)
+            break;
+        uint32_t moved = 0;   /* later entries of the block with particle i or j */
+        for (unsigned q = k + 1; q < SIM_BATCH; q++)
+            moved |= (uint32_t)(b->index[q] == i || b->index[q] == j) << q;
+        if (moved)
+            keep = (keep & ~moved) | stage1(b, moved, ps, c, scale, rng);
+    }
+    run->counts.candidates += done;
+    run->counts.collisions += collisions;
+    run->counts.violations += violations;
+    return done;
+}
+
+/* The jump scheme's fast path (effect.h: the only event process, no lazy
+ * flow): stops after a collision that grows the bound. */
+static uint64_t fire_many_hard_spheres(const sim_effect *e, sim_run *run, void *vstate,
+                                       uint64_t max, double *rate)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    follow_bound(p, s, run);
+    const uint64_t done = batched_hard_spheres(p, s, run, max, 0);
+    *rate = follow_bound(p, s, run);
+    return done;
+}
+
+/* The fast path for Maxwell molecules: every candidate collides and the rate
+ * never changes. */
+static uint64_t fire_many_maxwell(const sim_effect *e, sim_run *run, void *vstate, uint64_t max,
+                                  double *rate)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
     gsl_rng *rng = run->rng;
-    const size_t n = run->p.n;
-    const double alpha = p->alpha;
-
-    follow_bound(p, s, run);
-    if (!(s->umax > 0.0)) {   /* every velocity equal: no collision can happen */
-        s->credit = 0.0;
-        return;
-    }
-    double dtc = p->stage_time / s->umax;   /* time per candidate */
-    double credit = s->credit + h;
-    uint64_t candidates = 0, collisions = 0;
-    while (credit >= dtc) {
-        credit -= dtc;
-        candidates++;
-        size_t i = (size_t)sim_rng_index(rng, n);
-        size_t j = (size_t)sim_rng_index(rng, n - 1);
-        j += (j >= i);
+    sim_particles *ps = &run->p;
+    for (uint64_t k = 0; k < max; k++) {
+        uint32_t spare, i = sim_pick_next(&s->pick, ps, rng, &spare, 0), j;
+        do
+            j = sim_pick_next(&s->pick, ps, rng, &spare, 0);
+        while (j == i);
+        double *vi = ps->v[i], *vj = ps->v[j];
+        const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
         double unit[3];
         sim_rng_unit_sphere(rng, unit);
-        double *vi = run->p.v[i], *vj = run->p.v[j];
-        double gs = (vi[0] - vj[0]) * unit[0] + (vi[1] - vj[1]) * unit[1]
-                    + (vi[2] - vj[2]) * unit[2];
-        if (gs <= 0.0)   /* Θ(g.s): the spheres move apart */
-            continue;
-        if (gs > s->umax)
-            run->counts.violations++;
-        if (sim_rng_uniform(rng) * s->umax >= gs)
-            continue;
-        sim_collide_contact(vi, vj, alpha, gs, unit);
-        collisions++;
-        sim_run_cover(run, vi);
-        sim_run_cover(run, vj);
-        if (run->radius != s->radius) {
-            follow_bound(p, s, run);
-            dtc = p->stage_time / s->umax;
-        }
+        sim_collide_inelastic(vi, vj, p->alpha, sim_norm3(g), unit);
     }
-    s->credit = credit;
+    run->counts.candidates += max;
+    run->counts.collisions += max;
+    *rate = p->prefactor;
+    return max;
+}
+
+static sim_event_fire_many_fn collisions_select_fire_many(const sim_effect *e)
+{
+    const collisions_params *p = e->params;
+    return p->lambda == 0.0 ? fire_many_maxwell
+           : p->lambda == 1.0 ? fire_many_hard_spheres
+                              : NULL;
+}
+
+/* One collision stage of the time-step scheme (hard spheres, contact rule,
+ * the two-stage acceptance of the header comment): floor(credit / dtc)
+ * candidates at dtc = stage_time / U_max each; when a collision grows the
+ * bound, the stage time left is spent at the new U_max. */
+static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    double credit = s->credit + h;
+    for (;;) {
+        follow_bound(p, s, run);
+        if (!(s->umax > 0.0)) {   /* every velocity equal: no collision can happen */
+            credit = 0.0;
+            break;
+        }
+        const double dtc = p->stage_time / s->umax;   /* time per candidate */
+        const double count = floor(credit / dtc);
+        if (!(count >= 1.0))
+            break;
+        const uint64_t done = batched_hard_spheres(p, s, run, (uint64_t)count, 1);
+        credit -= (double)done * dtc;
+        if (done == (uint64_t)count)
+            break;
+    }
+    s->credit = fmax(credit, 0.0);
     run->bound_grew = 0;   /* followed above; no other process shares the bound */
-    run->counts.candidates += candidates;
-    run->counts.collisions += collisions;
 }
 
 static sim_event_stage_fn collisions_select_stage(const sim_effect *e)
@@ -232,6 +515,7 @@ static const sim_effect_type collisions_type = {
     .rate = collisions_rate,
     .select_fire = collisions_select_fire,
     .select_stage = collisions_select_stage,
+    .select_fire_many = collisions_select_fire_many,
 };
 
 sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err)

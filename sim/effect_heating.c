@@ -61,11 +61,23 @@ static void white_noise_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
-/* Each component moves by N(0, 2 beta dt); 4 standard deviations. */
+/* Each component moves by N(0, 2 beta dt), so the distance moved is
+ * sigma chi_3, sigma = sqrt(2 beta dt); 7 sigma is exceeded with probability
+ * P(chi_3 > 7) = 1.3e-10.  A radius, not a per-component bound: the
+ * hard-sphere majorant (effect_collisions.c) needs |v_i - c| <= R for each
+ * drawn particle, and at 4 sigma (P(chi_3 > 4) = 1.1e-3) particles of a gas
+ * much colder than the heating outran the bound. */
 static double white_noise_reach(const sim_effect *e, double dt)
 {
     const heating_params *p = e->params;
-    return 4.0 * sqrt(2.0 * p->strength * dt);
+    return 7.0 * sqrt(2.0 * p->strength * dt);
+}
+
+/* The increment over dt is N(0, 2 beta dt) per component. */
+static double white_noise_spread(const sim_effect *e)
+{
+    const heating_params *p = e->params;
+    return 2.0 * p->strength;
 }
 
 static const sim_effect_type white_noise_type = {
@@ -73,6 +85,7 @@ static const sim_effect_type white_noise_type = {
     .advance = white_noise_advance,
     .step = white_noise_step,
     .reach = white_noise_reach,
+    .spread = white_noise_spread,
 };
 
 /* --------------------------------------------------------------- Gaussian */

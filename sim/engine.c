@@ -9,7 +9,27 @@
  * particle is brought to that time, the observables are recorded, and the
  * majorants are recomputed from the synchronised system; the pending waiting
  * time is then redrawn, which is exact because the waiting times are
- * exponential (memoryless).
+ * exponential (memoryless).  The loop is chosen when the engine is built:
+ *
+ *  - with a lazy flow (run_jump_timed) every candidate needs its time, so
+ *    the waiting times are drawn one by one, tau = -ln(U) / pi_hat;
+ *
+ *  - without one (run_jump_counted) no candidate needs its time, only how many
+ *    fall before the next output time.  pi_hat is constant between the
+ *    candidates that change it (a collision that grows the velocity bound),
+ *    so the candidates of (t, t_out] are a Poisson number K of rate
+ *    pi_hat (t_out - t), fired one after another without any waiting time.
+ *    When candidate k of K changes the rate, its time is the k-th of K
+ *    uniform points on (t, t_out], t_k = t + (t_out - t) Beta(k, K - k + 1)
+ *    (the outcomes of candidates 1..k do not depend on their times); the rest
+ *    of the span starts afresh from t_k at the new rate (the process is
+ *    Markov and its arrival times are stopping times).  No logarithm per
+ *    candidate, and a process that is alone may fire its candidates in its
+ *    own loop (effect.h, fire_many).  In these runs the system is always
+ *    synchronised, so every REBOUND_SWEEPS n candidates the bound is also
+ *    recomputed from scratch (the same change of rate): it follows the
+ *    current largest speed instead of the largest ever seen, and the
+ *    majorants stay tight.
  *
  * The time-step scheme (Bird; paper C §3) advances the whole system in steps
  * of h, the largest h <= scene.dt that divides the interval between output
@@ -39,8 +59,27 @@
 
 #define MAX_EVENTS 4
 
+/* Candidates between two recomputations of the velocity bound in runs
+ * without a lazy flow, in units of n: one pass over the particles every 4 n
+ * candidates (about one collision per particle) costs about 1% and keeps the
+ * majorant near the current largest speed (run_jump_counted). */
+#define REBOUND_SWEEPS 4
+
+/* The largest Poisson mean drawn at once (gsl_ran_poisson returns an
+ * unsigned int); a longer span is cut into pieces, which is exact because the
+ * counts of disjoint spans are independent. */
+#define POISSON_MAX 1e9
+
 typedef void (*step_fn)(const sim_engine *e, sim_workspace *ws, double h);
 typedef void (*interval_fn)(const sim_engine *e, sim_workspace *ws);
+typedef uint64_t (*fire_some_fn)(const sim_engine *e, sim_workspace *ws, double *rates,
+                                 double *total, uint64_t max);
+static uint64_t fire_some_alone(const sim_engine *e, sim_workspace *ws, double *rates,
+                                double *total, uint64_t max);
+static uint64_t fire_some_one(const sim_engine *e, sim_workspace *ws, double *rates,
+                              double *total, uint64_t max);
+static uint64_t fire_some_mixed(const sim_engine *e, sim_workspace *ws, double *rates,
+                                double *total, uint64_t max);
 
 struct sim_engine {
     sim_scene scene;
@@ -49,6 +88,8 @@ struct sim_engine {
     int has_flow;
     int lazy_flow;        /* jump scheme: the flow is applied lazily (stamps) */
     sim_effect flow;
+    double pending_spread;/* scene.observation = conditional: the lazy flow's variance per
+                             unit time (observe.h, sim_observe_pending), else 0 */
     int bounded;          /* some event needs the velocity bound (run.h) */
     int fixed_centre;     /* ... centred at `centre`, else at the bulk velocity */
     double centre[3];
@@ -57,6 +98,10 @@ struct sim_engine {
     sim_event_fire_fn fire[MAX_EVENTS];
     size_t state_offset[MAX_EVENTS];
     size_t state_bytes;
+    /* jump scheme without a lazy flow (run_jump_counted) */
+    fire_some_fn fire_some;            /* the candidates of a span, up to a change of rate */
+    sim_event_fire_many_fn fire_many;  /* the only process's own loop, or NULL */
+    uint64_t rebound_every;            /* candidates between bound recomputations */
     /* time-step scheme */
     sim_event_stage_fn stage[MAX_EVENTS];
     step_fn step;         /* Lie (euler) step, or collisions only */
@@ -193,6 +238,10 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         return sim_error_set(err, SIM_EINVAL, "",
                              "scene not validated: n = %zu, outputs = %zu, t_end = %g",
                              scene->particles.n, scene->outputs, scene->t_end);
+    if (scene->particles.n > SIM_PARTICLES_MAX)
+        return sim_error_set(err, SIM_EINVAL, "particles.n", "%zu is out of range (allowed "
+                             "n <= %lu)", scene->particles.n,
+                             (unsigned long)SIM_PARTICLES_MAX);
 
     sim_engine *e = calloc(1, sizeof *e);
     if (e == NULL)
@@ -220,6 +269,14 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
             e->lazy_flow = !timestep;
             append_name(e, e->flow.type->name);
         }
+    }
+    if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
+        if (!e->lazy_flow || e->flow.type->spread == NULL)
+            status = sim_error_set(err, SIM_EUNSUPPORTED, "scene.observation",
+                                   "conditional needs a lazily applied Gaussian flow "
+                                   "(white-noise heating, scheme = jump)");
+        else
+            e->pending_spread = e->flow.type->spread(&e->flow);
     }
     if (status == SIM_OK && timestep)
         status = build_timestep(e, err);
@@ -254,6 +311,12 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     }
     for (size_t k = 0; k < e->nevents; k++)
         e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow, e->bounded);
+    if (e->nevents == 1 && e->events[0].type->select_fire_many)
+        e->fire_many = e->events[0].type->select_fire_many(&e->events[0]);
+    e->fire_some = e->fire_many ? fire_some_alone : e->nevents == 1 ? fire_some_one
+                                                                    : fire_some_mixed;
+    e->rebound_every = e->bounded && !e->lazy_flow
+                           ? REBOUND_SWEEPS * (uint64_t)scene->particles.n : UINT64_MAX;
     *engine = e;
     return SIM_OK;
 }
@@ -273,6 +336,12 @@ const sim_scene *sim_engine_scene(const sim_engine *engine) { return &engine->sc
 const char *sim_engine_effects(const sim_engine *engine) { return engine->effects; }
 
 size_t sim_engine_steady_count(const sim_engine *engine) { return engine->nsteady; }
+
+size_t sim_engine_workspace_bytes(const sim_engine *engine)
+{
+    return engine->scene.particles.n * sim_particles_bytes_per_particle(engine->lazy_flow)
+           + engine->state_bytes + engine->nsteady * sizeof(double) + sizeof(sim_workspace);
+}
 
 double sim_engine_step(const sim_engine *engine)
 {
@@ -346,7 +415,8 @@ static void reset_bound(const sim_engine *e, sim_run *run, double horizon)
     }
     for (size_t i = 0; i < n; i++) {
         double d[3] = {run->p.v[i][0] - c[0], run->p.v[i][1] - c[1], run->p.v[i][2] - c[2]};
-        r2 = fmax(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        const double x = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        r2 = x > r2 ? x : r2;   /* not fmax: a library call on baseline x86-64 */
     }
     memcpy(run->centre, c, sizeof c);
     run->radius = sqrt(r2) + (run->flow ? run->flow->type->reach(run->flow, horizon) : 0.0);
@@ -362,6 +432,31 @@ static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[
     for (size_t k = 0; k < e->nevents; k++) {
         rates[k] = e->events[k].type->reset(&e->events[k], &ws->run,
                                             ws->states + e->state_offset[k], horizon);
+        total += rates[k];
+    }
+    return total;
+}
+
+/* Runs without a lazy flow, between output times: R = max |v_i - c| from
+ * scratch about the same centre (binary collisions keep the bulk velocity,
+ * and a fixed centre stays), and every process's rate for it; returns the
+ * total.  One pass over the particles, no reset of the processes. */
+static double rebound(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS])
+{
+    sim_run *run = &ws->run;
+    const double *c = run->centre;
+    double r2 = 0.0;
+    for (size_t i = 0; i < run->p.n; i++) {
+        const double *v = run->p.v[i];
+        const double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
+        const double x = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        r2 = x > r2 ? x : r2;
+    }
+    run->radius = sqrt(r2);
+    run->bound_grew = 0;
+    double total = 0.0;
+    for (size_t k = 0; k < e->nevents; k++) {
+        rates[k] = e->events[k].type->rate(&e->events[k], run, ws->states + e->state_offset[k]);
         total += rates[k];
     }
     return total;
@@ -408,8 +503,9 @@ static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double 
     }
 }
 
-/* The exact jump scheme from t = 0 to t_end (the initial state is sampled). */
-static void run_jump(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
+/* The exact jump scheme from t = 0 to t_end (the initial state is sampled),
+ * with a lazy flow: every candidate gets its waiting time. */
+static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
 {
     const sim_scene *scene = &e->scene;
     sim_run *run = &ws->run;
@@ -432,11 +528,117 @@ static void run_jump(const sim_engine *e, sim_workspace *ws, double *obs, size_t
             total = e->nevents == 1 ? rates[0] : update_rates(e, ws, rates, k);
         }
         t = t_out;
+        double expected[SIM_OBS_COUNT];   /* before the pending increments are drawn */
+        if (e->pending_spread > 0.0)
+            sim_observe_pending(&run->p, e->mass, t, e->pending_spread, expected);
         if (run->flow)
             for (size_t i = 0; i < n; i++)
                 sim_run_bring(run, i, t);
         observe_at(e, ws, m, obs, samples);
-        total = reset_events(e, ws, rates, interval);
+        if (e->pending_spread > 0.0)   /* T .. Pyz: their conditional expectations */
+            memcpy(obs + m * SIM_OBS_COUNT + SIM_OBS_T, expected + SIM_OBS_T,
+                   (SIM_OBS_PYZ + 1 - SIM_OBS_T) * sizeof *expected);
+        if (m + 1 < scene->outputs)
+            total = reset_events(e, ws, rates, interval);
+    }
+}
+
+/* fire_some_fn: up to `max` candidates of the jump scheme without a lazy flow
+ * (no times: the fire functions use t only to bring particles forward),
+ * stopping after the first that changes the total rate; returns how many.
+ * One instance per engine shape, chosen when the engine is built. */
+
+/* The only process, in its own loop. */
+static uint64_t fire_some_alone(const sim_engine *e, sim_workspace *ws, double *rates,
+                                double *total, uint64_t max)
+{
+    const uint64_t fired = e->fire_many(&e->events[0], &ws->run, ws->states, max, &rates[0]);
+    *total = rates[0];
+    return fired;
+}
+
+/* The only process, one candidate per call. */
+static uint64_t fire_some_one(const sim_engine *e, sim_workspace *ws, double *rates,
+                              double *total, uint64_t max)
+{
+    const double before = *total;
+    for (uint64_t c = 1; c <= max; c++) {
+        rates[0] = e->fire[0](&e->events[0], &ws->run, ws->states, 0.0);
+        if (rates[0] != before) {
+            *total = rates[0];
+            return c;
+        }
+    }
+    return max;
+}
+
+/* Several processes: each candidate belongs to process k with probability
+ * rates[k] / total (the superposition of independent Poisson processes). */
+static uint64_t fire_some_mixed(const sim_engine *e, sim_workspace *ws, double *rates,
+                                double *total, uint64_t max)
+{
+    const double before = *total;
+    for (uint64_t c = 1; c <= max; c++) {
+        const size_t k = pick_event(e, ws->run.rng, rates, before);
+        rates[k] = e->fire[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], 0.0);
+        const double after = update_rates(e, ws, rates, k);
+        if (after != before) {
+            *total = after;
+            return c;
+        }
+    }
+    return max;
+}
+
+/* The exact jump scheme without a lazy flow: Poisson numbers of candidates
+ * per span of constant rate, and the time of a candidate only when it changes
+ * the rate (the header comment). */
+static void run_jump_counted(const sim_engine *e, sim_workspace *ws, double *obs,
+                             size_t *samples)
+{
+    const sim_scene *scene = &e->scene;
+    gsl_rng *rng = ws->run.rng;
+    const double interval = sim_scene_output_time(scene, 1);   /* between resets */
+    double rates[MAX_EVENTS] = {0};
+    double total = reset_events(e, ws, rates, interval);
+    uint64_t until_rebound = e->rebound_every;
+    double t = 0.0;
+    for (size_t m = 1; m < scene->outputs; m++) {
+        const double t_out = sim_scene_output_time(scene, m);
+        while (t < t_out && total > 0.0) {
+            /* the candidates of (t, end] at the constant rate `total` */
+            double end = t_out, mean = total * (t_out - t);
+            if (mean > POISSON_MAX) {
+                end = fmin(t_out, t + POISSON_MAX / total);
+                mean = POISSON_MAX;
+            }
+            const uint64_t count = gsl_ran_poisson(rng, mean);
+            uint64_t done = 0;
+            int changed = 0;
+            while (done < count && !changed) {
+                const uint64_t max = count - done < until_rebound ? count - done : until_rebound;
+                const double before = total;
+                const uint64_t fired = e->fire_some(e, ws, rates, &total, max);
+                done += fired;
+                until_rebound -= fired;
+                changed = total != before || until_rebound == 0;
+            }
+            if (!changed) {
+                t = end;
+                continue;
+            }
+            /* candidate `done` of `count` is the done-th of `count` uniform points */
+            t += (end - t) * gsl_ran_beta(rng, (double)done, (double)(count - done + 1));
+            if (until_rebound == 0) {
+                total = rebound(e, ws, rates);
+                until_rebound = e->rebound_every;
+            }
+        }
+        t = t_out;
+        observe_at(e, ws, m, obs, samples);
+        if (m + 1 < scene->outputs)
+            total = reset_events(e, ws, rates, interval);
+        until_rebound = e->rebound_every;
     }
 }
 
@@ -446,12 +648,12 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
     const sim_scene *scene = &e->scene;
     const double interval = sim_scene_output_time(scene, 1);
     double rates[MAX_EVENTS] = {0};
-    memset(ws->states, 0, e->state_bytes);   /* the stages' remainders start at 0 */
     reset_events(e, ws, rates, interval);
     for (size_t m = 1; m < scene->outputs; m++) {
         e->interval(e, ws);
         observe_at(e, ws, m, obs, samples);
-        reset_events(e, ws, rates, interval);
+        if (m + 1 < scene->outputs)
+            reset_events(e, ws, rates, interval);
     }
 }
 
@@ -473,10 +675,15 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
     sim_particles_sample(&run->p, scene, rng);
     observe_at(e, ws, 0, obs, &samples);
 
+    /* the processes' per-run states start at 0 (the stages' remainders, the
+     * index streams, which their first reset fills) */
+    memset(ws->states, 0, e->state_bytes);
     if (scene->scheme == SIM_SCHEME_TIMESTEP)
         run_timestep(e, ws, obs, &samples);
+    else if (e->lazy_flow)
+        run_jump_timed(e, ws, obs, &samples);
     else
-        run_jump(e, ws, obs, &samples);
+        run_jump_counted(e, ws, obs, &samples);
 
     if (e->nsteady > 0) {   /* the time averages follow the rows */
         double *avg = obs + scene->outputs * SIM_OBS_COUNT;

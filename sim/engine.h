@@ -51,6 +51,10 @@ const char *sim_engine_effects(const sim_engine *engine);
  * [steady] section. */
 size_t sim_engine_steady_count(const sim_engine *engine);
 
+/* Bytes one workspace (sim_workspace_create) holds: its n particles and the
+ * effects' state; for refusing runs that cannot fit before allocating. */
+size_t sim_engine_workspace_bytes(const sim_engine *engine);
+
 /* The time-step scheme's step h (the largest h <= scene.dt dividing the
  * output interval); 0 for the jump scheme. */
 double sim_engine_step(const sim_engine *engine);

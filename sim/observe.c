@@ -57,3 +57,23 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT])
     out[SIM_OBS_A2] = a2;
     out[SIM_OBS_A3] = -w * c6 / (105.0 * theta * theta * theta) + 1.0 + 3.0 * a2;
 }
+
+void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
+                         double out[SIM_OBS_COUNT])
+{
+    double now[SIM_OBS_COUNT];
+    sim_observe(p, mass, now);
+    const size_t n = p->n;
+    double owed = 0.0;
+    for (size_t i = 0; i < n; i++)
+        owed += t - p->stamp[i];
+    const double S = spread * owed / (double)n;
+    const double centred = mass * S * (1.0 - 1.0 / (double)n);
+    now[SIM_OBS_T_RAW] += mass * S;
+    now[SIM_OBS_T] += centred;
+    now[SIM_OBS_PXX] += centred;
+    now[SIM_OBS_PYY] += centred;
+    now[SIM_OBS_PZZ] += centred;
+    for (int k = SIM_OBS_T; k <= SIM_OBS_PYZ; k++)
+        out[k] = now[k];
+}

@@ -33,4 +33,18 @@ const char *sim_observable_name(sim_observable k);
 /* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_COUNT]. */
 void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT]);
 
+/* The observables at most quadratic in the velocities, T .. Pyz (SIM_OBS_T
+ * to SIM_OBS_PYZ), of a lazily flowing system at time t, as exact conditional
+ * expectations over the increments it still owes (issue 4, variance-reduced
+ * observation): particle i owes a Gaussian increment of mean 0 and variance
+ * s_i = spread (t - stamp_i) per component, independent of everything else,
+ * so with S = (1/n) Σ s_i
+ *   E T_raw = T_raw(v) + m S,   E u = u(v),
+ *   E P_kk  = P_kk(v) + m S (1 - 1/n),   E P_kl = P_kl(v) (k != l),
+ *   E T     = T(v) + m S (1 - 1/n)
+ * (the 1/n: the centring velocity V owes S/n per component).  Writes only
+ * those entries of out; p is not changed. */
+void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
+                         double out[SIM_OBS_COUNT]);
+
 #endif

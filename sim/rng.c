@@ -2,6 +2,13 @@
 
 #include <string.h>
 
+void sim_rng_refill(sim_rng_state *s)
+{
+    s->block = philox4x64(s->ctr, s->key);
+    s->ctr.v[0]++;
+    s->next = 0;
+}
+
 static void philox_set(void *vstate, unsigned long seed)
 {
     sim_rng_state *s = vstate;

@@ -23,6 +23,18 @@ typedef enum sim_splitting {
     SIM_SPLIT_STRANG   /* free flight h/2, collisions h, free flight h/2 */
 } sim_splitting;
 
+/* How the jump scheme observes a system whose white-noise heating is applied
+ * lazily (issue 4): `sampled` brings every particle to the output time,
+ * drawing its pending Brownian increment, and observes it (paper A);
+ * `conditional` records T, T_raw, u and P as their exact expectations over
+ * those increments (sim_observe_pending), then brings the particles as
+ * before, so the trajectories are the same and only those estimators lose
+ * the increments' noise.  q, a2, a3 are always observed on the brought system. */
+typedef enum sim_observation {
+    SIM_OBSERVE_SAMPLED,
+    SIM_OBSERVE_CONDITIONAL
+} sim_observation;
+
 typedef enum sim_initial {
     SIM_INITIAL_MAXWELLIAN,
     SIM_INITIAL_TWO_MAXWELLIANS,  /* paper B Eq. (35) */
@@ -76,6 +88,8 @@ typedef struct sim_scene {
     double dt;          /* timestep only: the largest step; the engine uses the largest
                            h <= dt that divides the interval between output times */
     sim_splitting splitting;   /* timestep only (default euler) */
+    sim_observation observation; /* how output times observe a lazy flow (default
+                                    sampled) */
     double t_end;
     size_t outputs;     /* equally spaced output times, 0 and t_end included (>= 2) */
     uint64_t seed;

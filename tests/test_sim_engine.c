@@ -6,6 +6,12 @@
  * - momentum conservation and elastic energy conservation per ensemble;
  * - a scene without heating draws no Gaussian numbers after the initial state;
  * - the same numbers for 1 and 2 threads;
+ * - hard spheres (the two-stage majorant of effect_collisions.c): the number
+ *   of collisions against the exact rate in each loop the engine can build
+ *   (its own loop, one candidate per call with a lazy flow, and mixed with a
+ *   background), and for two particles, whose rate |g|/2 never changes,
+ *   through the Poisson counts and beta-distributed times of the loop without
+ *   a lazy flow;
  * - paper B's background (SPEC §4): collision counts against the exact rates
  *   4 pi C1 rho_B (Maxwell) and E1(v) (hard spheres, Algorithm 2), the
  *   equilibrium with the background preserved, and for Maxwell kernels the
@@ -194,6 +200,101 @@ static void test_thread_count_independence(void **state)
     assert_int_equal(a.counts.candidates, b.counts.candidates);
     sim_ensemble_result_free(&a);
     sim_ensemble_result_free(&b);
+}
+
+/* Elastic hard spheres from a standard Maxwellian keep the product
+ * Maxwellian (it is invariant), so the expected number of binary collisions
+ * is 2 pi gamma C (n - 1) E|g| t per ensemble, E|g| = 4/sqrt(pi) (SPEC §3,
+ * the rate 4 pi gamma C |g| / n per pair), in each engine shape:
+ *  0: collisions only (the process's own batched loop, Poisson counts),
+ *  1: with white-noise heating of strength 1e-12 (the lazy flow: one
+ *     candidate per call with its waiting time; T moves by 1e-11),
+ *  2: with a hard-sphere background of vanishing mass (m_B = 1e-9: the
+ *     grains keep their velocities to 1e-8; candidates of two processes).
+ * The standard deviation of the count is Poisson's and that of the runs'
+ * temperatures: E|g| ~ sqrt(T), Var T / T^2 = 2 / (3 n) per run, so the
+ * relative variance of the expectation is 1 / (6 n N).  The wrong answer, 5%
+ * fewer collisions, must fail the same z-test. */
+static void test_hard_sphere_rate_paths(void **state)
+{
+    (void)state;
+    const size_t n = 300, N = 100;
+    const double t_end = 4.0;
+    const double expected = 2.0 * M_PI / (4.0 * M_PI) * (double)(n - 1) * 4.0 / sqrt(M_PI)
+                            * t_end * (double)N;
+    const char *names[] = {"collisions only", "with a lazy flow", "with a background"};
+    for (int shape = 0; shape < 3; shape++) {
+        sim_scene s = heated_maxwell_scene(n, N);
+        s.t_end = t_end;
+        s.outputs = 5;
+        s.collisions.kernel = SIM_KERNEL_HARD_SPHERES;
+        s.collisions.exponent = 1.0;
+        s.collisions.rate = 1.0;
+        s.collisions.restitution = 1.0;
+        s.heating.present = shape == 1;
+        s.heating.strength = 1e-12;
+        if (shape == 2) {
+            s.background.present = 1;
+            s.background.kernel = SIM_KERNEL_HARD_SPHERES;
+            s.background.mass = 1e-9;
+            s.background.temperature = 1e-9;
+        }
+        sim_ensemble_result r;
+        run(&s, &r);
+        const double count = (double)r.counts.collisions;
+        const double sigma = sqrt(expected + expected * expected / (6.0 * (double)(n * N)));
+        const double z = (count - expected) / sigma, z_wrong = (count - 0.95 * expected) / sigma;
+        print_message("hard spheres %s: %.0f collisions, expected %.0f (z = %.2f), %llu "
+                      "candidates, %llu background\n", names[shape], count, expected, z,
+                      (unsigned long long)r.counts.candidates,
+                      (unsigned long long)r.counts.background);
+        assert_true(fabs(z) < ZMAX);
+        assert_true(fabs(z_wrong) > ZMAX);
+        assert_int_equal(r.counts.violations, 0);
+        if (shape == 2)
+            assert_true(r.counts.background > 10000);
+        sim_ensemble_result_free(&r);
+    }
+}
+
+/* Two elastic hard spheres: |g| never changes, so each run's number of
+ * collisions is Poisson with mean 2 pi gamma C |g| t_end = |g| t_end / 2
+ * (C = 1/(4 pi)), |g| = sqrt(12 T) from the run's first row (T = |g|^2/12
+ * for n = 2, m = 1).  Without a lazy flow the engine draws Poisson numbers
+ * of candidates and recomputes the bound every 4 n = 8 candidates, each time
+ * placing the candidate at a beta-distributed time of its span: a wrong time
+ * there would bias the count.  The wrong answer (2% off) fails. */
+static void test_two_particles_counted(void **state)
+{
+    (void)state;
+    sim_scene s = heated_maxwell_scene(2, 1);
+    s.heating.present = 0;
+    s.collisions.kernel = SIM_KERNEL_HARD_SPHERES;
+    s.collisions.exponent = 1.0;
+    s.collisions.rate = 1.0;
+    s.collisions.restitution = 1.0;
+    s.t_end = 20.0;
+    s.outputs = 3;
+    sim_engine *e = NULL;
+    sim_workspace *ws = NULL;
+    assert_int_equal(sim_engine_create(&s, &e, NULL), SIM_OK);
+    assert_int_equal(sim_workspace_create(e, &ws, NULL), SIM_OK);
+    sim_counts c = {0};
+    double mean = 0.0;
+    for (uint64_t j = 0; j < 4000; j++) {
+        double obs[3 * SIM_OBS_COUNT];
+        sim_engine_run(e, ws, j, obs, &c);
+        assert_close(obs[2 * SIM_OBS_COUNT + SIM_OBS_T], obs[SIM_OBS_T], 1e-12, 0.0);
+        mean += sqrt(12.0 * obs[SIM_OBS_T]) * s.t_end / 2.0;
+    }
+    const double count = (double)c.collisions, z = (count - mean) / sqrt(mean);
+    print_message("two particles: %.0f collisions, expected %.0f (z = %.2f), %llu candidates\n",
+                  count, mean, z, (unsigned long long)c.candidates);
+    assert_true(fabs(z) < ZMAX);
+    assert_true(fabs(count - 0.98 * mean) / sqrt(mean) > ZMAX);
+    assert_int_equal(c.violations, 0);
+    sim_workspace_free(ws);
+    sim_engine_free(e);
 }
 
 /* A scene with only a background (SPEC §4): grains of mass 1 at velocity v0
@@ -436,6 +537,8 @@ int main(void)
         cmocka_unit_test(test_conservation),
         cmocka_unit_test(test_no_heating_draws_no_gaussians),
         cmocka_unit_test(test_thread_count_independence),
+        cmocka_unit_test(test_hard_sphere_rate_paths),
+        cmocka_unit_test(test_two_particles_counted),
         cmocka_unit_test(test_background_rates),
         cmocka_unit_test(test_background_hs_equilibrium),
         cmocka_unit_test(test_background_maxwell_exact),

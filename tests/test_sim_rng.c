@@ -1,11 +1,14 @@
 /* Random streams and samplers: z-tests with fixed seeds (bound 4 sigma, so a
- * wrong sampler fails and a right one passes for these seeds). */
+ * wrong sampler fails and a right one passes for these seeds), chi-square
+ * tests against their 0.999 quantiles; each kind of test is also shown a
+ * wrong sampler (or a wrong expectation) and must fail it. */
 #include "test_util.h"
 
 #include <stdint.h>
 #include <string.h>
 
 #include "collide.h"
+#include "particles.h"
 #include "rng.h"
 
 #define SAMPLES 400000
@@ -115,6 +118,168 @@ static void test_index(void **state)
     gsl_rng_free(r);
 }
 
+/* Pearson's chi-square of counts against equal expectations. */
+static double chi2_equal(const double *count, int bins, double total)
+{
+    double chi2 = 0.0, expected = total / bins;
+    for (int k = 0; k < bins; k++)
+        chi2 += (count[k] - expected) * (count[k] - expected) / expected;
+    return chi2;
+}
+
+/* sim_rng_index32 with n = 3 2^30, where Lemire's method rejects a quarter of
+ * the words: without the rejection, index = floor(3 x / 4) hits indices
+ * 0 mod 3 twice as often as the others (1/2 instead of 1/3), which the
+ * chi-square of index mod 3 must show; with it they are uniform.  The spare
+ * half is uniform (8 bins) and independent of the index (its mean is the same
+ * for even and odd indices). */
+static void test_index32(void **state)
+{
+    (void)state;
+    gsl_rng *r = stream(2385, 4);
+    const uint32_t n = 3u << 30;
+    double mod3[3] = {0}, naive3[3] = {0}, spare_bins[8] = {0}, sum[2] = {0}, cnt[2] = {0};
+    for (int i = 0; i < SAMPLES; i++) {
+        uint32_t spare, k = sim_rng_index32(r, n, &spare);
+        assert_true(k < n);
+        mod3[k % 3] += 1.0;
+        spare_bins[spare >> 29] += 1.0;
+        sum[k & 1] += spare * 0x1p-32;
+        cnt[k & 1] += 1.0;
+        /* the wrong sampler: the multiply without the rejection */
+        uint32_t naive = (uint32_t)(((uint64_t)(uint32_t)sim_rng_u64(r) * n) >> 32);
+        naive3[naive % 3] += 1.0;
+    }
+    double chi2 = chi2_equal(mod3, 3, SAMPLES), wrong = chi2_equal(naive3, 3, SAMPLES);
+    print_message("index mod 3: chi^2 = %.2f, without rejection %.0f (2 dof)\n", chi2, wrong);
+    assert_true(chi2 < 13.82);    /* 0.999 quantile, 2 degrees of freedom */
+    assert_true(wrong > 13.82);
+    assert_true(chi2_equal(spare_bins, 8, SAMPLES) < 24.32);   /* 7 dof */
+    assert_mean_z(sum[0], 0.5, 1.0 / 12.0, cnt[0]);
+    assert_mean_z(sum[1], 0.5, 1.0 / 12.0, cnt[1]);
+    /* n = 1 and n = 2^32 - 1 stay in range */
+    uint32_t spare;
+    assert_int_equal(sim_rng_index32(r, 1, &spare), 0);
+    assert_true(sim_rng_index32(r, UINT32_MAX, &spare) < UINT32_MAX);
+    gsl_rng_free(r);
+}
+
+/* Binomial z-score of `hits` successes in `trials` with probability p. */
+static double binomial_z(double hits, double trials, double p)
+{
+    return (hits - trials * p) / sqrt(trials * p * (1.0 - p));
+}
+
+/* sim_rng_accept32 and sim_rng_accept32_ratio succeed with probability x/2^32
+ * and num/den: z-tests at p = 0.3172 and at p = 0.731 within one step of the
+ * 32-bit grid (u = 5, x = 5.731: only the refinement decides), where the
+ * comparison of u alone (u < x) would always succeed; x <= u never
+ * succeeds, x >= u + 1 always; den = 0 never. */
+static void test_accept32(void **state)
+{
+    (void)state;
+    gsl_rng *r = stream(2385, 5);
+    const double p = 0.3172;
+    double hits = 0, hits_ratio = 0, tie = 0, tie_ratio = 0;
+    for (int i = 0; i < SAMPLES; i++) {
+        const uint32_t u = (uint32_t)sim_rng_u64(r), v = (uint32_t)sim_rng_u64(r);
+        hits += sim_rng_accept32(r, u, p * 0x1p32);
+        hits_ratio += sim_rng_accept32_ratio(r, v, 2.0 * p, 2.0);
+        tie += sim_rng_accept32(r, 5, 5.731);
+        tie_ratio += sim_rng_accept32_ratio(r, 5, 5.731 * 0x1p-32 * 3.0, 3.0);
+    }
+    double z[4] = {binomial_z(hits, SAMPLES, p), binomial_z(hits_ratio, SAMPLES, p),
+                   binomial_z(tie, SAMPLES, 0.731), binomial_z(tie_ratio, SAMPLES, 0.731)};
+    print_message("accept32 z: %.2f %.2f, undecided by 32 bits: %.2f %.2f\n", z[0], z[1], z[2],
+                  z[3]);
+    for (int k = 0; k < 4; k++)
+        assert_true(fabs(z[k]) < ZMAX);
+    /* the wrong answer: deciding by u < x alone succeeds every time */
+    assert_true(fabs(binomial_z(SAMPLES, SAMPLES, 0.731)) > ZMAX);
+    for (int i = 0; i < 1000; i++) {
+        assert_false(sim_rng_accept32(r, 7, 7.0));
+        assert_true(sim_rng_accept32(r, 7, 8.0));
+        assert_false(sim_rng_accept32(r, 0, 0.0));
+        assert_true(sim_rng_accept32(r, UINT32_MAX, 0x1p32));
+        assert_false(sim_rng_accept32(r, 0, NAN));
+        assert_false(sim_rng_accept32_ratio(r, 0, 0.0, 0.0));
+        assert_true(sim_rng_accept32_ratio(r, UINT32_MAX, 1.0, 1.0));
+    }
+    gsl_rng_free(r);
+}
+
+/* Marsaglia's directions: e_z uniform on [-1, 1] and the azimuth uniform
+ * (chi-square, 20 bins each, 19 dof: 0.999 quantile 43.82); the same tests
+ * reject directions that are uniform in the cube's angles (x, y, z uniform
+ * on [-1, 1], normalised: not uniform on the sphere). */
+static void test_unit_sphere_uniform(void **state)
+{
+    (void)state;
+    gsl_rng *r = stream(2385, 6);
+    double z_bins[20] = {0}, phi_bins[20] = {0}, wrong_bins[20] = {0};
+    for (int i = 0; i < SAMPLES; i++) {
+        double e[3];
+        sim_rng_unit_sphere(r, e);
+        z_bins[(int)fmin(19.0, 10.0 * (e[2] + 1.0))] += 1.0;
+        phi_bins[(int)fmin(19.0, 20.0 * (atan2(e[1], e[0]) + M_PI) / (2.0 * M_PI))] += 1.0;
+        double c[3];
+        for (int k = 0; k < 3; k++)
+            c[k] = 2.0 * sim_rng_uniform(r) - 1.0;
+        double norm = sim_norm3(c);
+        wrong_bins[(int)fmin(19.0, 10.0 * (c[2] / norm + 1.0))] += 1.0;
+    }
+    double chi_z = chi2_equal(z_bins, 20, SAMPLES), chi_phi = chi2_equal(phi_bins, 20, SAMPLES);
+    double wrong = chi2_equal(wrong_bins, 20, SAMPLES);
+    print_message("unit sphere: chi^2 e_z %.1f, azimuth %.1f; cube directions e_z %.0f\n", chi_z,
+                  chi_phi, wrong);
+    assert_true(chi_z < 43.82);
+    assert_true(chi_phi < 43.82);
+    assert_true(wrong > 43.82);
+    gsl_rng_free(r);
+}
+
+/* The index streams of particles.h: sim_pick's entries and sim_batch's are
+ * uniform on 0..n-1 and consecutive entries independent (chi-square over the
+ * 7 x 7 pairs, 48 dof: 0.999 quantile 84.04), including the entries used to
+ * redraw j == i.  The wrong answer: pairs drawn as j uniform over the others
+ * (never equal) fail the independence test. */
+static void test_index_streams(void **state)
+{
+    (void)state;
+    gsl_rng *r = stream(2385, 7);
+    sim_particles p;
+    assert_int_equal(sim_particles_alloc(&p, 7, 0, NULL), SIM_OK);
+    sim_pick pick;
+    sim_batch batch;
+    sim_pick_start(&pick, &p, r);
+    sim_batch_start(&batch, &p, r);
+    double pairs[49] = {0}, batch_pairs[49] = {0}, distinct[49] = {0};
+    uint32_t spare, prev = sim_pick_next(&pick, &p, r, &spare, 0), prev_b = batch.index[0];
+    batch.pos = 1;
+    for (int i = 0; i < SAMPLES; i++) {
+        uint32_t k = sim_pick_next(&pick, &p, r, &spare, 0);
+        assert_true(k < 7);
+        pairs[7 * prev + k] += 1.0;
+        prev = k;
+        if (batch.pos == SIM_BATCH)
+            sim_batch_advance(&batch, &p, r);
+        uint32_t b = batch.index[batch.pos++];
+        batch_pairs[7 * prev_b + b] += 1.0;
+        prev_b = b;
+        uint32_t j = (uint32_t)sim_rng_index(r, 6);
+        distinct[7 * k + j + (j >= k)] += 1.0;
+    }
+    double chi = chi2_equal(pairs, 49, SAMPLES), chi_b = chi2_equal(batch_pairs, 49, SAMPLES);
+    double wrong = chi2_equal(distinct, 49, SAMPLES);
+    print_message("index pairs: chi^2 %.1f (pick), %.1f (batch); distinct pairs %.0f\n", chi,
+                  chi_b, wrong);
+    assert_true(chi < 84.04);
+    assert_true(chi_b < 84.04);
+    assert_true(wrong > 84.04);
+    sim_particles_free(&p);
+    gsl_rng_free(r);
+}
+
 /* A stream is fixed by (seed, id); other ids and seeds give other numbers. */
 static void test_streams(void **state)
 {
@@ -144,7 +309,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_uniform),     cmocka_unit_test(test_normal),
         cmocka_unit_test(test_unit_sphere), cmocka_unit_test(test_index),
-        cmocka_unit_test(test_streams),
+        cmocka_unit_test(test_streams),     cmocka_unit_test(test_index32),
+        cmocka_unit_test(test_accept32),    cmocka_unit_test(test_unit_sphere_uniform),
+        cmocka_unit_test(test_index_streams),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

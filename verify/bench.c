@@ -1,6 +1,8 @@
 #include "bench.h"
 
 #include <math.h>
+#include <omp.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
@@ -8,14 +10,30 @@
 
 #include "collide.h"
 #include "engine.h"
+#include "ensemble.h"
 #include "particles.h"
 #include "rng.h"
 #include "scene_ini.h"
+
+/* Recompute the floor's velocity bound every FLOOR_SWEEPS n candidates, as the
+ * engine does (REBOUND_SWEEPS in sim/engine.c): the same number of first-stage
+ * rejections per collision in both loops. */
+#define FLOOR_SWEEPS 4
+
+/* paper A Ex 3 with this many ensembles for the thread-scaling rows (issue 4) */
+#define ENSEMBLES_FULL 10000
 
 static double thread_cpu_seconds(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double wall_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -28,7 +46,8 @@ static double peak_rss_mb(void)
 
 /* Elastic hard spheres in one cell from two counter-streaming Maxwellians
  * (drifts -+2 along x, T = 1), C = 1/(4 pi): about 1.7 n accepted collisions
- * per unit time; t_end is set for `collisions` of them. */
+ * per unit time ((n - 1) E|g| / 2 with E|g| = 3.45 once relaxed to T = 7/3);
+ * t_end is set for `collisions` of them. */
 static sim_scene hs_relax_scene(size_t n, double collisions)
 {
     sim_scene s;
@@ -51,7 +70,12 @@ static sim_scene hs_relax_scene(size_t n, double collisions)
 }
 
 typedef struct bench_row {
-    double events, accepted, cpu, bytes_per_particle;
+    double events;     /* what the rate counts */
+    double candidates; /* candidate events (the acceptance's denominator) */
+    double accepted;   /* accepted collisions (binary and background) */
+    double cpu, wall;
+    double bytes_per_particle;
+    int threads;
 } bench_row;
 
 /* Run `runs` ensembles of the scene one after another on this thread. */
@@ -66,13 +90,16 @@ static sim_status run_engine(const sim_scene *s, size_t runs, bench_row *row, si
         status = sim_workspace_create(e, &ws, err);
     if (status == SIM_OK) {
         sim_counts counts = {0};
-        double start = thread_cpu_seconds();
+        double start = thread_cpu_seconds(), wall = wall_seconds();
         for (size_t k = 0; k < runs; k++)
             sim_engine_run(e, ws, k, obs, &counts);
         row->cpu = thread_cpu_seconds() - start;
-        row->events = (double)counts.candidates;
+        row->wall = wall_seconds() - wall;
+        row->candidates = (double)counts.candidates;
         row->accepted = (double)(counts.collisions + counts.background);
-        row->bytes_per_particle = sizeof(double[3]) + (s->heating.present ? sizeof(double) : 0);
+        row->events = row->candidates;
+        row->bytes_per_particle = (double)sim_engine_workspace_bytes(e) / (double)s->particles.n;
+        row->threads = 1;
     }
     sim_workspace_free(ws);
     sim_engine_free(e);
@@ -80,9 +107,54 @@ static sim_status run_engine(const sim_scene *s, size_t runs, bench_row *row, si
     return status;
 }
 
-/* The floor: `candidates` draws of the bare hard-sphere kernel on the same
- * initial state, U_max = 2 max |v_i - mean| fixed. */
-static sim_status run_floor(const sim_scene *s, double candidates, bench_row *row,
+static inline double dist2(const double v[3], const double c[3])
+{
+    const double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
+    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+
+/* max |v_i - c| */
+static double radius_of(const sim_particles *p, const double c[3])
+{
+    double r2 = 0.0;
+    for (size_t i = 0; i < p->n; i++) {
+        const double x = dist2(p->v[i], c);
+        r2 = x > r2 ? x : r2;
+    }
+    return sqrt(r2);
+}
+
+/* The floor's first stage for a whole block: bit k set when entry k's
+ * particle is kept, a_k / R (as stage1 in sim/effect_collisions.c). */
+static inline uint32_t floor_stage1(const sim_batch *b, const sim_particles *p,
+                                    const double c[3], double scale, gsl_rng *rng)
+{
+    const double scale2 = scale * scale;
+    uint32_t keep = 0, below = 0;
+    for (unsigned k = 0; k < SIM_BATCH; k++) {
+        const double x2 = dist2(p->v[b->index[k]], c) * scale2;
+        const double u = (double)b->spare[k], u1 = u + 1.0;
+        keep |= (uint32_t)(u1 * u1 <= x2) << k;
+        below |= (uint32_t)(u * u < x2) << k;
+    }
+    for (uint32_t tie = below & ~keep; tie; tie &= tie - 1) {
+        const unsigned k = (unsigned)__builtin_ctz(tie);
+        const double x = sqrt(dist2(p->v[b->index[k]], c)) * scale;
+        keep |= (uint32_t)(sim_rng_uniform(rng) < x - (double)b->spare[k]) << k;
+    }
+    return keep;
+}
+
+/* The floor: `collisions` accepted elastic hard-sphere collisions on the
+ * scene's initial state (stream (seed, 0), as the engine's first ensemble),
+ * with the engine's kernel (sim/effect_collisions.c, batched_hard_spheres):
+ * first particles from blocks of the index stream, kept with a_i / R decided
+ * a block at a time; j != i from the index stream, accepted with
+ * |g| / (a_i + a_j); Marsaglia's unit vector; the collision rule; the bound R
+ * raised by each collision and recomputed every FLOOR_SWEEPS n candidates,
+ * centre c = the initial mean velocity (conserved).  Without candidate
+ * times, Poisson counts, rates, counters, violation checks or output times. */
+static sim_status run_floor(const sim_scene *s, double collisions, bench_row *row,
                             sim_error *err)
 {
     sim_particles p;
@@ -97,59 +169,120 @@ static sim_status run_floor(const sim_scene *s, double candidates, bench_row *ro
     sim_rng_set_stream(rng, s->seed, 0);
     sim_particles_sample(&p, s, rng);
     const size_t n = p.n;
-    double r = 0.0;
+    double c[3] = {0, 0, 0};
     for (size_t i = 0; i < n; i++)
-        r = fmax(r, sim_norm3(p.v[i]));   /* the beams' mean is 0 */
-    const double umax = 2.0 * r;
-    const uint64_t draws = (uint64_t)candidates;
-    uint64_t accepted = 0;
-    double start = thread_cpu_seconds();
-    for (uint64_t k = 0; k < draws; k++) {
-        size_t i = (size_t)sim_rng_index(rng, n);
-        size_t j = (size_t)sim_rng_index(rng, n - 1);
-        j += (j >= i);
-        double *vi = p.v[i], *vj = p.v[j];
-        double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
-        double gnorm = sim_norm3(g);
-        if (sim_rng_uniform(rng) * umax >= gnorm)
+        for (int k = 0; k < 3; k++)
+            c[k] += p.v[i][k];
+    for (int k = 0; k < 3; k++)
+        c[k] /= (double)n;
+    double radius = radius_of(&p, c), scale = 0x1p32 / radius;
+    sim_pick pick;
+    sim_batch batch;
+    sim_pick_start(&pick, &p, rng);
+    sim_batch_start(&batch, &p, rng);
+
+    const uint64_t target = (uint64_t)collisions, sweep = FLOOR_SWEEPS * (uint64_t)n;
+    uint64_t accepted = 0, tries = 0, next_sweep = sweep;
+    double start = thread_cpu_seconds(), wall = wall_seconds();
+    uint32_t keep = floor_stage1(&batch, &p, c, scale, rng);
+    while (accepted < target) {
+        const uint32_t later = keep >> batch.pos << batch.pos;
+        if (later == 0) {   /* the rest of the block is rejected */
+            tries += SIM_BATCH - batch.pos;
+            sim_batch_advance(&batch, &p, rng);
+            keep = floor_stage1(&batch, &p, c, scale, rng);
+            continue;
+        }
+        const unsigned k = (unsigned)__builtin_ctz(later);
+        tries += k + 1 - batch.pos;
+        batch.pos = k + 1;
+        const uint32_t i = batch.index[k];
+        double *vi = p.v[i];
+        const double ai = sqrt(dist2(vi, c));
+        uint32_t uj, j;
+        do
+            j = sim_pick_next(&pick, &p, rng, &uj, 0);
+        while (j == i);
+        double *vj = p.v[j];
+        const double aj = sqrt(dist2(vj, c));
+        const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+        const double gnorm = sim_norm3(g);
+        if (!sim_rng_accept32_ratio(rng, uj, gnorm, ai + aj))
             continue;
         double e[3];
         sim_rng_unit_sphere(rng, e);
         sim_collide_inelastic(vi, vj, 1.0, gnorm, e);
         accepted++;
+        const double ri = dist2(vi, c), rj = dist2(vj, c), r2 = ri > rj ? ri : rj;
+        int rescan = 0;
+        if (r2 > radius * radius) {
+            radius = sqrt(r2);
+            rescan = 1;
+        }
+        if (tries >= next_sweep) {
+            radius = radius_of(&p, c);
+            next_sweep = tries + sweep;
+            rescan = 1;
+        }
+        for (unsigned q = k + 1; q < SIM_BATCH; q++)   /* their particles moved */
+            rescan |= batch.index[q] == i || batch.index[q] == j;
+        if (rescan) {
+            scale = 0x1p32 / radius;
+            keep = floor_stage1(&batch, &p, c, scale, rng);
+        }
     }
     row->cpu = thread_cpu_seconds() - start;
+    row->wall = wall_seconds() - wall;
     row->events = (double)accepted;
     row->accepted = (double)accepted;
-    row->bytes_per_particle = sizeof(double[3]);
+    row->candidates = (double)tries;
+    row->bytes_per_particle = (double)sim_particles_bytes_per_particle(0);
+    row->threads = 1;
     sim_particles_free(&p);
     gsl_rng_free(rng);
     return SIM_OK;
 }
 
+/* One table row; floor_rate <= 0 and speedup <= 0 leave their cells empty.
+ * Single-thread rows are rated per CPU second, ensemble rows per wall second. */
 static void add_row(vfy_table *t, const char *name, size_t n, const bench_row *row,
-                    double floor_rate, double acceptance)
+                    double floor_rate, double speedup)
 {
-    double rate = row->events / row->cpu;
+    const double rate = row->events / (row->threads > 1 ? row->wall : row->cpu);
     vfy_table_cell(t, "%s", name);
     vfy_table_cell(t, "%zu", n);
+    vfy_table_cell(t, "%d", row->threads);
     vfy_table_cell(t, "%.0f", row->events);
     vfy_table_cell(t, "%.3f", row->cpu);
+    vfy_table_cell(t, "%.3f", row->wall);
     vfy_table_cell(t, "%.4g", rate);
     vfy_table_cell(t, "%.1f", 1e9 / rate);
     vfy_table_number(t, floor_rate > 0, "%.3f", rate / floor_rate);
-    vfy_table_cell(t, "%.3f", acceptance);
-    vfy_table_cell(t, "%.0f", row->bytes_per_particle);
+    vfy_table_number(t, row->candidates > 0, "%.3f", row->accepted / row->candidates);
+    vfy_table_number(t, speedup > 0, "%.3f", speedup);
+    vfy_table_cell(t, "%.1f", row->bytes_per_particle);
     vfy_table_cell(t, "%.1f", peak_rss_mb());
 }
 
 static void say(const vfy_bench_options *o, const char *name, size_t n, const bench_row *row)
 {
     if (o->progress) {
-        fprintf(o->progress, "   %-8s n = %-9zu %.4g events/s (%.1f s CPU)\n", name, n,
-                row->events / row->cpu, row->cpu);
+        double load[1] = {0};
+        getloadavg(load, 1);
+        fprintf(o->progress, "   %-17s n = %-9zu %d thread%s %.4g events/s (%.1f s CPU, %.1f s "
+                "wall, load average %.2f)\n", name, n, row->threads, row->threads > 1 ? "s" : "",
+                row->events / (row->threads > 1 ? row->wall : row->cpu), row->cpu, row->wall,
+                load[0]);
         fflush(o->progress);
     }
+}
+
+static sim_status load_scene(const vfy_bench_options *o, const char *name, sim_scene *s,
+                             char *msg, size_t msglen)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, name);
+    return vfy_scene_load(path, NULL, 0, s, msg, msglen);
 }
 
 /* A paper scene from the scene directory, n particles, run for about
@@ -157,10 +290,8 @@ static void say(const vfy_bench_options *o, const char *name, size_t n, const be
 static sim_status paper_rows(const vfy_bench_options *o, const char *name, size_t n,
                              double floor_rate, vfy_table *t, char *msg, size_t msglen)
 {
-    char path[1024];
     sim_scene s;
-    snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, name);
-    sim_status status = vfy_scene_load(path, NULL, 0, &s, msg, msglen);
+    sim_status status = load_scene(o, name, &s, msg, msglen);
     if (status != SIM_OK)
         return status;
     s.particles.n = n;
@@ -176,7 +307,145 @@ static sim_status paper_rows(const vfy_bench_options *o, const char *name, size_
         return status;
     }
     say(o, name, n, &row);
-    add_row(t, name, n, &row, floor_rate, row.accepted / row.events);
+    add_row(t, name, n, &row, floor_rate, 0.0);
+    return SIM_OK;
+}
+
+/* The engine and the floor on hs-relax at n: rows floor and hs-relax.  For
+ * n <= 1e6 each is run REPEATS times (alternately, each for about a third of
+ * o->seconds) and the fastest run of each is reported: other work on a shared
+ * machine only ever slows a run down. */
+#define REPEATS 3
+static sim_status hs_relax_rows(const vfy_bench_options *o, size_t n, double *floor_rate,
+                                vfy_table *t, char *msg, size_t msglen)
+{
+    const int repeats = n <= 1000000 ? REPEATS : 1;
+    /* enough collisions for the time at ~1e7/s, at least 2 per particle */
+    sim_scene s = hs_relax_scene(n, fmax(2.0 * (double)n, 1e7 * o->seconds / repeats));
+    sim_error err = {{0}, {0}};
+    bench_row engine_row = {0}, floor_row = {0};
+    sim_status status = SIM_OK;
+    for (int r = 0; r < repeats && status == SIM_OK; r++) {
+        bench_row e = {0}, f = {0};
+        status = run_engine(&s, 1, &e, &err);
+        if (status == SIM_OK)
+            status = run_floor(&s, e.accepted, &f, &err);
+        if (status == SIM_OK && (r == 0 || e.cpu < engine_row.cpu))
+            engine_row = e;
+        if (status == SIM_OK && (r == 0 || f.cpu < floor_row.cpu))
+            floor_row = f;
+    }
+    if (status != SIM_OK) {
+        snprintf(msg, msglen, "hs-relax n = %zu: %s", n, err.msg);
+        return status;
+    }
+    *floor_rate = floor_row.events / floor_row.cpu;
+    say(o, "floor", n, &floor_row);
+    add_row(t, "floor", n, &floor_row, *floor_rate, 0.0);
+    engine_row.events = engine_row.accepted;   /* the rate of accepted collisions */
+    say(o, "hs-relax", n, &engine_row);
+    add_row(t, "hs-relax", n, &engine_row, *floor_rate, 0.0);
+    return SIM_OK;
+}
+
+/* (d) The time-step scheme on paper C's gas (ms-white-noise.ini: white noise,
+ * alpha = 0.5, h = 0.05, Strang), one system of n = 2e5 particles without
+ * steady-state observers, for about o->seconds; beside the floor at n. */
+static sim_status timestep_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
+                                size_t msglen)
+{
+    const size_t n = 200000;
+    sim_scene s;
+    sim_status status = load_scene(o, "ms-white-noise", &s, msg, msglen);
+    if (status != SIM_OK)
+        return status;
+    const double interval = s.t_end / (double)(s.outputs - 1);
+    s.particles.n = n;
+    s.particles.ensembles = 1;
+    s.steady.present = 0;
+    s.t_end = 2.0 * interval;
+    s.outputs = 3;
+    sim_error err = {{0}, {0}};
+    bench_row row = {0}, floor_row = {0};
+    status = run_engine(&s, 1, &row, &err);
+    if (status == SIM_OK) {   /* whole output intervals for about o->seconds */
+        double intervals = ceil(2.0 * o->seconds / fmax(row.cpu, 1e-6));
+        intervals = fmin(fmax(intervals, 2.0), 1e5);
+        s.t_end = intervals * interval;
+        s.outputs = (size_t)intervals + 1;
+        status = run_engine(&s, 1, &row, &err);
+    }
+    if (status != SIM_OK) {
+        vfy_scene_format_error(&s, &err, msg, msglen);
+        return status;
+    }
+    sim_scene hs = hs_relax_scene(n, row.accepted);
+    status = run_floor(&hs, row.accepted, &floor_row, &err);
+    if (status != SIM_OK) {
+        snprintf(msg, msglen, "floor n = %zu: %s", n, err.msg);
+        return status;
+    }
+    const double floor_rate = floor_row.events / floor_row.cpu;
+    say(o, "floor", n, &floor_row);
+    add_row(t, "floor", n, &floor_row, floor_rate, 0.0);
+    row.events = row.accepted;
+    say(o, "ms-timestep", n, &row);
+    add_row(t, "ms-timestep", n, &row, floor_rate, 0.0);
+    return SIM_OK;
+}
+
+/* One ensemble run of the engine on `threads` OpenMP threads. */
+static sim_status ensemble_row(const sim_engine *e, int threads, bench_row *row, sim_error *err)
+{
+    sim_ensemble_result res;
+    omp_set_num_threads(threads);
+    sim_status status = sim_ensemble_run(e, NULL, NULL, &res, err);
+    if (status == SIM_OK) {
+        row->candidates = (double)res.counts.candidates;
+        row->accepted = (double)(res.counts.collisions + res.counts.background);
+        row->events = row->candidates;
+        row->cpu = res.cpu_seconds;
+        row->wall = res.wall_seconds;
+        row->threads = res.threads;
+        row->bytes_per_particle = (double)sim_engine_workspace_bytes(e) / (double)res.n;
+    }
+    sim_ensemble_result_free(&res);
+    return status;
+}
+
+/* Thread scaling: paper A Ex 3 (its scene's n) with N = 10 000 ensembles
+ * (N = 10 000 seconds / 2, at least 200, when o->seconds < 1) on 1 and on 2
+ * threads; speed-up = wall time on 1 / wall time on 2. */
+static sim_status thread_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
+                              size_t msglen)
+{
+    sim_scene s;
+    sim_status status = load_scene(o, "grw-ex3", &s, msg, msglen);
+    if (status != SIM_OK)
+        return status;
+    s.particles.ensembles = o->seconds >= 1.0 ? ENSEMBLES_FULL
+                                              : (size_t)fmax(200.0, ENSEMBLES_FULL * o->seconds / 2.0);
+    sim_engine *e = NULL;
+    sim_error err = {{0}, {0}};
+    bench_row one = {0}, two = {0};
+    const int max_threads = omp_get_max_threads();
+    status = sim_engine_create(&s, &e, &err);
+    if (status == SIM_OK)
+        status = ensemble_row(e, 1, &one, &err);
+    if (status == SIM_OK)
+        status = ensemble_row(e, 2, &two, &err);
+    omp_set_num_threads(max_threads);
+    sim_engine_free(e);
+    if (status != SIM_OK) {
+        vfy_scene_format_error(&s, &err, msg, msglen);
+        return status;
+    }
+    char name[64];
+    snprintf(name, sizeof name, "grw-ex3-N%zu", s.particles.ensembles);
+    say(o, name, s.particles.n, &one);
+    add_row(t, name, s.particles.n, &one, 0.0, 0.0);
+    say(o, name, s.particles.n, &two);
+    add_row(t, name, s.particles.n, &two, 0.0, one.wall / two.wall);
     return SIM_OK;
 }
 
@@ -184,33 +453,22 @@ sim_status vfy_bench_run(const vfy_bench_options *o, vfy_table *t, char *msg, si
 {
     static const char *const cols[] = {VFY_BENCH_COLUMNS};
     vfy_table_init(t, sizeof cols / sizeof *cols, cols);
-    sim_error err = {{0}, {0}};
-    double floor_rate_1024 = 0.0;
-    for (size_t n = 1000; n <= o->max_n; n *= 10) {
-        /* hs-relax: enough collisions for o->seconds at ~3e6/s, at least 2 per particle */
-        sim_scene s = hs_relax_scene(n, fmax(2.0 * (double)n, 3e6 * o->seconds));
-        bench_row engine_row = {0}, floor_row = {0};
-        sim_status status = run_engine(&s, 1, &engine_row, &err);
-        if (status == SIM_OK)
-            status = run_floor(&s, engine_row.events, &floor_row, &err);
-        if (status != SIM_OK) {
-            snprintf(msg, msglen, "hs-relax n = %zu: %s", n, err.msg);
-            return status;
-        }
-        double floor_rate = floor_row.events / floor_row.cpu;
+    double floor_rate = 0.0, floor_rate_1000 = 0.0;
+    sim_status status = SIM_OK;
+    for (size_t n = 1000; n <= o->max_n && status == SIM_OK; n *= 10) {
+        status = hs_relax_rows(o, n, &floor_rate, t, msg, msglen);
         if (n == 1000)
-            floor_rate_1024 = floor_rate;
-        const double candidates = engine_row.events;
-        say(o, "floor", n, &floor_row);
-        add_row(t, "floor", n, &floor_row, floor_rate, floor_row.accepted / candidates);
-        engine_row.events = engine_row.accepted;   /* the rate of accepted collisions */
-        say(o, "hs-relax", n, &engine_row);
-        add_row(t, "hs-relax", n, &engine_row, floor_rate, engine_row.accepted / candidates);
+            floor_rate_1000 = floor_rate;
     }
     /* The paper scenes at n = 1024; their floor_ratio is against the floor
      * at n = 1000 (same cache regime). */
-    sim_status status = paper_rows(o, "grw-ex3", 1024, floor_rate_1024, t, msg, msglen);
     if (status == SIM_OK)
-        status = paper_rows(o, "brs-ex4", 1024, floor_rate_1024, t, msg, msglen);
+        status = paper_rows(o, "grw-ex3", 1024, floor_rate_1000, t, msg, msglen);
+    if (status == SIM_OK)
+        status = paper_rows(o, "brs-ex4", 1024, floor_rate_1000, t, msg, msglen);
+    if (status == SIM_OK)
+        status = timestep_rows(o, t, msg, msglen);
+    if (status == SIM_OK)
+        status = thread_rows(o, t, msg, msglen);
     return status;
 }

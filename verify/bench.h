@@ -1,17 +1,29 @@
 /* gdsmc bench: throughput of the engine against a bare floor loop measured
  * in the same run (issue 4, SPEC §9).
  *
- * Cases, each on one core (one ensemble at a time, no OpenMP):
- *   floor     the minimal hard-sphere kernel: two random indices, |g|, the
- *             acceptance test against a fixed U_max, a unit vector and the
- *             collision arithmetic; no waiting times, majorants or counters
+ * Cases, each on one core (one ensemble at a time) unless said otherwise:
+ *   floor     the engine's hard-sphere kernel without its bookkeeping: the
+ *             same index stream, two-stage acceptance test, unit vector and
+ *             collision arithmetic (and the same running velocity bound),
+ *             but no waiting times or Poisson counts, rates, counters or
+ *             output times; run for as many accepted collisions as the
+ *             engine's row beside it, on the same initial state
  *   hs-relax  the engine on elastic hard spheres in one homogeneous cell,
- *             relaxing from two counter-streaming Maxwellians
- *   grw-ex3   paper A Ex 3 (Maxwell molecules, white-noise heating)
+ *             relaxing from two counter-streaming Maxwellians, n = 1e3 ...
+ *   grw-ex3   paper A Ex 3 (Maxwell molecules, white-noise heating), n = 1024
  *   brs-ex4   paper B Ex 4 (hard spheres, Algorithm 2 with its background)
- * Rates are events (accepted collisions for floor and hs-relax, candidate
- * events for the paper scenes) per CPU second of the thread that ran them;
- * floor_ratio = a row's rate / the floor's rate at the same n.
+ *   ms-timestep  the time-step scheme (paper C's white-noise gas, h = 0.05,
+ *             Strang) on one system of n = 2e5 particles
+ *   grw-ex3-ensembles  paper A Ex 3 with N = 10 000 ensembles (fewer for
+ *             short runs) on 1 and on 2 OpenMP threads: wall time and the
+ *             speed-up
+ * Rates are events (accepted collisions for floor, hs-relax and ms-timestep,
+ * candidate events for the paper scenes) per CPU second of the thread that
+ * ran them, or per wall second for the ensemble rows; floor_ratio = a row's
+ * rate / the floor's rate at the same n (the paper scenes: the floor at
+ * n = 1000).  Every figure is one measurement on a machine that may be
+ * shared: the floor beside each row is measured in the same process, minutes
+ * apart at most.
  */
 #ifndef GDSMC_VFY_BENCH_H
 #define GDSMC_VFY_BENCH_H
@@ -25,14 +37,14 @@
 typedef struct vfy_bench_options {
     size_t max_n;           /* largest n of the hs-relax series (1e3 ... 1e7) */
     double seconds;         /* target CPU seconds per row (about) */
-    const char *scene_dir;  /* where grw-ex3.ini and brs-ex4.ini are */
+    const char *scene_dir;  /* where grw-ex3.ini, brs-ex4.ini, ms-white-noise.ini are */
     FILE *progress;         /* progress lines, or NULL */
 } vfy_bench_options;
 
 /* The columns of the bench table, in order. */
 #define VFY_BENCH_COLUMNS                                                                     \
-    "case", "n", "events", "cpu_s", "events_per_s", "ns_per_event", "floor_ratio",          \
-        "acceptance", "bytes_per_particle", "peak_rss_mb"
+    "case", "n", "threads", "events", "cpu_s", "wall_s", "events_per_s", "ns_per_event",    \
+        "floor_ratio", "acceptance", "speedup", "bytes_per_particle", "peak_rss_mb"
 
 /* Run every case into table (initialised here with VFY_BENCH_COLUMNS; free
  * it with vfy_table_free).  Returns SIM_OK, or an error with msg. */

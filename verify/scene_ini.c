@@ -81,6 +81,7 @@ typedef struct key_desc {
 /* Enum fields are written as int. */
 _Static_assert(sizeof(sim_scheme) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_splitting) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_observation) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_initial) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_kernel_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_collision_model) == sizeof(int), "enum size");
@@ -91,6 +92,8 @@ static const word_desc scheme_words[] = {
     {"jump", SIM_SCHEME_JUMP}, {"timestep", SIM_SCHEME_TIMESTEP}, {NULL, 0}};
 static const word_desc splitting_words[] = {
     {"euler", SIM_SPLIT_EULER}, {"strang", SIM_SPLIT_STRANG}, {NULL, 0}};
+static const word_desc observation_words[] = {
+    {"sampled", SIM_OBSERVE_SAMPLED}, {"conditional", SIM_OBSERVE_CONDITIONAL}, {NULL, 0}};
 static const word_desc initial_words[] = {{"maxwellian", SIM_INITIAL_MAXWELLIAN},
                                           {"two-maxwellians", SIM_INITIAL_TWO_MAXWELLIANS},
                                           {"shell", SIM_INITIAL_SHELL},
@@ -128,6 +131,7 @@ static const key_desc keys[] = {
     WORDS(S_SCENE, "scheme", scheme, scheme_words),
     POSITIVE(S_SCENE, "dt", dt),
     WORDS(S_SCENE, "splitting", splitting, splitting_words),
+    WORDS(S_SCENE, "observation", observation, observation_words),
     POSITIVE(S_SCENE, "t_end", t_end),
     COUNT(S_SCENE, "outputs", outputs, 2, 10000000),
     {.section = S_SCENE, .name = "seed", .kind = K_U64, .offset = OFF(seed), .min = 0,
@@ -553,6 +557,12 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
     if (s->scheme != SIM_SCHEME_TIMESTEP && is_set(s, "scene.splitting"))
         return sim_error_set(err, SIM_EINVAL, "scene.splitting",
                              "only used with scheme = timestep (scheme is jump)");
+    if (s->observation == SIM_OBSERVE_CONDITIONAL
+        && (s->scheme != SIM_SCHEME_JUMP || !s->heating.present
+            || s->heating.type != SIM_HEATING_WHITE_NOISE))
+        return sim_error_set(err, SIM_EINVAL, "scene.observation",
+                             "conditional needs white-noise heating and scheme = jump (it "
+                             "averages over the heating's pending Brownian increments)");
 
     int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
     for (size_t i = 0; i < sizeof two / sizeof two[0]; i++) {

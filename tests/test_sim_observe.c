@@ -1,0 +1,100 @@
+/* Conditional observation (sim/observe.h, sim_observe_pending): its values
+ * are the exact expectations of the observables over the pending white-noise
+ * increments.  A Monte Carlo average over many draws of those increments
+ * (fixed seed) must agree within |z| <= 4.5, and must reject the formula
+ * without the centring term 1 - 1/n. */
+#include "test_util.h"
+
+#include <string.h>
+
+#include "observe.h"
+#include "rng.h"
+
+enum { N = 3, DRAWS = 200000 };
+
+static double v0[N][3] = {{0.3, -1.2, 0.5}, {1.1, 0.4, -0.7}, {-0.9, 0.2, 1.5}};
+static double stamp0[N] = {0.25, 0.9, 0.0};
+static const double t_obs = 1.0, spread = 1.7, mass = 2.0;
+
+/* Monte Carlo mean and standard error of each observable after drawing the
+ * increments: v_i += sqrt(spread (t - stamp_i)) xi. */
+static void monte_carlo(double mean[SIM_OBS_COUNT], double se[SIM_OBS_COUNT])
+{
+    double v[N][3], stamp[N], obs[SIM_OBS_COUNT], sum[SIM_OBS_COUNT] = {0},
+                                                  sum2[SIM_OBS_COUNT] = {0};
+    sim_particles p = {N, v, stamp};
+    gsl_rng *rng = sim_rng_alloc();
+    assert_non_null(rng);
+    sim_rng_set_stream(rng, 20261121, 0);
+    for (int d = 0; d < DRAWS; d++) {
+        for (int i = 0; i < N; i++) {
+            double xi[3], s = sqrt(spread * (t_obs - stamp0[i]));
+            sim_rng_normal3(rng, xi);
+            for (int k = 0; k < 3; k++)
+                v[i][k] = v0[i][k] + s * xi[k];
+        }
+        sim_observe(&p, mass, obs);
+        for (int k = 0; k < SIM_OBS_COUNT; k++) {
+            sum[k] += obs[k];
+            sum2[k] += obs[k] * obs[k];
+        }
+    }
+    gsl_rng_free(rng);
+    for (int k = 0; k < SIM_OBS_COUNT; k++) {
+        mean[k] = sum[k] / DRAWS;
+        se[k] = sqrt((sum2[k] / DRAWS - mean[k] * mean[k]) / DRAWS);
+    }
+}
+
+static double z(double mc, double se, double expected) { return fabs(mc - expected) / se; }
+
+static void test_pending_is_the_conditional_expectation(void **state)
+{
+    (void)state;
+    double stamp[N];
+    memcpy(stamp, stamp0, sizeof stamp);
+    sim_particles p = {N, v0, stamp};
+    double exact[SIM_OBS_COUNT], mc[SIM_OBS_COUNT], se[SIM_OBS_COUNT];
+    for (int k = 0; k < SIM_OBS_COUNT; k++)
+        exact[k] = NAN;   /* must stay untouched beyond Pyz */
+    sim_observe_pending(&p, mass, t_obs, spread, exact);
+    assert_memory_equal(stamp, stamp0, sizeof stamp);   /* p is not changed */
+    monte_carlo(mc, se);
+    for (int k = SIM_OBS_T; k <= SIM_OBS_PYZ; k++) {
+        double zk = z(mc[k], se[k], exact[k]);
+        if (!(zk <= 4.5))
+            print_error("%s: Monte Carlo %.6f ± %.6f, pending %.6f, |z| = %.2f\n",
+                        sim_observable_name((sim_observable)k), mc[k], se[k], exact[k], zk);
+        assert_true(zk <= 4.5);
+    }
+    for (int k = SIM_OBS_QX; k < SIM_OBS_COUNT; k++)
+        assert_true(isnan(exact[k]));
+}
+
+/* The wrong answer: the centred temperature without the 1/n of the centring
+ * velocity, T(v) + m S.  The same Monte Carlo must reject it. */
+static void test_without_centring_term_is_rejected(void **state)
+{
+    (void)state;
+    double stamp[N];
+    memcpy(stamp, stamp0, sizeof stamp);
+    sim_particles p = {N, v0, stamp};
+    double now[SIM_OBS_COUNT], mc[SIM_OBS_COUNT], se[SIM_OBS_COUNT];
+    sim_observe(&p, mass, now);
+    double S = 0.0;
+    for (int i = 0; i < N; i++)
+        S += spread * (t_obs - stamp0[i]) / N;
+    monte_carlo(mc, se);
+    assert_true(z(mc[SIM_OBS_T], se[SIM_OBS_T], now[SIM_OBS_T] + mass * S) > 20.0);
+    /* and observing without the expectation at all is rejected too */
+    assert_true(z(mc[SIM_OBS_T_RAW], se[SIM_OBS_T_RAW], now[SIM_OBS_T_RAW]) > 20.0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pending_is_the_conditional_expectation),
+        cmocka_unit_test(test_without_centring_term_is_rejected),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
