@@ -4,9 +4,12 @@
 #                 quick suite again in an address+undefined sanitizer build
 #   make fuzz     libFuzzer (clang, address sanitizer) over scene parsing and
 #                 validation for FUZZ_SECONDS (default 600), corpus verify/scenes
+#   make test-mpi optional: installs OpenMPI, builds $(MPI_BUILD) with GDSMC_MPI=ON
+#                 and checks that 2 ranks give the numbers of 1 process
 BUILD ?= build
 SANITIZE_BUILD ?= build-sanitize
 FUZZ_BUILD ?= build-fuzz
+MPI_BUILD ?= build-mpi
 FUZZ_SECONDS ?= 600
 CMAKE_FLAGS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -15,8 +18,9 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 PACKAGES = cmake make gcc pkg-config libgsl-dev libsundials-dev libcmocka-dev \
            librandom123-dev libinih-dev gnuplot-nox
 FUZZ_PACKAGES = clang libomp-dev
+MPI_PACKAGES = libopenmpi-dev openmpi-bin
 
-.PHONY: all deps build verify test test-sanitize fuzz clean
+.PHONY: all deps build verify test test-sanitize fuzz test-mpi clean
 
 all: build
 
@@ -62,5 +66,13 @@ fuzz:
 	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus
 
+# Ensembles across MPI ranks (README: Running on several processes); only the
+# executable is built, and only the tests labelled mpi run.
+test-mpi:
+	$(MAKE) deps PACKAGES="$(PACKAGES) $(MPI_PACKAGES)"
+	cmake -S . -B $(MPI_BUILD) -DGDSMC_MPI=ON $(CMAKE_FLAGS)
+	cmake --build $(MPI_BUILD) --target gdsmc -j $(JOBS)
+	ctest --test-dir $(MPI_BUILD) -L mpi --output-on-failure
+
 clean:
-	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD) $(FUZZ_BUILD) $(MPI_BUILD)

@@ -3,6 +3,9 @@
  * Ensembles run in parallel with OpenMP.  Ensemble j always uses random
  * stream (seed, j), and the sums are formed in fixed blocks of ensembles
  * merged in index order, so every number is the same for any thread count.
+ * Built with GDSMC_MPI and run under mpiexec, the blocks are shared out
+ * across the MPI ranks too, with the same numbers on every rank as on one
+ * process (ensemble.c explains how).
  * For each output time m and observable k:
  *   mean  eta1 = (1/N) Σ_j xi_j
  *   var   eta2 - eta1^2 (population variance, computed stably: Welford within
@@ -35,20 +38,38 @@ typedef struct sim_ensemble_result {
     double *steady_var;
     double *steady_ci;
     sim_counts counts;   /* summed over ensembles */
-    double cpu_seconds;  /* process CPU time, all threads */
-    double wall_seconds;
-    int threads;         /* OpenMP threads used */
+    double cpu_seconds;  /* process CPU time, all threads (and MPI ranks) */
+    double wall_seconds; /* with MPI, the slowest rank's */
+    int threads;         /* OpenMP threads used (summed over MPI ranks) */
 } sim_ensemble_result;
 
 /* Called after each finished block of ensembles, from one thread at a time. */
 typedef void (*sim_progress_fn)(size_t done, size_t total, void *ctx);
 
-/* Run the scene's N ensembles.  res is filled (free with
- * sim_ensemble_result_free, also after a failure).  progress may be NULL. */
+/* Run the scene's N ensembles.  With GDSMC_MPI, once MPI is initialised, a
+ * collective call: every rank of MPI_COMM_WORLD makes it with the same scene,
+ * from the thread that initialised MPI, outside OpenMP parallel regions, and
+ * all get the same result and status.  res is filled (free with
+ * sim_ensemble_result_free, also after a failure).  progress may be NULL.
+ * Refuses, before allocating anything, a run whose particles (n per thread;
+ * with MPI, the threads of all ranks on this machine) and statistics would not fit in the machine's memory: SIM_ENOMEM naming
+ * particles.n with the estimate.  Returns SIM_ECANCELED when a stop was
+ * requested (checked before every ensemble); res is then incomplete. */
 sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, void *ctx,
                             sim_ensemble_result *res, sim_error *err);
 
 void sim_ensemble_result_free(sim_ensemble_result *res);
+
+/* Ask running and later calls of sim_ensemble_run to stop (SIGINT, SIGTERM):
+ * async-signal-safe, it only sets a flag.  sim_ensemble_clear_stop resets it. */
+void sim_ensemble_request_stop(void);
+void sim_ensemble_clear_stop(void);
+int sim_ensemble_stop_requested(void);
+
+/* Bytes that sim_ensemble_run would hold at once for engine's scene on
+ * `threads` threads: each thread's workspace (n particles) and the
+ * statistics of every output.  The memory check above uses it. */
+double sim_ensemble_memory_estimate(const sim_engine *engine, int threads);
 
 /* Accessors: observable k at output m. */
 static inline double sim_result_mean(const sim_ensemble_result *r, size_t m, int k)

@@ -12,6 +12,7 @@ const char *sim_strerror(sim_status status)
     case SIM_ENOMEM: return "out of memory";
     case SIM_EUNSUPPORTED: return "not supported";
     case SIM_EIO: return "input/output error";
+    case SIM_ECANCELED: return "stopped on request";
     }
     return "unknown status";
 }

@@ -16,7 +16,8 @@ typedef enum sim_status {
     SIM_EINVAL,      /* a parameter or scene value is out of range */
     SIM_ENOMEM,      /* an allocation failed (or would be too large) */
     SIM_EUNSUPPORTED,/* a valid combination no scheme implements yet */
-    SIM_EIO          /* a file could not be read or written */
+    SIM_EIO,         /* a file could not be read or written */
+    SIM_ECANCELED    /* stopped on request (SIGINT, SIGTERM) before finishing */
 } sim_status;
 
 /* A recorded error: the scene key at fault ("collisions.restitution", or ""
