@@ -86,3 +86,343 @@ gdsmc_add_cli_test(cli_bench_bad_n 2 "--max-n '10': allowed 1000 <= N" bench --m
 gdsmc_add_cli_test(cli_outputs_too_many 2
                    "scene.outputs: '20000000' is out of range \\(allowed 2 <= outputs <= 10000000\\)"
                    run ${S}/grw-ex3.ini --set scene.outputs=20000000)
+
+# Nothing lost (issue 5): interrupted twice (deterministically, after one
+# finished simulation each time) and resumed, a case's tables come out as an
+# uninterrupted run's, timings aside.
+add_test(NAME cli_verify_resume
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCASE=grw-ex4 -DRC=0
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/resume -P ${CMAKE_CURRENT_SOURCE_DIR}/run_resume.cmake)
+set_tests_properties(cli_verify_resume PROPERTIES TIMEOUT 300 LABELS unit)
+foreach(sig INT TERM)
+  add_test(NAME cli_verify_sig${sig}
+           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DSIG=${sig}
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/signal-${sig}
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/run_signal.cmake)
+  set_tests_properties(cli_verify_sig${sig} PROPERTIES TIMEOUT 60 LABELS unit)
+endforeach()
+
+# Sizes that cannot fit are refused before anything is allocated, with the
+# estimate in the message (n x bytes per particle per thread).
+gdsmc_add_cli_test(cli_memory_refused 2
+                   "--set particles.n: n = 1000000000 particles per ensemble on [0-9]+ threads, N = 2 ensembles and 81 outputs need about [0-9.]+ GB at once, more than the [0-9.]+ GB of memory this machine has"
+                   run ${S}/grw-ex3.ini --set particles.n=1000000000 --set particles.ensembles=2)
+gdsmc_add_cli_test(cli_memory_refused_statistics 2
+                   "N = 1000000 ensembles and 10000000 outputs need about [0-9.e+]+ GB at once"
+                   run ${S}/grw-ex3.ini --set particles.n=100 --set particles.ensembles=1000000
+                   --set scene.outputs=10000000)
+
+# ---- Every error path a user can reach, with its exact message (issue 5) ----
+# gdsmc_add_cli_exact(NAME CODE MESSAGE ARGS...): the whole output, standard
+# output and standard error together, must be MESSAGE and its newline: the
+# message is escaped into an anchored regular expression here, so it is
+# written as gdsmc prints it.  Scene-level messages (parser, engine,
+# references) are tested exactly in tests/test_scene.c; these check the same
+# paths end to end (prefix, file, exit code 2, nothing on standard output).
+function(gdsmc_add_cli_exact name code message)
+  string(REGEX REPLACE "([][\\.*+?^$()|])" "\\\\\\1" re "${message}")
+  gdsmc_add_cli_test(${name} ${code} "^${re}[^!-~]*$" ${ARGN})
+endfunction()
+
+# The command line itself (verify/cli.c)
+gdsmc_add_cli_test(cli_x_no_command 2
+                   "^usage: gdsmc COMMAND \\[OPTIONS\\].*exit status: 0 success, 1 a verification check failed, 2 bad input or error\\.[^!-~]*$"
+                   "")
+gdsmc_add_cli_exact(cli_x_unknown_command 2
+                    "gdsmc: unknown command 'frobnicate' (allowed run, reference, verify, sonine, bench; see gdsmc --help)"
+                    frobnicate)
+gdsmc_add_cli_exact(cli_x_run_unknown_option 2
+                    "gdsmc run: unknown option '--fast' (see gdsmc run --help)"
+                    run ${S}/grw-ex3.ini --fast)
+gdsmc_add_cli_exact(cli_x_run_solver_set 2
+                    "gdsmc run: unknown option '--solver-set' (see gdsmc run --help)"
+                    run ${S}/grw-ex3.ini --solver-set collisions.restitution=0.45)
+gdsmc_add_cli_exact(cli_x_run_unexpected_argument 2
+                    "gdsmc run: unexpected argument 'extra.ini' (see gdsmc run --help)"
+                    run ${S}/grw-ex3.ini extra.ini)
+gdsmc_add_cli_exact(cli_x_run_missing_scene 2
+                    "gdsmc run: missing SCENE file (see gdsmc run --help)" run --quiet)
+gdsmc_add_cli_exact(cli_x_run_set_needs_value 2
+                    "gdsmc run: option '--set' needs a value (see gdsmc run --help)"
+                    run ${S}/grw-ex3.ini --set)
+gdsmc_add_cli_exact(cli_x_run_out_needs_value 2
+                    "gdsmc run: option '--out' needs a value (see gdsmc run --help)"
+                    run ${S}/grw-ex3.ini --out)
+# at most 64 --set options: 64 run, 65 are refused
+set(sets62)
+foreach(i RANGE 1 62)
+  list(APPEND sets62 --set scene.seed=${i})
+endforeach()
+gdsmc_add_cli_test(cli_x_run_64_sets 0 "^# gdsmc [^ ]+ run verify/scenes/grw-ex3\\.ini: seed 62, n = 8, N = 2,"
+                   run ${S}/grw-ex3.ini ${sets62} --set particles.n=8 --set particles.ensembles=2
+                   --quiet)
+gdsmc_add_cli_exact(cli_x_run_65_sets 2
+                    "gdsmc run: more than 64 --set options (see gdsmc run --help)"
+                    run ${S}/grw-ex3.ini ${sets62} --set particles.n=8 --set particles.ensembles=2
+                    --set scene.outputs=3)
+# scene files (verify/scene_ini.c)
+gdsmc_add_cli_exact(cli_x_run_missing_file 2
+                    "gdsmc run: no/such.ini: cannot open: No such file or directory"
+                    run no/such.ini)
+gdsmc_add_cli_exact(cli_x_run_directory 2 "gdsmc run: tests: cannot read: Is a directory"
+                    run tests)
+gdsmc_add_cli_exact(cli_x_run_restitution 2
+                    "gdsmc run: tests/scenes/restitution-1.7.ini:6: collisions.restitution: '1.7' is out of range (allowed 0 < restitution <= 1)"
+                    run ${B}/restitution-1.7.ini)
+gdsmc_add_cli_exact(cli_x_run_unknown_key 2
+                    "gdsmc run: tests/scenes/unknown-key.ini:5: collisions.speed: unknown key (allowed kernel, exponent, constant, rate, restitution, model)"
+                    run ${B}/unknown-key.ini)
+gdsmc_add_cli_exact(cli_x_run_negative_temperature 2
+                    "gdsmc run: --set particles.temperature=-2: particles.temperature: '-2' is out of range (allowed temperature > 0)"
+                    run ${S}/grw-ex3.ini --set particles.temperature=-2)
+gdsmc_add_cli_exact(cli_x_run_n_zero 2
+                    "gdsmc run: --set particles.n=0: particles.n: '0' is out of range (allowed 2 <= n <= 1000000000)"
+                    run ${S}/grw-ex3.ini --set particles.n=0)
+# n = 1e13 (issue 5): refused by the key's range before anything is estimated
+gdsmc_add_cli_exact(cli_x_run_n_1e13 2
+                    "gdsmc run: --set particles.n=10000000000000: particles.n: '10000000000000' is out of range (allowed 2 <= n <= 1000000000)"
+                    run ${S}/grw-ex3.ini --set particles.n=10000000000000)
+gdsmc_add_cli_exact(cli_x_run_n_1e13_text 2
+                    "gdsmc run: --set particles.n=1e13: particles.n: '1e13' is not a whole number (allowed 2 <= n <= 1000000000)"
+                    run ${S}/grw-ex3.ini --set particles.n=1e13)
+gdsmc_add_cli_exact(cli_x_run_bad_override 2
+                    "gdsmc run: --set particles.n: expected section.key=value (no '=')"
+                    run ${S}/grw-ex3.ini --set particles.n)
+# valid scenes the engine refuses (sim/engine.c, sim/effect_*.c)
+gdsmc_add_cli_exact(cli_x_run_shear 2
+                    "gdsmc run: tests/scenes/shear.ini: shear: shear flow is not implemented yet"
+                    run ${B}/shear.ini)
+gdsmc_add_cli_exact(cli_x_run_heat_flux 2
+                    "gdsmc run: verify/scenes/grw-ex3.ini: heat-flux: the heat-flux force is not implemented yet"
+                    run ${S}/grw-ex3.ini --set heat-flux.strength=0.025)
+gdsmc_add_cli_exact(cli_x_run_ehs 2
+                    "gdsmc run: verify/scenes/grw-ex3.ini: --set collisions.model: model ehs is not implemented yet (supported: ihs)"
+                    run ${S}/grw-ex3.ini --set collisions.model=ehs)
+gdsmc_add_cli_exact(cli_x_run_timestep_maxwell 2
+                    "gdsmc run: verify/scenes/grw-ex3.ini:24: collisions.kernel: the time-step scheme implements hard spheres only (the contact rule of paper C; kernel exponent is 0)"
+                    run ${S}/grw-ex3.ini --set scene.scheme=timestep --set scene.dt=0.01)
+gdsmc_add_cli_exact(cli_x_run_gaussian_jump 2
+                    "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise)"
+                    run ${S}/grw-ex5.ini --set heating.type=gaussian)
+gdsmc_add_cli_exact(cli_x_run_too_many_steps 2
+                    "gdsmc run: verify/scenes/grw-ex5.ini: --set scene.dt: 1e-300 gives 5e+298 steps between output times (allowed at most 1e12)"
+                    run ${S}/grw-ex5.ini --set scene.scheme=timestep --set scene.dt=1e-300)
+gdsmc_add_cli_exact(cli_x_run_background_timestep 2
+                    "gdsmc run: verify/scenes/brs-ex4.ini: background: the background is not implemented in the time-step scheme (supported: jump)"
+                    run ${S}/brs-ex4.ini --set scene.scheme=timestep --set scene.dt=0.1)
+gdsmc_add_cli_exact(cli_x_run_two_species 2
+                    "gdsmc run: verify/scenes/brs-ex1.ini: --set particles.mass2: the engine simulates one species: mass2 = 2 must equal mass1 = 1"
+                    run ${S}/brs-ex1.ini --set particles.mass2=2)
+# sizes that cannot fit (sim/ensemble.c): the whole message, the machine's numbers aside
+gdsmc_add_cli_test(cli_x_run_memory_refused 2
+                   "^gdsmc run: verify/scenes/grw-ex3\\.ini: --set particles\\.n: n = 1000000000 particles per ensemble on [0-9]+ threads, N = 2 ensembles and 81 outputs need about [0-9.]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"
+                   run ${S}/grw-ex3.ini --set particles.n=1000000000 --set particles.ensembles=2
+                   --quiet)
+gdsmc_add_cli_exact(cli_x_run_out_unwritable 2
+                    "gdsmc run: /nonexistent/gdsmc/x.csv: cannot write: No such file or directory"
+                    run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=2 --quiet
+                    --out /nonexistent/gdsmc/x.csv)
+# gdsmc reference (verify/scene_refs.c)
+gdsmc_add_cli_exact(cli_x_reference_missing_scene 2
+                    "gdsmc reference: missing SCENE file (see gdsmc reference --help)" reference)
+gdsmc_add_cli_exact(cli_x_reference_unknown_option 2
+                    "gdsmc reference: unknown option '--quick' (see gdsmc reference --help)"
+                    reference ${S}/grw-ex3.ini --quick)
+gdsmc_add_cli_exact(cli_x_reference_no_collisions 2
+                    "gdsmc reference: tests/scenes/no-collisions.ini: collisions: no reference applies: paper A references need [collisions]"
+                    reference ${B}/no-collisions.ini)
+gdsmc_add_cli_exact(cli_x_reference_gaussian 2
+                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set heating.type: paper A references need white-noise heating"
+                    reference ${S}/grw-ex3.ini --set heating.type=gaussian)
+gdsmc_add_cli_exact(cli_x_reference_drift 2
+                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set particles.velocity: paper A references need an initial Maxwellian at rest (allowed 0 0 0)"
+                    reference ${S}/grw-ex3.ini "--set" "particles.velocity=0 1 0")
+gdsmc_add_cli_exact(cli_x_reference_mass 2
+                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set particles.mass: paper A references are for unit mass (got 2)"
+                    reference ${S}/grw-ex3.ini --set particles.mass=2)
+gdsmc_add_cli_exact(cli_x_reference_vhs 2
+                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set collisions.exponent: no reference for VHS lambda = 0.5 (only 0 and 1)"
+                    reference ${S}/grw-ex3.ini --set collisions.kernel=vhs --set collisions.exponent=0.5)
+gdsmc_add_cli_exact(cli_x_reference_shear 2
+                    "gdsmc reference: verify/scenes/grw-ex3.ini: shear: no reference implemented for shear flow yet"
+                    reference ${S}/grw-ex3.ini --set shear.rate=1)
+gdsmc_add_cli_exact(cli_x_reference_background_heating 2
+                    "gdsmc reference: verify/scenes/brs-ex1.ini: background: no reference for a background combined with heating, shear or a heat-flux force"
+                    reference ${S}/brs-ex1.ini --set heating.strength=1)
+gdsmc_add_cli_exact(cli_x_reference_kernels 2
+                    "gdsmc reference: verify/scenes/brs-ex1.ini: --set collisions.kernel: paper B references need the same kernel for binary and background collisions (background.kernel is maxwell)"
+                    reference ${S}/brs-ex1.ini --set collisions.kernel=hard-spheres)
+# a closure CVODE cannot integrate: which reference, the flag, SUNDIALS' reason
+gdsmc_add_cli_test(cli_x_reference_cvode_failure 2
+                   "^gdsmc reference: verify/scenes/grw-ex5\\.ini: T_maxwell_closure: CVODE failed at t = 0: CV_[A-Z_]+ \\(CVODE in CVode: .*$"
+                   reference ${S}/grw-ex5.ini --set scene.t_end=1e300)
+gdsmc_add_cli_exact(cli_x_reference_out_unwritable 2
+                    "gdsmc reference: /nonexistent/gdsmc/r.csv: cannot write: No such file or directory"
+                    reference ${S}/grw-ex3.ini --out /nonexistent/gdsmc/r.csv)
+# gdsmc sonine
+gdsmc_add_cli_exact(cli_x_sonine_unexpected_argument 2
+                    "gdsmc sonine: unexpected argument '0.2' (see gdsmc sonine --help)"
+                    sonine 0.2)
+gdsmc_add_cli_exact(cli_x_sonine_alpha_overflow 2
+                    "gdsmc sonine: --alpha: '1e999' is not a number (see gdsmc sonine --help)"
+                    sonine --alpha 1e999)
+gdsmc_add_cli_exact(cli_x_sonine_d_text 2
+                    "gdsmc sonine: --d: 'three' is not a number (see gdsmc sonine --help)"
+                    sonine --alpha 0.2 --d three)
+gdsmc_add_cli_exact(cli_x_sonine_d_above 2
+                    "gdsmc sonine: --d: '101' is out of range (allowed 2 <= d <= 100)"
+                    sonine --alpha 0.2 --d 101)
+gdsmc_add_cli_exact(cli_x_sonine_out_needs_value 2
+                    "gdsmc sonine: option '--out' needs a value (see gdsmc sonine --help)"
+                    sonine --alpha 0.2 --out)
+gdsmc_add_cli_exact(cli_x_sonine_out_unwritable 2
+                    "gdsmc sonine: /nonexistent/gdsmc/s.csv: cannot write: No such file or directory"
+                    sonine --alpha 0.2 --out /nonexistent/gdsmc/s.csv)
+# gdsmc bench
+gdsmc_add_cli_exact(cli_x_bench_unknown_argument 2
+                    "gdsmc bench: unknown argument '--quick' (see gdsmc bench --help)"
+                    bench --quick)
+gdsmc_add_cli_exact(cli_x_bench_needs_value 2
+                    "gdsmc bench: option '--seconds' needs a value (see gdsmc bench --help)"
+                    bench --seconds)
+gdsmc_add_cli_exact(cli_x_bench_max_n_text 2
+                    "gdsmc bench: --max-n '1e4x': allowed 1000 <= N <= 1e9 (see gdsmc bench --help)"
+                    bench --max-n 1e4x)
+gdsmc_add_cli_exact(cli_x_bench_max_n_above 2
+                    "gdsmc bench: --max-n '2e9': allowed 1000 <= N <= 1e9 (see gdsmc bench --help)"
+                    bench --max-n 2e9)
+gdsmc_add_cli_exact(cli_x_bench_seconds_zero 2
+                    "gdsmc bench: --seconds '0': allowed 0 < S <= 3600 (see gdsmc bench --help)"
+                    bench --seconds 0)
+gdsmc_add_cli_exact(cli_x_bench_seconds_text 2
+                    "gdsmc bench: --seconds 'nan': allowed 0 < S <= 3600 (see gdsmc bench --help)"
+                    bench --seconds nan)
+gdsmc_add_cli_exact(cli_x_bench_seconds_above 2
+                    "gdsmc bench: --seconds '3601': allowed 0 < S <= 3600 (see gdsmc bench --help)"
+                    bench --seconds 3601)
+# (the table goes to standard output before the files are written)
+gdsmc_add_cli_test(cli_x_bench_out_unwritable 2
+                   "[^!-~]gdsmc bench: /nonexistent/gdsmc/b\\.csv: cannot write: No such file or directory[^!-~]*$"
+                   bench --max-n 1000 --seconds 0.01 --out /nonexistent/gdsmc/b.csv)
+gdsmc_add_cli_test(cli_x_bench_md_unwritable 2
+                   "[^!-~]gdsmc bench: /nonexistent/gdsmc/b\\.md: cannot write: No such file or directory[^!-~]*$"
+                   bench --max-n 1000 --seconds 0.01 --md /nonexistent/gdsmc/b.md)
+# gdsmc verify (verify/cli.c, verify/cases.c)
+gdsmc_add_cli_test(cli_x_verify_unknown_suite 2
+                   "^gdsmc verify: unknown suite 'fast' \\(allowed quick, paper, grw, brs[a-z, -]*\\) \\(see gdsmc verify --help\\)[^!-~]*$"
+                   verify --suite fast)
+gdsmc_add_cli_exact(cli_x_verify_unknown_case 2
+                    "gdsmc verify: unknown case 'grw-ex9' (gdsmc verify --list shows them) (see gdsmc verify --help)"
+                    verify --case grw-ex9)
+gdsmc_add_cli_exact(cli_x_verify_unknown_option 2
+                    "gdsmc verify: unknown option '--scene' (see gdsmc verify --help)"
+                    verify --scene ${S})
+gdsmc_add_cli_exact(cli_x_verify_unexpected_argument 2
+                    "gdsmc verify: unexpected argument 'grw-ex3' (see gdsmc verify --help)"
+                    verify grw-ex3)
+gdsmc_add_cli_exact(cli_x_verify_case_needs_value 2
+                    "gdsmc verify: option '--case' needs a value (see gdsmc verify --help)"
+                    verify --case)
+set(solver_sets65)
+foreach(i RANGE 0 64)
+  list(APPEND solver_sets65 --solver-set scene.seed=${i})
+endforeach()
+gdsmc_add_cli_exact(cli_x_verify_65_solver_sets 2
+                    "gdsmc verify: more than 64 --solver-set options (see gdsmc verify --help)"
+                    verify --case grw-ex3 ${solver_sets65})
+gdsmc_add_cli_exact(cli_x_verify_bad_set 2
+                    "gdsmc verify: --set collisions.restitution=1.7: collisions.restitution: '1.7' is out of range (allowed 0 < restitution <= 1)"
+                    verify --case grw-ex3 --suite quick --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/verify-bad-set
+                    --set collisions.restitution=1.7)
+gdsmc_add_cli_exact(cli_x_verify_scenes_missing 2
+                    "gdsmc verify: /nonexistent/gdsmc/grw-ex3.ini: cannot open: No such file or directory"
+                    verify --case grw-ex3 --suite quick --quiet --out ${CMAKE_CURRENT_BINARY_DIR}/verify-no-scenes
+                    --scenes /nonexistent/gdsmc)
+gdsmc_add_cli_exact(cli_x_verify_out_under_file 2
+                    "gdsmc verify: tests/scenes/unknown-key.ini/reports: cannot create the report directory: Not a directory"
+                    verify --case grw-ex3 --suite quick --quiet --out ${B}/unknown-key.ini/reports)
+# an existing file is not a report directory (refused before the first simulation)
+gdsmc_add_cli_exact(cli_x_verify_out_is_file 2
+                    "gdsmc verify: tests/scenes/unknown-key.ini: cannot create the report directory: Not a directory"
+                    verify --case grw-ex3 --suite quick --quiet --out ${B}/unknown-key.ini)
+# a case's own requirements on its scene (tests/scenes/cases/), before any simulation
+gdsmc_add_cli_exact(cli_x_verify_split_needs_steady 2
+                    "gdsmc verify: tests/scenes/cases/split-ex5.ini: the splitting case needs [steady] and scheme = timestep"
+                    verify --case split-ex5 --suite quick --quiet --scenes ${B}/cases
+                    --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
+gdsmc_add_cli_exact(cli_x_verify_ms_needs_steady 2
+                    "gdsmc verify: tests/scenes/cases/ms-white-noise.ini: paper C's cases need [steady] and scheme = timestep"
+                    verify --case ms-a2-white-noise --suite quick --quiet --scenes ${B}/cases
+                    --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
+gdsmc_add_cli_exact(cli_x_verify_brs_needs_hard_spheres 2
+                    "gdsmc verify: tests/scenes/cases/brs-ex4.ini: the scene has no hard-sphere closures (allowed collisions.kernel = hard-spheres and background.kernel = hard-spheres)"
+                    verify --case brs-ex4 --suite quick --quiet --scenes ${B}/cases
+                    --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
+
+# No partial output: a failing command leaves no FILE, no FILE.tmp, and an
+# existing FILE as it was (tests/run_no_output.cmake).
+# gdsmc_add_no_output_test(NAME CODE REGEX OUT [PRE text] [OUT_IS_DIR 1]
+#                          [SIGNAL SIG AFTER S] [STDOUT_FILE path] ARGS ...)
+function(gdsmc_add_no_output_test name code regex out)
+  cmake_parse_arguments(T "" "PRE;OUT_IS_DIR;SIGNAL;AFTER;STDOUT_FILE" "ARGS" ${ARGN})
+  set(extra)
+  foreach(opt PRE OUT_IS_DIR SIGNAL AFTER STDOUT_FILE)
+    if(DEFINED T_${opt})
+      list(APPEND extra "-D${opt}=${T_${opt}}")
+    endif()
+  endforeach()
+  add_test(NAME ${name}
+           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCODE=${code}
+                   "-DREGEX=${regex}" "-DARGS=${T_ARGS}" "-DOUT=${out}"
+                   -DWORKDIR=${PROJECT_SOURCE_DIR} ${extra}
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/run_no_output.cmake)
+  set_tests_properties(${name} PROPERTIES TIMEOUT 60 LABELS unit ENVIRONMENT OMP_NUM_THREADS=1)
+endfunction()
+set(NO ${CMAKE_CURRENT_BINARY_DIR}/no-output)
+gdsmc_add_no_output_test(cli_no_output_bad_scene 2
+    "^gdsmc run: tests/scenes/restitution-1\\.7\\.ini:6: collisions\\.restitution: '1\\.7' is out of range \\(allowed 0 < restitution <= 1\\)[^!-~]*$"
+    ${NO}/bad-scene.csv ARGS run ${B}/restitution-1.7.ini --out ${NO}/bad-scene.csv)
+gdsmc_add_no_output_test(cli_no_output_bad_scene_keeps_file 2
+    "^gdsmc run: tests/scenes/restitution-1\\.7\\.ini:6: collisions\\.restitution: "
+    ${NO}/keep.csv PRE "an earlier run's output" ARGS run ${B}/restitution-1.7.ini --out ${NO}/keep.csv)
+gdsmc_add_no_output_test(cli_no_output_engine_refused 2
+    "^gdsmc run: tests/scenes/shear\\.ini: shear: shear flow is not implemented yet[^!-~]*$"
+    ${NO}/shear.csv ARGS run ${B}/shear.ini --out ${NO}/shear.csv)
+gdsmc_add_no_output_test(cli_no_output_memory_refused 2
+    "^gdsmc run: verify/scenes/grw-ex3\\.ini: --set particles\\.n: n = 100 particles per ensemble on 1 threads, N = 1000000 ensembles and 10000000 outputs need about [0-9.e+]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"
+    ${NO}/memory.csv ARGS run ${S}/grw-ex3.ini --set particles.n=100
+    --set particles.ensembles=1000000 --set scene.outputs=10000000 --quiet --out ${NO}/memory.csv)
+gdsmc_add_no_output_test(cli_no_output_reference_refused 2
+    "^gdsmc reference: tests/scenes/no-collisions\\.ini: collisions: no reference applies: paper A references need \\[collisions\\][^!-~]*$"
+    ${NO}/reference.csv ARGS reference ${B}/no-collisions.ini --out ${NO}/reference.csv)
+gdsmc_add_no_output_test(cli_no_output_sonine_refused 2
+    "^gdsmc sonine: --alpha: '1\\.5' is out of range \\(allowed 0 <= alpha <= 1\\)[^!-~]*$"
+    ${NO}/sonine.csv ARGS sonine --alpha 1.5 --out ${NO}/sonine.csv)
+# stopped by SIGINT (exit 130): nothing written, an existing file untouched
+gdsmc_add_no_output_test(cli_no_output_run_stopped 130
+    "^gdsmc run: verify/scenes/grw-ex3\\.ini: stopped on request after [0-9]+ of 10000 ensembles; nothing written[^!-~]*$"
+    ${NO}/stopped.csv SIGNAL INT AFTER 2
+    ARGS run ${S}/grw-ex3.ini --set particles.n=4096 --quiet --out ${NO}/stopped.csv)
+gdsmc_add_no_output_test(cli_no_output_run_stopped_keeps_file 130
+    "^gdsmc run: verify/scenes/grw-ex3\\.ini: stopped on request after [0-9]+ of 10000 ensembles; nothing written[^!-~]*$"
+    ${NO}/stopped-keep.csv PRE "an earlier run's output" SIGNAL TERM AFTER 2
+    ARGS run ${S}/grw-ex3.ini --set particles.n=4096 --quiet --out ${NO}/stopped-keep.csv)
+# the final rename fails (FILE is a directory): FILE.tmp must not stay behind
+gdsmc_add_no_output_test(cli_no_output_out_is_directory 2
+    "^gdsmc run: [^ ]*/no-output/dir\\.csv: cannot write: Is a directory[^!-~]*$"
+    ${NO}/dir.csv OUT_IS_DIR 1
+    ARGS run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=2 --quiet
+    --out ${NO}/dir.csv)
+# standard output that cannot be written: exit 2 with a message, not silently
+gdsmc_add_no_output_test(cli_no_output_stdout_full 2
+    "^gdsmc run: standard output: cannot write: No space left on device[^!-~]*$"
+    ${NO}/stdout-full.csv STDOUT_FILE /dev/full
+    ARGS run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=2 --quiet)
+gdsmc_add_no_output_test(cli_no_output_sonine_stdout_full 2
+    "^gdsmc sonine: standard output: cannot write: No space left on device[^!-~]*$"
+    ${NO}/sonine-full.csv STDOUT_FILE /dev/full ARGS sonine --alpha 0.2)
+
+# --out naming a device or pipe writes in place: renaming a FILE.tmp over it
+# would replace the device node (as root) with a plain file.
+gdsmc_add_cli_test(cli_out_device 0 "^# gdsmc [^\n]*sonine[^\n]*\nname,value\nbeta_1,"
+                   sonine --alpha 0.3 --out /dev/stdout)

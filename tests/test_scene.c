@@ -2,8 +2,13 @@
  *
  * Good scenes are checked field by field, with their present flags and key
  * lines; the trap group provokes each kind of bad input and asserts the
- * status and the exact message.  GDSMC_SOURCE_DIR (set by CTest) locates
- * verify/scenes/, whose files must all load.
+ * status and the exact message.  The engine trap and reference trap groups
+ * do the same for scenes that parse but that sim_engine_create() or
+ * vfy_scene_references() refuse (SPEC §2: "a combination no scheme supports
+ * gets a clear error naming the file, line and key"), with the message as
+ * `gdsmc run` and `gdsmc reference` print it (vfy_scene_format_error).
+ * GDSMC_SOURCE_DIR (set by CTest) locates verify/scenes/, whose files must
+ * all load.
  */
 #include <dirent.h>
 #include <stdint.h>
@@ -11,7 +16,9 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "engine.h"
 #include "scene_ini.h"
+#include "scene_refs.h"
 #include "test_util.h"
 
 static const char *source_dir(void)
@@ -585,7 +592,7 @@ TRAP_SET(trap_override_unknown_section, "", "collision.rate=4",
          "--set collision.rate=4: [collision]: unknown section (allowed " SECTIONS ")")
 TRAP_SET(trap_override_unknown_key, "", "scene.tend=4",
          "--set scene.tend=4: scene.tend: unknown key (allowed title, scheme, dt, splitting, "
-         "t_end, outputs, seed)")
+         "observation, t_end, outputs, seed)")
 TRAP_SET(trap_override_bad_value, "[collisions]\nrestitution = 0.5\n",
          "collisions.restitution=1.7",
          "--set collisions.restitution=1.7: collisions.restitution: '1.7' is out of range "
@@ -600,6 +607,245 @@ TRAP_SET(trap_override_breaks_cross_check, "[scene]\nt_end = 2\n", "scene.scheme
          "t.ini: --set scene.scheme: timestep needs scene.dt (allowed dt > 0)")
 TRAP_SET(trap_file_error_before_overrides, "[scene]\nt_end = 0\n", "scene.t_end=1",
          "t.ini:2: scene.t_end: '0' is out of range (allowed t_end > 0)")
+
+/* Each remaining branch of the parser's messages (issue 5: every error path). */
+TRAP(trap_ensembles_0, "[particles]\nensembles = 0\n",
+     "t.ini:2: particles.ensembles: '0' is out of range (allowed ensembles >= 1)")
+TRAP(trap_seed_negative, "[scene]\nseed = -1\n",
+     "t.ini:2: scene.seed: '-1' is negative (allowed 0 <= seed <= 18446744073709551615)")
+TRAP(trap_seed_overflow, "[scene]\nseed = 18446744073709551616\n",
+     "t.ini:2: scene.seed: '18446744073709551616' is out of range "
+     "(allowed 0 <= seed <= 18446744073709551615)")
+TRAP(trap_vector_four_numbers, "[particles]\nvelocity = 1 2 3 4\n",
+     "t.ini:2: particles.velocity: '1 2 3 4' is not three numbers "
+     "(allowed three finite numbers separated by spaces)")
+TRAP(trap_fraction_above_1,
+     "[particles]\ninitial = two-maxwellians\nfraction = 1.25\n",
+     "t.ini:3: particles.fraction: '1.25' is out of range (allowed 0 <= fraction <= 1)")
+TRAP(trap_title_too_long_in_file,
+     "[scene]\ntitle = 0123456789012345678901234567890123456789012345678901234567890123"
+     "456789012345678901234567890123456789012345678901234567890123456789\n",
+     "t.ini:2: scene.title: is too long: 130 characters (allowed at most 127 characters)")
+TRAP(trap_mixture_key_with_shell, "[particles]\ninitial = shell\nfraction = 0.5\n",
+     "t.ini:3: particles.fraction: only used with initial = two-maxwellians (initial is shell)")
+TRAP(trap_exponent_contradicts_maxwell, "[collisions]\nkernel = maxwell\nexponent = 1\n",
+     "t.ini:3: collisions.exponent: 1 contradicts kernel = maxwell (allowed 0, or kernel = vhs)")
+TRAP(trap_observation_unknown, "[scene]\nobservation = exact\n",
+     "t.ini:2: scene.observation: 'exact' is unknown (allowed sampled, conditional)")
+TRAP(trap_observation_without_heating, "[scene]\nobservation = conditional\n[collisions]\n",
+     "t.ini:2: scene.observation: conditional needs white-noise heating and scheme = jump (it "
+     "averages over the heating's pending Brownian increments)")
+TRAP(trap_unknown_section_no_keys, "[collisions]\nrate = 2\n[Heating]\n",
+     "t.ini:3: [Heating]: unknown section (allowed " SECTIONS ")")
+
+/* An override longer than its buffers (section 63, key 63, value 511 characters). */
+static void trap_override_too_long(void **state)
+{
+    (void)state;
+    char ov[700], expected[800];
+    memset(ov, 0, sizeof ov);
+    memcpy(ov, "scene.title=", 12);
+    memset(ov + 12, 'x', 512);   /* a value of 512 characters */
+    snprintf(expected, sizeof expected, "--set %s: expected section.key=value (too long)", ov);
+    const char *list[] = {ov};
+    expect_error("", list, 1, SIM_EINVAL, expected);
+
+    memset(ov, 0, sizeof ov);
+    memset(ov, 's', 64);         /* a section of 64 characters */
+    memcpy(ov + 64, ".t_end=2", 8);
+    snprintf(expected, sizeof expected, "--set %s: expected section.key=value (too long)", ov);
+    expect_error("", list, 1, SIM_EINVAL, expected);
+}
+
+/* A file of more than 1 MiB is refused before it is parsed. */
+static void trap_file_too_large(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/gdsmc_test_scene_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    char block[4096];
+    memset(block, ';', sizeof block);   /* comment lines */
+    for (size_t i = 0; i < sizeof block; i += 64)
+        block[i + 63] = '\n';
+    for (int i = 0; i < 256; i++)       /* exactly 1 MiB: still allowed */
+        assert_int_equal(write(fd, block, sizeof block), (ssize_t)sizeof block);
+    sim_scene s;
+    char msg[1024], expected[1100];
+    assert_int_equal(vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg), SIM_OK);
+    assert_int_equal(write(fd, "\n", 1), 1);   /* one byte more */
+    close(fd);
+    sim_status st = vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg);
+    unlink(path);
+    snprintf(expected, sizeof expected, "%s: too large (allowed at most 1048576 bytes)", path);
+    assert_int_equal(st, SIM_EINVAL);
+    assert_string_equal(msg, expected);
+}
+
+/* ---- engine traps: valid scenes sim_engine_create() refuses ------------ */
+
+static void expect_engine_error(const char *text, sim_status status, const char *expected)
+{
+    static char dummy;
+    sim_scene s;
+    sim_error err;
+    char msg[1024];
+    parse_ok(text, NULL, 0, &s);
+    sim_engine *e = (sim_engine *)(void *)&dummy;   /* must come back NULL */
+    sim_status st = sim_engine_create(&s, &e, &err);
+    if (st == SIM_OK)
+        sim_engine_free(e);
+    assert_int_equal(st, status);
+    assert_null(e);
+    vfy_scene_format_error(&s, &err, msg, sizeof msg);
+    assert_string_equal(msg, expected);
+}
+
+#define ENGINE_TRAP(name, text, expected)                          \
+    static void name(void **state)                                 \
+    {                                                              \
+        (void)state;                                               \
+        expect_engine_error(text, SIM_EUNSUPPORTED, expected);     \
+    }
+
+ENGINE_TRAP(engine_background_timestep,
+            "[scene]\nscheme = timestep\ndt = 0.25\n[collisions]\nkernel = hard-spheres\n"
+            "[background]\nkernel = hard-spheres\n",
+            "t.ini: background: the background is not implemented in the time-step scheme "
+            "(supported: jump)")
+ENGINE_TRAP(engine_two_species,
+            "[particles]\ninitial = two-maxwellians\nfraction = 0.25\nmass1 = 1\n"
+            "velocity1 = 0 0 0\ntemperature1 = 1\nmass2 = 2.5\nvelocity2 = 0 0 0\n"
+            "temperature2 = 1\n",
+            "t.ini:7: particles.mass2: the engine simulates one species: mass2 = 2.5 must equal "
+            "mass1 = 1")
+ENGINE_TRAP(engine_shear, "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1.5\n",
+            "t.ini: shear: shear flow is not implemented yet")
+ENGINE_TRAP(engine_heat_flux, "[heat-flux]\nstrength = 0.025\n",
+            "t.ini: heat-flux: the heat-flux force is not implemented yet")
+ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\n",
+            "t.ini:3: collisions.model: model ehs is not implemented yet (supported: ihs)")
+ENGINE_TRAP(engine_timestep_maxwell,
+            "[scene]\nscheme = timestep\ndt = 0.25\n[collisions]\nkernel = maxwell\n",
+            "t.ini:5: collisions.kernel: the time-step scheme implements hard spheres only (the "
+            "contact rule of paper C; kernel exponent is 0)")
+ENGINE_TRAP(engine_timestep_vhs,
+            "[scene]\nscheme = timestep\ndt = 0.25\n[collisions]\nkernel = vhs\nexponent = 0.35\n",
+            "t.ini:5: collisions.kernel: the time-step scheme implements hard spheres only (the "
+            "contact rule of paper C; kernel exponent is 0.35)")
+ENGINE_TRAP(engine_gaussian_jump, "[heating]\ntype = gaussian\nstrength = 0.5\n",
+            "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep (the jump "
+            "scheme supports white-noise)")
+ENGINE_TRAP(engine_keep_temperature_jump, "[heating]\ntype = gaussian\nkeep_temperature = true\n",
+            "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep (the jump "
+            "scheme supports white-noise)")
+ENGINE_TRAP(engine_non_gaussian_jump, "[heating]\ntype = non-gaussian\nstrength = 0.5\n",
+            "t.ini:2: heating.type: non-gaussian heating needs scene.scheme = timestep (the jump "
+            "scheme supports white-noise)")
+
+/* At most 1e12 steps between output times: interval 1 (the defaults t_end = 1,
+ * outputs = 2), dt = 1e-13 gives ceil(1e13 (1 - 1e-9)) = 9.99999999e12 steps. */
+static void engine_too_many_steps(void **state)
+{
+    (void)state;
+    expect_engine_error("[scene]\nscheme = timestep\ndt = 1e-13\n", SIM_EINVAL,
+                        "t.ini:3: scene.dt: 1e-13 gives 1e+13 steps between output times "
+                        "(allowed at most 1e12)");
+    sim_scene s;   /* the boundary: 1e-12 gives 999999999000 steps, accepted */
+    sim_engine *e = NULL;
+    sim_error err;
+    parse_ok("[scene]\nscheme = timestep\ndt = 1e-12\n", NULL, 0, &s);
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_OK);
+    assert_close(sim_engine_step(e), 1.0 / 999999999000.0, 1e-15, 0.0);
+    sim_engine_free(e);
+}
+
+/* ---- reference traps: scenes no deterministic reference covers ---------- */
+
+static void refs_error(const char *text, sim_status status, char *msg, size_t msglen)
+{
+    sim_scene s;
+    sim_error err;
+    vfy_refs refs;
+    parse_ok(text, NULL, 0, &s);
+    sim_status st = vfy_scene_references(&s, &refs, &err);
+    if (st == SIM_OK)
+        vfy_refs_free(&refs);
+    assert_int_equal(st, status);
+    assert_null(refs.values);   /* nothing left allocated */
+    assert_int_equal(refs.count, 0);
+    vfy_scene_format_error(&s, &err, msg, msglen);
+}
+
+static void expect_refs_error(const char *text, const char *expected)
+{
+    char msg[1024];
+    refs_error(text, SIM_EUNSUPPORTED, msg, sizeof msg);
+    assert_string_equal(msg, expected);
+}
+
+#define REFS_TRAP(name, text, expected)        \
+    static void name(void **state)             \
+    {                                          \
+        (void)state;                           \
+        expect_refs_error(text, expected);     \
+    }
+
+REFS_TRAP(refs_no_collisions, "[heating]\nstrength = 0.5\n",
+          "t.ini: collisions: no reference applies: paper A references need [collisions]")
+REFS_TRAP(refs_shear, "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1\n",
+          "t.ini: shear: no reference implemented for shear flow yet")
+REFS_TRAP(refs_heat_flux, "[collisions]\n[heat-flux]\nstrength = 0.025\n",
+          "t.ini: heat-flux: no reference implemented for the heat-flux force yet")
+REFS_TRAP(refs_gaussian,
+          "[scene]\nscheme = timestep\ndt = 0.25\n[collisions]\nkernel = hard-spheres\n"
+          "[heating]\ntype = gaussian\nstrength = 0.5\n",
+          "t.ini:7: heating.type: paper A references need white-noise heating")
+REFS_TRAP(refs_two_maxwellians,
+          "[particles]\ninitial = two-maxwellians\nfraction = 0.25\nmass1 = 1\n"
+          "velocity1 = 0 0 0\ntemperature1 = 1\nmass2 = 1\nvelocity2 = 0 0 0\n"
+          "temperature2 = 1\n[collisions]\n",
+          "t.ini:2: particles.initial: paper A references need an initial Maxwellian at rest "
+          "(allowed maxwellian)")
+REFS_TRAP(refs_drift, "[particles]\nvelocity = 0 1 0\n[collisions]\n",
+          "t.ini:2: particles.velocity: paper A references need an initial Maxwellian at rest "
+          "(allowed 0 0 0)")
+REFS_TRAP(refs_mass, "[particles]\nmass = 2\n[collisions]\n",
+          "t.ini:2: particles.mass: paper A references are for unit mass (got 2)")
+REFS_TRAP(refs_vhs, "[collisions]\nkernel = vhs\nexponent = 0.5\n",
+          "t.ini:3: collisions.exponent: no reference for VHS lambda = 0.5 (only 0 and 1)")
+REFS_TRAP(refs_background_heating, "[background]\n[heating]\nstrength = 1\n",
+          "t.ini: background: no reference for a background combined with heating, shear or a "
+          "heat-flux force")
+REFS_TRAP(refs_background_kernels, "[collisions]\nkernel = hard-spheres\n[background]\n"
+          "kernel = maxwell\n",
+          "t.ini:2: collisions.kernel: paper B references need the same kernel for binary and "
+          "background collisions (background.kernel is maxwell)")
+
+/* A reference whose integration fails (t_end = 1e300 is far beyond what CVODE
+ * can step to) reports which reference, the CVODE flag and the reason.  The
+ * text after the flag is SUNDIALS' own, so only the part up to it is exact. */
+static void expect_cvode_failure(const char *text, const char *prefix)
+{
+    char msg[1024];
+    refs_error(text, SIM_EINVAL, msg, sizeof msg);
+    if (strncmp(msg, prefix, strlen(prefix)) != 0)
+        print_error("message '%s' does not start with '%s'\n", msg, prefix);
+    assert_int_equal(strncmp(msg, prefix, strlen(prefix)), 0);
+    assert_non_null(strstr(msg, " (CVODE in CVode: "));
+}
+
+static void refs_cvode_failures(void **state)
+{
+    (void)state;
+    expect_cvode_failure("[scene]\nt_end = 1e300\n[collisions]\nkernel = hard-spheres\n"
+                         "rate = 4\nrestitution = 0.5\n[heating]\nstrength = 0.125\n",
+                         "t.ini: T_maxwell_closure: CVODE failed at t = 0: CV_");
+    expect_cvode_failure("[scene]\nt_end = 1e300\n[background]\n",
+                         "t.ini: T_finite_n: CVODE failed at t = 0: CV_");
+    expect_cvode_failure("[scene]\nt_end = 1e300\n[background]\nkernel = hard-spheres\n",
+                         "t.ini: T_le: CVODE failed at t = 0: CV_");
+}
 
 static void trap_missing_file(void **state)
 {
@@ -733,8 +979,49 @@ int main(void)
         cmocka_unit_test(trap_directory),
         cmocka_unit_test(trap_nul_byte),
         cmocka_unit_test(trap_null_arguments),
+        cmocka_unit_test(trap_ensembles_0),
+        cmocka_unit_test(trap_seed_negative),
+        cmocka_unit_test(trap_seed_overflow),
+        cmocka_unit_test(trap_vector_four_numbers),
+        cmocka_unit_test(trap_fraction_above_1),
+        cmocka_unit_test(trap_title_too_long_in_file),
+        cmocka_unit_test(trap_mixture_key_with_shell),
+        cmocka_unit_test(trap_exponent_contradicts_maxwell),
+        cmocka_unit_test(trap_observation_unknown),
+        cmocka_unit_test(trap_observation_without_heating),
+        cmocka_unit_test(trap_unknown_section_no_keys),
+        cmocka_unit_test(trap_override_too_long),
+        cmocka_unit_test(trap_file_too_large),
+    };
+    const struct CMUnitTest engine_trap[] = {
+        cmocka_unit_test(engine_background_timestep),
+        cmocka_unit_test(engine_two_species),
+        cmocka_unit_test(engine_shear),
+        cmocka_unit_test(engine_heat_flux),
+        cmocka_unit_test(engine_ehs),
+        cmocka_unit_test(engine_timestep_maxwell),
+        cmocka_unit_test(engine_timestep_vhs),
+        cmocka_unit_test(engine_gaussian_jump),
+        cmocka_unit_test(engine_keep_temperature_jump),
+        cmocka_unit_test(engine_non_gaussian_jump),
+        cmocka_unit_test(engine_too_many_steps),
+    };
+    const struct CMUnitTest refs_trap[] = {
+        cmocka_unit_test(refs_no_collisions),
+        cmocka_unit_test(refs_shear),
+        cmocka_unit_test(refs_heat_flux),
+        cmocka_unit_test(refs_gaussian),
+        cmocka_unit_test(refs_two_maxwellians),
+        cmocka_unit_test(refs_drift),
+        cmocka_unit_test(refs_mass),
+        cmocka_unit_test(refs_vhs),
+        cmocka_unit_test(refs_background_heating),
+        cmocka_unit_test(refs_background_kernels),
+        cmocka_unit_test(refs_cvode_failures),
     };
     int failed = cmocka_run_group_tests_name("scene", good, NULL, NULL);
     failed += cmocka_run_group_tests_name("scene trap", trap, NULL, NULL);
+    failed += cmocka_run_group_tests_name("scene engine trap", engine_trap, NULL, NULL);
+    failed += cmocka_run_group_tests_name("scene reference trap", refs_trap, NULL, NULL);
     return failed ? 1 : 0;
 }

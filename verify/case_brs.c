@@ -216,6 +216,7 @@ sim_status vfy_case_brs_convergence(const vfy_case *c, const vfy_options *o, vfy
         conf_prev = conf;
         vfy_refs_free(&refs);
         sim_ensemble_result_free(&res);
+        status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
     }
 
     if (status == SIM_OK) {
@@ -241,11 +242,11 @@ sim_status vfy_case_brs_convergence(const vfy_case *c, const vfy_options *o, vfy
             const char *T_names[] = {"T_exact"}, *u_names[] = {"uy_exact"};
             const double *T_refs[] = {exact}, *u_refs[] = {buf[U_EXACT] + M};
             snprintf(name, sizeof name, "%s-T", c->name);
-            int rc = vfy_write_curves(o, name, title, t, M, 1, T_names, T_refs, rows, n,
+            int rc = vfy_write_curves(o, name, title, comment, t, M, 1, T_names, T_refs, rows, n,
                                       buf[BAND_T], buf[BAND_T_CI], "T", 0.0, 1);
             snprintf(name, sizeof name, "%s-uy", c->name);
             if (rc == 0)
-                rc = vfy_write_curves(o, name, title, t, M, 1, u_names, u_refs, rows, n,
+                rc = vfy_write_curves(o, name, title, comment, t, M, 1, u_names, u_refs, rows, n,
                                       buf[BAND_U], buf[BAND_U_CI], "uy", 0.0, 1);
             if (rc != 0)
                 status = vfy_io_error(name, msg, msglen);
@@ -309,7 +310,9 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
         goto done;
     }
     if (!vfy_refs_column(&refs, "T_le", buf[T_LE])) {
-        snprintf(msg, msglen, "%s: the scene has no hard-sphere closures (kernels?)", scene.file);
+        snprintf(msg, msglen, "%s: the scene has no hard-sphere closures (allowed "
+                 "collisions.kernel = hard-spheres and background.kernel = hard-spheres)",
+                 scene.file);
         status = SIM_EINVAL;
         goto done;
     }
@@ -388,6 +391,8 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
         vfy_table_cell(&table, "%llu", (unsigned long long)counts.violations);
         vfy_cost_cells(&table, cpu, wall, events);
         wall_total += wall;
+        if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
+            goto done;
     }
 
     /* n -> infinity: of T*, and of T(t) at every output time for the figure. */
@@ -452,11 +457,11 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
     const char *T_names[] = {"T_le", "T_grad"}, *u_names[] = {"uy_le", "uy_grad"};
     const double *T_refs[] = {buf[T_LE], buf[T_GRAD]}, *u_refs[] = {buf[UY_LE], buf[UY_GRAD]};
     snprintf(name, sizeof name, "%s-T", c->name);
-    int rc = vfy_write_curves(o, name, title, t, M, 2, T_names, T_refs, rows + 1, n,
+    int rc = vfy_write_curves(o, name, title, comment, t, M, 2, T_names, T_refs, rows + 1, n,
                               buf[BAND_T], buf[BAND_T_CI], "T", 0.0, 0);
     snprintf(name, sizeof name, "%s-uy", c->name);
     if (rc == 0)
-        rc = vfy_write_curves(o, name, title, t, M, 2, u_names, u_refs, rows, n, buf[BAND_U],
+        rc = vfy_write_curves(o, name, title, comment, t, M, 2, u_names, u_refs, rows, n, buf[BAND_U],
                               buf[BAND_U_CI], "uy", 0.0, 0);
     if (rc != 0)
         status = vfy_io_error(name, msg, msglen);

@@ -167,6 +167,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
         noise_prev = noise;
         vfy_refs_free(&refs);
         sim_ensemble_result_free(&res);
+        status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
     }
     if (status != SIM_OK)
         goto done;
@@ -190,7 +191,7 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
         goto done;
     const char *ref_names[] = {"T_exact"};
     const double *ref_cols[] = {exact};
-    if (vfy_write_curves(o, c->name, title, t, M, 1, ref_names, ref_cols, rows, n, band_mean, band_ci,
+    if (vfy_write_curves(o, c->name, title, comment, t, M, 1, ref_names, ref_cols, rows, n, band_mean, band_ci,
                      "T_raw", 2.0, 1) != 0)
         status = vfy_io_error(c->name, msg, msglen);
 done:
@@ -275,6 +276,8 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
         vfy_cost_cells(&table, res.cpu_seconds, res.wall_seconds, events);
         wall_total += res.wall_seconds;
         sim_ensemble_result_free(&res);
+        if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
+            goto done;
     }
 
     /* n -> infinity at every output time. */
@@ -349,7 +352,7 @@ sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vf
     n_all[rows] = 0;   /* the extrapolated curve */
     const char *ref_names[] = {"T_maxwell_closure", "T_sonine_closure"};
     const double *ref_cols[] = {maxw, sonine};
-    if (vfy_write_curves(o, c->name, title, t, M, 2, ref_names, ref_cols, rows + 1, n_all, band_mean,
+    if (vfy_write_curves(o, c->name, title, comment, t, M, 2, ref_names, ref_cols, rows + 1, n_all, band_mean,
                      band_ci, "T", 0.0, 0) != 0)
         status = vfy_io_error(c->name, msg, msglen);
 done:

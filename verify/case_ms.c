@@ -263,6 +263,7 @@ typedef struct ms_figure {
     size_t ncurves;
     const char *const *curves;
     const double *const *yfine;
+    const char *comment;   /* provenance (vfy_run_comment), the files' first lines */
 } ms_figure;
 
 /* <name>-points.csv (x, each series and its confidence half-width),
@@ -276,6 +277,7 @@ static int ms_write_figure(const vfy_options *o, const ms_figure *f)
                                sizeof tmp);
     if (out == NULL)
         return -1;
+    vfy_write_comment(out, f->comment);
     fprintf(out, "%s", f->xlabel);
     for (size_t j = 0; j < f->nseries; j++)
         fprintf(out, ",%s,%s_ci", f->series[j], f->series[j]);
@@ -293,6 +295,7 @@ static int ms_write_figure(const vfy_options *o, const ms_figure *f)
                          sizeof tmp);
     if (out == NULL)
         return -1;
+    vfy_write_comment(out, f->comment);
     fprintf(out, "%s", f->xlabel);
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, ",%s", f->curves[j]);
@@ -309,6 +312,7 @@ static int ms_write_figure(const vfy_options *o, const ms_figure *f)
     out = vfy_file_begin(vfy_report_path(o, f->name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
     if (out == NULL)
         return -1;
+    vfy_write_comment(out, f->comment);
     fprintf(out, "# %s: gnuplot %s\nset terminal pngcairo size 900,650 font ',10'\n"
                  "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
                  "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
@@ -445,9 +449,11 @@ sim_status vfy_case_ms_a2(const vfy_case *c, const vfy_options *o, vfy_report *r
         vfy_table_cell(&table, "%.2f", run->res.wall_seconds);
         vfy_table_cell(&table, "%.1f", events > 0 ? 1e9 * run->res.cpu_seconds / events : 0.0);
         wall_total += run->res.wall_seconds;
+        status = vfy_write_rows_so_far(o, c->name, &table, &run->solver, msg, msglen);
     }
+    char comment[600] = "";
     if (status == SIM_OK) {
-        char comment[600], sizes[300], title[200], notes[3000];
+        char sizes[300], title[200], notes[3000];
         vfy_run_comment(&runs[0].solver, comment, sizeof comment);
         snprintf(title, sizeof title, "%s: paper C %s, a2 against alpha, %s (%s sizes)",
                  c->name, ms_info[th].figure, ms_info[th].label,
@@ -516,7 +522,7 @@ sim_status vfy_case_ms_a2(const vfy_case *c, const vfy_options *o, vfy_report *r
         snprintf(title, sizeof title, "%s: a2 against alpha, %s (paper C %s)", c->name,
                  ms_info[th].label, ms_info[th].figure);
         ms_figure f = {c->name, title, "alpha", "a2", 0, np, x, 3, series, ys, cs,
-                       NF, xf, 2, curves[th], yf};
+                       NF, xf, 2, curves[th], yf, comment};
         int rc = np > 0 ? ms_write_figure(o, &f) : 0;
         if (rc == 0 && th == MS_GAUSSIAN && np > 0) {
             const char *s3[] = {"a3"};
@@ -525,7 +531,7 @@ sim_status vfy_case_ms_a2(const vfy_case *c, const vfy_options *o, vfy_report *r
             snprintf(title, sizeof title, "%s: a3 against alpha, Gaussian thermostat (paper C "
                      "Figure 6)", c->name);
             ms_figure f3 = {fname, title, "alpha", "a3", 0, np, x, 1, s3, y3, c3,
-                            0, NULL, 0, NULL, NULL};
+                            0, NULL, 0, NULL, NULL, comment};
             rc = ms_write_figure(o, &f3);
         }
         if (rc != 0)
@@ -625,6 +631,7 @@ sim_status vfy_case_ms_table1(const vfy_case *c, const vfy_options *o, vfy_repor
             vfy_table_cell(&table, "%.2f", run.res.cpu_seconds);
             vfy_table_cell(&table, "%.2f", run.res.wall_seconds);
             wall_total += run.res.wall_seconds;
+            status = vfy_write_rows_so_far(o, c->name, &table, &run.solver, msg, msglen);
             sim_ensemble_result_free(&run.res);
         }
     }
@@ -831,9 +838,11 @@ sim_status vfy_case_ms_tails(const vfy_case *c, const vfy_options *o, vfy_report
         const char *series[] = {"G (DSMC)"}, *curves[] = {"G of the Maxwellian"};
         const double *ys[] = {G}, *cs[] = {Gc}, *yf[] = {Gphi};
         ms_figure fig = {fname, title, "c", "G(c)", 1, bins, cc, 1, series, ys, cs,
-                         bins, cc, 1, curves, yf};
+                         bins, cc, 1, curves, yf, comment};
         if (ms_write_figure(o, &fig) != 0)
             status = vfy_io_error(fname, msg, msglen);
+        else
+            status = vfy_write_rows_so_far(o, c->name, &table, &run.solver, msg, msglen);
         free(f), free(fc), free(G), free(Gc), free(Gphi), free(cc);
         sim_ensemble_result_free(&run.res);
     }

@@ -32,6 +32,19 @@ sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const v
     return SIM_OK;
 }
 
+sim_status vfy_write_rows_so_far(const vfy_options *o, const char *name, const vfy_table *table,
+                                 const sim_scene *scene, char *msg, size_t msglen)
+{
+    char path[1024], comment[800];
+    size_t used = strlen(vfy_run_comment(scene, comment, sizeof comment));
+    snprintf(comment + used, sizeof comment - used, "\nin progress: %zu finished rows so far",
+             vfy_table_rows(table));
+    if (vfy_table_write_csv(table, vfy_report_path(o, name, ".csv", path, sizeof path),
+                            comment) != 0)
+        return vfy_io_error(path, msg, msglen);
+    return SIM_OK;
+}
+
 sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene *scene,
                        const sim_scene *solver, vfy_refs *refs, sim_ensemble_result *res,
                        char *msg, size_t msglen)
@@ -79,6 +92,7 @@ void vfy_result_column(const sim_ensemble_result *r, int k, double *mean, double
 
 
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
+                     const char *comment,
                         const double *t, size_t M, size_t nref, const char *const *ref_names,
                         const double *const *refs, size_t rows, const size_t *n,
                         const double *mean, const double *ci, const char *quantity,
@@ -89,6 +103,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                              sizeof tmp);
     if (f == NULL)
         return -1;
+    vfy_write_comment(f, comment);
     fprintf(f, "t");
     for (size_t j = 0; j < nref; j++)
         fprintf(f, ",%s", ref_names[j]);
@@ -114,6 +129,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
     f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
     if (f == NULL)
         return -1;
+    vfy_write_comment(f, comment);
     fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
                "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
                "set xrange [%g:*]\n"

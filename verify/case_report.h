@@ -35,6 +35,13 @@ sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const v
                                  const char *comment, const char *title, const char *notes,
                                  char *msg, size_t msglen);
 
+/* After each finished row: the rows so far as out_dir/<name>.csv, its
+ * comment saying that the case is still running, so that an interrupted run
+ * leaves what it finished on disk (vfy_write_case_tables replaces it at the
+ * end).  scene gives the comment's provenance (vfy_run_comment). */
+sim_status vfy_write_rows_so_far(const vfy_options *o, const char *name, const vfy_table *table,
+                                 const sim_scene *scene, char *msg, size_t msglen);
+
 /* msg = "PATH: cannot write: strerror(errno)"; returns SIM_EIO. */
 sim_status vfy_io_error(const char *path, char *msg, size_t msglen);
 
@@ -47,6 +54,7 @@ void vfy_result_column(const sim_ensemble_result *r, int k, double *mean, double
  * for the first four rows, or all in one), rendered to <name>.png when gnuplot
  * is installed.  mean and ci are rows x M.  Returns 0 or -1 (errno). */
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
+                     const char *comment,
                      const double *t, size_t M, size_t nref, const char *const *ref_names,
                      const double *const *refs, size_t rows, const size_t *n,
                      const double *mean, const double *ci, const char *quantity,

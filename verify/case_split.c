@@ -173,8 +173,8 @@ static double split_step_for(const split_row *rows, size_t count, double order, 
 }
 
 /* The figure: |difference in T̄| against h, log-log, with error bars. */
-static int split_figure(const vfy_options *o, const char *name, const split_row *rows,
-                        size_t levels)
+static int split_figure(const vfy_options *o, const char *name, const char *comment,
+                        const split_row *rows, size_t levels)
 {
     char data[1024], gp[1024], png[1024], tmp[1100], file[200];
     snprintf(file, sizeof file, "%s-points", name);
@@ -182,6 +182,7 @@ static int split_figure(const vfy_options *o, const char *name, const split_row 
                              sizeof tmp);
     if (f == NULL)
         return -1;
+    vfy_write_comment(f, comment);
     fprintf(f, "h,euler_dT,euler_dT_ci,strang_dT,strang_dT_ci\n");
     for (size_t k = 0; k < levels; k++)
         fprintf(f, "%.10g,%.6g,%.4g,%.6g,%.4g\n", rows[k].h, fabs(rows[k].dT), rows[k].dT_ci,
@@ -191,6 +192,7 @@ static int split_figure(const vfy_options *o, const char *name, const split_row 
     f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
     if (f == NULL)
         return -1;
+    vfy_write_comment(f, comment);
     const double h0 = rows[0].h, e0 = fabs(rows[0].dT), s0 = fabs(rows[levels].dT);
     fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 900,650 font ',10'\n"
                "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
@@ -395,7 +397,7 @@ sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r
     if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
                                         msglen)) != SIM_OK)
         goto done;
-    if (split_figure(o, c->name, rows, levels) != 0)
+    if (split_figure(o, c->name, comment, rows, levels) != 0)
         status = vfy_io_error(c->name, msg, msglen);
 done:
     vfy_table_free(&table);

@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <gsl/gsl_errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,7 +17,8 @@
 #include "sonine.h"
 #include "table.h"
 
-enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_BAD_INPUT = 2 };
+/* 130 = 128 + SIGINT, the shell's code for a run stopped by Ctrl-C. */
+enum { EXIT_OK = 0, EXIT_CHECK_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_STOPPED = 130 };
 #define MAX_SETS 64
 
 static const char usage_main[] =
@@ -78,7 +80,8 @@ static const char usage_verify[] =
     "\n"
     "  --suite S    quick (CI sizes, minutes), paper (every case at the paper's\n"
     "               sizes, the default), or a paper's own suite at the paper's\n"
-    "               sizes: grw (paper A), brs (paper B), ... (--list shows all)\n"
+    "               sizes: grw (paper A), brs (paper B), ..., hard (cases chosen\n"
+    "               to break a careless solver) (--list shows all)\n"
     "  --case NAME  only this case (at the suite's sizes); --list shows them\n"
     "  --out DIR    where reports go (default: reports for the quick suite,\n"
     "               reports/paper for the papers' sizes)\n"
@@ -89,22 +92,40 @@ static const char usage_verify[] =
     "  --solver-set S.K=V  override a key for the simulation only: a deliberately\n"
     "               wrong solver, which the checks must catch (e.g.\n"
     "               --solver-set collisions.restitution=0.45)\n"
-    "  --list       list the cases and suites\n";
+    "  --resume     take every simulation already finished by an earlier run with\n"
+    "               the same options from DIR/.checkpoint instead of running it\n"
+    "               again; the tables come out byte-identical to an uninterrupted\n"
+    "               run's (the recorded CPU and wall times included)\n"
+    "  --list       list the cases and suites\n"
+    "\n"
+    "Nothing is lost: every finished simulation is saved at once in\n"
+    "DIR/.checkpoint, and each case's CSV table is rewritten after each finished\n"
+    "row (files are written to FILE.tmp and renamed). SIGINT or SIGTERM stops\n"
+    "the run after the ensemble in progress, with exit status 130; a second\n"
+    "signal stops it at once.\n";
 
 static const char usage_bench[] =
     "usage: gdsmc bench [--out FILE.csv] [--md FILE.md] [--max-n N] [--seconds S]\n"
     "\n"
-    "Measure, on one core, events per CPU second of:\n"
-    "  floor     the bare hard-sphere kernel (random indices, acceptance test and\n"
-    "            collision arithmetic; no waiting times, majorants or counters)\n"
+    "Measure, on one core (CPU seconds of the thread), events per second of:\n"
+    "  floor     the engine's hard-sphere kernel without its bookkeeping: the same\n"
+    "            random indices, two-stage acceptance test, unit vector and\n"
+    "            collision arithmetic, no candidate times, rates or counters\n"
     "  hs-relax  the engine on elastic hard spheres in one cell relaxing from two\n"
     "            counter-streaming Maxwellians, n = 1e3, 1e4, ... up to --max-n\n"
-    "            (accepted collisions per second)\n"
-    "  grw-ex3   paper A Ex 3 at n = 1024 (candidate events per second)\n"
-    "  brs-ex4   paper B Ex 4, Algorithm 2, at n = 1024\n"
+    "            (accepted collisions per second; n <= 1e6: the best of 3 runs of\n"
+    "            engine and floor each)\n"
+    "  grw-ex3   paper A Ex 3 at n = 1024 (Maxwell, heating; candidate events)\n"
+    "  brs-ex4   paper B Ex 4, Algorithm 2, at n = 1024 (candidate events)\n"
+    "  ms-timestep  the time-step scheme on paper C's white-noise gas, one system\n"
+    "            of n = 2e5 (accepted collisions), beside the floor at n = 2e5\n"
+    "  grw-ex3-N10000  paper A Ex 3 with 10 000 ensembles on 1 and on 2 threads\n"
+    "            (events per wall second, and the speed-up; fewer ensembles when\n"
+    "            S < 1)\n"
     "and print the table (Markdown) with floor_ratio = rate / floor rate at the same\n"
-    "n (the paper scenes against the floor at n = 1000), the acceptance rate, bytes\n"
-    "per particle and the process's peak memory. Progress goes to standard error.\n"
+    "n (the paper scenes against the floor at n = 1000), the acceptance (accepted\n"
+    "/ candidates), bytes per particle of a workspace and the process's peak\n"
+    "memory. Progress lines, with the load average, go to standard error.\n"
     "\n"
     "  --out FILE    also write the table as CSV\n"
     "  --md FILE     also write it as Markdown\n"
@@ -138,8 +159,28 @@ typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
     size_t nsets, nsolver_sets;
-    int quiet, list;
+    int quiet, list, resume;
 } args;
+
+static void on_stop_signal(int sig)
+{
+    (void)sig;
+    sim_ensemble_request_stop();   /* async-signal-safe: sets a flag */
+}
+
+/* SIGINT and SIGTERM ask the ensembles to stop (exit 130 with what is done
+ * on disk); the handler is reset after the first signal, so a second one
+ * ends the process at once. */
+static void catch_stop_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop_signal;
+    sa.sa_flags = (int)SA_RESETHAND;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
 
 static int bad_usage(const char *cmd, const char *fmt, const char *what)
 {
@@ -166,6 +207,9 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
             continue;
         } else if (strcmp(s, "--list") == 0 && strcmp(cmd, "verify") == 0) {
             a->list = 1;
+            continue;
+        } else if (strcmp(s, "--resume") == 0 && strcmp(cmd, "verify") == 0) {
+            a->resume = 1;
             continue;
         } else if (strcmp(s, "--set") == 0) {
             if (a->nsets == MAX_SETS)
@@ -213,8 +257,12 @@ static FILE *open_out(const char *cmd, const char *path, char *tmp, size_t tmple
 
 static int close_out(const char *cmd, FILE *f, const char *path, const char *tmp)
 {
-    if (path == NULL)
-        return fflush(stdout) == 0 ? EXIT_OK : EXIT_BAD_INPUT;
+    if (path == NULL) {
+        if (fflush(stdout) == 0 && !ferror(stdout))
+            return EXIT_OK;
+        fprintf(stderr, "gdsmc %s: standard output: cannot write: %s\n", cmd, strerror(errno));
+        return EXIT_BAD_INPUT;
+    }
     if (vfy_file_commit(f, tmp, path, 1) != 0) {
         fprintf(stderr, "gdsmc %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
         return EXIT_BAD_INPUT;
@@ -257,10 +305,13 @@ static int cmd_run(int argc, char **argv)
 
     vfy_options o = {.progress = a.quiet ? NULL : stderr};
     sim_ensemble_result res;
-    if (vfy_simulate(&scene, &o, scene.file, &res, msg, sizeof msg) != SIM_OK) {
-        fprintf(stderr, "gdsmc run: %s\n", msg);
+    catch_stop_signals();
+    sim_status status = vfy_simulate(&scene, &o, scene.file, &res, msg, sizeof msg);
+    if (status != SIM_OK) {
+        fprintf(stderr, "gdsmc run: %s%s\n", msg,
+                status == SIM_ECANCELED ? "; nothing written" : "");
         sim_ensemble_result_free(&res);
-        return EXIT_BAD_INPUT;
+        return status == SIM_ECANCELED ? EXIT_STOPPED : EXIT_BAD_INPUT;
     }
 
     char tmp[1100];
@@ -319,8 +370,8 @@ static int cmd_reference(int argc, char **argv)
         vfy_refs_free(&refs);
         return EXIT_BAD_INPUT;
     }
-    fprintf(f, "# gdsmc %s reference %s: n = %zu\n", GDSMC_VERSION, scene.file,
-            scene.particles.n);
+    fprintf(f, "# gdsmc %s reference %s: seed %llu (unused: deterministic), n = %zu\n",
+            GDSMC_VERSION, scene.file, (unsigned long long)scene.seed, scene.particles.n);
     fputs("t", f);
     for (size_t j = 0; j < refs.count; j++)
         fprintf(f, ",%s", refs.names[j]);
@@ -477,8 +528,11 @@ static int cmd_verify(int argc, char **argv)
         char suites[128];
         printf("suites: quick (CI sizes), paper (all cases, paper sizes), and per paper: %s\n"
                "cases:\n", vfy_paper_suites(suites, sizeof suites));
+        int width = 0;
         for (size_t i = 0; i < vfy_case_count(); i++)
-            printf("  %-10s %-6s %s%s\n", vfy_case_at(i)->name, vfy_case_at(i)->suite,
+            width = (int)fmax(width, (double)strlen(vfy_case_at(i)->name));
+        for (size_t i = 0; i < vfy_case_count(); i++)
+            printf("  %-*s %-6s %s%s\n", width, vfy_case_at(i)->name, vfy_case_at(i)->suite,
                    vfy_case_at(i)->summary, vfy_case_at(i)->quick ? " [quick]" : "");
         return EXIT_OK;
     }
@@ -501,7 +555,17 @@ static int cmd_verify(int argc, char **argv)
         .solver_overrides = a.solver_sets,
         .nsolver_overrides = a.nsolver_sets,
         .progress = a.quiet ? NULL : stderr,
+        .resume = a.resume,
     };
+    char checkpoints[1100];
+    snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint", o.out_dir);
+    o.checkpoint_dir = checkpoints;
+    /* For tests: behave as if SIGINT arrived after K finished simulations. */
+    size_t countdown = 0;
+    const char *stop_after = getenv("GDSMC_STOP_AFTER_RUNS");
+    if (stop_after && (countdown = strtoul(stop_after, NULL, 10)) > 0)
+        o.stop_countdown = &countdown;
+    catch_stop_signals();
     vfy_report report;
     vfy_report_init(&report, stdout);
     char msg[1024] = "";
@@ -513,6 +577,11 @@ static int cmd_verify(int argc, char **argv)
     }
     size_t failed = report.failed;
     vfy_report_free(&report);
+    if (status == SIM_ECANCELED) {
+        fprintf(stderr, "gdsmc verify: %s; the finished simulations are saved in %s: run the "
+                "same command with --resume to finish\n", msg, checkpoints);
+        return EXIT_STOPPED;
+    }
     if (status != SIM_OK) {
         fprintf(stderr, "gdsmc verify: %s\n", msg);
         return EXIT_BAD_INPUT;

@@ -52,13 +52,26 @@ int vfy_table_number(vfy_table *t, int present, const char *fmt, double x)
     return vfy_table_cell(t, "%s", buf);
 }
 
+static int writes_files = 1;
+
+void vfy_set_writes_files(int on) { writes_files = on != 0; }
+int vfy_writes_files(void) { return writes_files; }
+
 FILE *vfy_file_begin(const char *path, char *tmp, size_t tmplen)
 {
+    /* An existing device or pipe (/dev/stdout, a FIFO) is written in place:
+     * renaming over it would replace the device node with a plain file. */
+    struct stat st;
+    if (writes_files && stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+        if (tmplen > 0)
+            tmp[0] = '\0';
+        return fopen(path, "w");
+    }
     if ((size_t)snprintf(tmp, tmplen, "%s.tmp", path) >= tmplen) {
         errno = ENAMETOOLONG;
         return NULL;
     }
-    return fopen(tmp, "w");
+    return fopen(writes_files ? tmp : "/dev/null", "w");
 }
 
 int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok)
@@ -66,13 +79,21 @@ int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok)
     ok = ok && !ferror(f);
     if (fclose(f) != 0)
         ok = 0;
+    if (!writes_files || tmp[0] == '\0')   /* another rank's, or a device written in place */
+        return ok ? 0 : -1;
     if (!ok) {
         int saved = errno;
         remove(tmp);
         errno = saved ? saved : EIO;
         return -1;
     }
-    return rename(tmp, path);
+    if (rename(tmp, path) != 0) {   /* e.g. path is a directory: leave no FILE.tmp */
+        int saved = errno;
+        remove(tmp);
+        errno = saved;
+        return -1;
+    }
+    return 0;
 }
 
 int vfy_ensure_dir(const char *path)
@@ -90,7 +111,22 @@ int vfy_ensure_dir(const char *path)
             return -1;
         *p = '/';
     }
-    return mkdir(buf, 0777) == 0 || errno == EEXIST ? 0 : -1;
+    if (mkdir(buf, 0777) == 0)
+        return 0;
+    struct stat st;   /* EEXIST: fine if it is a directory, not if it is a file */
+    if (errno == EEXIST && stat(buf, &st) == 0 && !S_ISDIR(st.st_mode))
+        errno = ENOTDIR;
+    return errno == EEXIST ? 0 : -1;
+}
+
+void vfy_write_comment(FILE *f, const char *comment)
+{
+    for (const char *line = comment; line && *line;) {
+        const char *end = strchr(line, '\n');
+        size_t len = end ? (size_t)(end - line) : strlen(line);
+        fprintf(f, "# %.*s\n", (int)len, line);
+        line = end ? end + 1 : line + len;
+    }
 }
 
 int vfy_table_write_csv(const vfy_table *t, const char *path, const char *comment)
@@ -99,12 +135,7 @@ int vfy_table_write_csv(const vfy_table *t, const char *path, const char *commen
     FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
-    for (const char *line = comment; line && *line;) {
-        const char *end = strchr(line, '\n');
-        size_t len = end ? (size_t)(end - line) : strlen(line);
-        fprintf(f, "# %.*s\n", (int)len, line);
-        line = end ? end + 1 : line + len;
-    }
+    vfy_write_comment(f, comment);
     for (size_t c = 0; c < t->ncols; c++)
         fprintf(f, "%s%s", c ? "," : "", t->cols[c]);
     fputc('\n', f);

@@ -34,6 +34,11 @@ static inline size_t vfy_table_rows(const vfy_table *t) { return t->ncells / t->
  * first, each line prefixed "# ".  Returns 0, or -1 with errno set. */
 int vfy_table_write_csv(const vfy_table *t, const char *path, const char *comment);
 
+/* Write comment (may be NULL, may hold several lines) as lines prefixed "# ":
+ * the provenance header of every CSV file and gnuplot script (seed, version,
+ * scene: vfy_run_comment). */
+void vfy_write_comment(FILE *f, const char *comment);
+
 /* Write "# title", the notes paragraph (may be NULL) and the table in
  * Markdown; empty cells print as "–".  Returns 0, or -1 with errno set. */
 int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *title,
@@ -43,9 +48,18 @@ int vfy_table_write_markdown(const vfy_table *t, const char *path, const char *t
 void vfy_table_print_markdown(const vfy_table *t, FILE *f, const char *title,
                               const char *notes);
 
+/* Whether this process writes files (1 by default).  Under MPI only rank 0
+ * does (verify/main.c): after vfy_set_writes_files(0), vfy_file_begin opens
+ * /dev/null and vfy_file_commit only closes it, so every rank runs the same
+ * code and no two processes write one file; vfy_gnuplot draws nothing. */
+void vfy_set_writes_files(int on);
+int vfy_writes_files(void);
+
 /* Open path.tmp for writing (tmp receives its name, tmplen bytes); commit with
  * vfy_file_commit, which closes it and renames it over path (or removes it
- * when ok = 0).  Returns NULL (errno set) on failure. */
+ * when ok = 0).  An existing path that is neither a regular file nor a
+ * directory (/dev/stdout, a FIFO) is opened in place instead (tmp = "").
+ * Returns NULL (errno set) on failure. */
 FILE *vfy_file_begin(const char *path, char *tmp, size_t tmplen);
 int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok);
 

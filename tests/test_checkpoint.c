@@ -1,0 +1,165 @@
+/* Checkpoints (verify/checkpoint.h): a saved result comes back bit for bit;
+ * a checkpoint of another scene, or a damaged one, is never used. */
+#include "test_util.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "checkpoint.h"
+
+static char dir[64];
+
+static int setup(void **state)
+{
+    (void)state;
+    snprintf(dir, sizeof dir, "/tmp/gdsmc-ckpt-XXXXXX");
+    return mkdtemp(dir) ? 0 : -1;
+}
+
+static sim_scene small_scene(void)
+{
+    sim_scene s;
+    sim_scene_defaults(&s);
+    s.outputs = 3;
+    s.particles.n = 8;
+    s.particles.ensembles = 5;
+    s.seed = 42;
+    return s;
+}
+
+/* A result with awkward numbers: non-representable decimals, a subnormal,
+ * an infinity, a negative zero. */
+static void fill(sim_ensemble_result *r, const sim_scene *s)
+{
+    memset(r, 0, sizeof *r);
+    r->outputs = s->outputs;
+    r->ensembles = s->particles.ensembles;
+    r->n = s->particles.n;
+    size_t len = r->outputs * SIM_OBS_COUNT;
+    r->t = malloc(r->outputs * sizeof *r->t);
+    r->mean = malloc(len * sizeof *r->mean);
+    r->var = malloc(len * sizeof *r->var);
+    r->ci = malloc(len * sizeof *r->ci);
+    assert_non_null(r->t && r->mean && r->var && r->ci);
+    for (size_t m = 0; m < r->outputs; m++)
+        r->t[m] = 0.1 * (double)m;
+    for (size_t i = 0; i < len; i++) {
+        r->mean[i] = 1.0 / 3.0 + (double)i;
+        r->var[i] = 4.9e-324 * (double)(i + 1);
+        r->ci[i] = i == 1 ? INFINITY : i == 2 ? -0.0 : sqrt((double)i);
+    }
+    r->counts = (sim_counts){12345678901234ULL, 7, 8, 0, 99};
+    r->cpu_seconds = 1.2345678901234567;
+    r->wall_seconds = 0.1;
+    r->threads = 2;
+}
+
+static void test_round_trip_is_exact(void **state)
+{
+    (void)state;
+    sim_scene s = small_scene();
+    sim_ensemble_result a, b;
+    fill(&a, &s);
+    char msg[256];
+    assert_int_equal(vfy_checkpoint_save(dir, "test n=8", &s, &a, msg, sizeof msg), SIM_OK);
+    assert_int_equal(vfy_checkpoint_load(dir, &s, &b), 1);
+    size_t len = a.outputs * SIM_OBS_COUNT;
+    assert_int_equal(b.outputs, a.outputs);
+    assert_int_equal(b.ensembles, a.ensembles);
+    assert_int_equal(b.n, a.n);
+    assert_memory_equal(b.t, a.t, a.outputs * sizeof *a.t);
+    assert_memory_equal(b.mean, a.mean, len * sizeof *a.mean);
+    assert_memory_equal(b.var, a.var, len * sizeof *a.var);
+    assert_memory_equal(b.ci, a.ci, len * sizeof *a.ci);
+    assert_memory_equal(&b.counts, &a.counts, sizeof a.counts);
+    assert_memory_equal(&b.cpu_seconds, &a.cpu_seconds, sizeof a.cpu_seconds);
+    assert_memory_equal(&b.wall_seconds, &a.wall_seconds, sizeof a.wall_seconds);
+    assert_int_equal(b.threads, 2);
+    sim_ensemble_result_free(&a);
+    sim_ensemble_result_free(&b);
+}
+
+/* Another seed, n or heating is another simulation: nothing to resume.  The
+ * file name and title are not part of the key. */
+static void test_other_scene_not_used(void **state)
+{
+    (void)state;
+    sim_scene s = small_scene();
+    sim_ensemble_result a, b;
+    fill(&a, &s);
+    char msg[256];
+    assert_int_equal(vfy_checkpoint_save(dir, "test", &s, &a, msg, sizeof msg), SIM_OK);
+    sim_scene other = s;
+    other.seed = 43;
+    assert_int_equal(vfy_checkpoint_load(dir, &other, &b), 0);
+    assert_null(b.mean);
+    other = s;
+    other.particles.n = 9;
+    assert_int_equal(vfy_checkpoint_load(dir, &other, &b), 0);
+    other = s;
+    other.heating.strength = 1e-300;
+    assert_int_equal(vfy_checkpoint_load(dir, &other, &b), 0);
+    other = s;
+    snprintf(other.file, sizeof other.file, "elsewhere/same.ini");
+    snprintf(other.title, sizeof other.title, "another title");
+    assert_int_equal(vfy_checkpoint_load(dir, &other, &b), 1);
+    sim_ensemble_result_free(&a);
+    sim_ensemble_result_free(&b);
+}
+
+/* A checkpoint cut short (as by a crash of an older version writing in
+ * place) or with a wrong word is ignored, never half-used. */
+static void test_damaged_not_used(void **state)
+{
+    (void)state;
+    sim_scene s = small_scene();
+    s.seed = 7;
+    sim_ensemble_result a, b;
+    fill(&a, &s);
+    char msg[256], path[128];
+    assert_int_equal(vfy_checkpoint_save(dir, "test", &s, &a, msg, sizeof msg), SIM_OK);
+    snprintf(path, sizeof path, "%s/%016llx.ckpt", dir,
+             (unsigned long long)vfy_checkpoint_key(&s));
+    FILE *f = fopen(path, "r+");
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    long size = ftell(f);
+    fclose(f);
+    assert_int_equal(truncate(path, size - 10), 0);   /* loses "end" and a number */
+    assert_int_equal(vfy_checkpoint_load(dir, &s, &b), 0);
+    assert_null(b.mean);
+
+    assert_int_equal(vfy_checkpoint_save(dir, "test", &s, &a, msg, sizeof msg), SIM_OK);
+    f = fopen(path, "r+");
+    assert_non_null(f);
+    fputs("gdsmc-checkpoint 2", f);   /* a format this version does not know */
+    fclose(f);
+    assert_int_equal(vfy_checkpoint_load(dir, &s, &b), 0);
+    sim_ensemble_result_free(&a);
+}
+
+static void test_unwritable_dir_is_an_error(void **state)
+{
+    (void)state;
+    sim_scene s = small_scene();
+    sim_ensemble_result a;
+    fill(&a, &s);
+    char msg[256];
+    assert_int_equal(vfy_checkpoint_save("/proc/gdsmc-no", "test", &s, &a, msg, sizeof msg),
+                     SIM_EIO);
+    assert_non_null(strstr(msg, "/proc/gdsmc-no/"));
+    assert_non_null(strstr(msg, ": cannot write: "));
+    sim_ensemble_result_free(&a);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_round_trip_is_exact),
+        cmocka_unit_test(test_other_scene_not_used),
+        cmocka_unit_test(test_damaged_not_used),
+        cmocka_unit_test(test_unwritable_dir_is_an_error),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}
