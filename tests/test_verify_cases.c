@@ -2,43 +2,13 @@
  * checks pass; with a deliberately wrong solver (restitution 0.45 instead of
  * 0.5, a wrong background, through the same --solver-set overrides a user
  * has) they fail.  Reports go to a temporary directory. */
-#include "test_util.h"
+#include "test_verify_util.h"
 
-#include <stdlib.h>
-#include <string.h>
-
-#include "cases.h"
-
-static char out_dir[256];
-static char scene_dir[512];
-
-static int setup(void **state)
-{
-    (void)state;
-    const char *src = getenv("GDSMC_SOURCE_DIR");
-    snprintf(scene_dir, sizeof scene_dir, "%s/verify/scenes", src ? src : "..");
-    snprintf(out_dir, sizeof out_dir, "/tmp/gdsmc-test-XXXXXX");
-    return mkdtemp(out_dir) ? 0 : -1;
-}
-
-/* Failed checks of a quick case run with the overrides (solver only: wrong
- * solver). */
+/* Failed checks of a quick case (41 output times) with a wrong solver. */
 static size_t count_failed(const char *case_name, const char *const *wrong, size_t nwrong)
 {
     static const char *const smaller[] = {"scene.outputs=41"};
-    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir,
-                     .overrides = smaller, .noverrides = 1,
-                     .solver_overrides = wrong, .nsolver_overrides = nwrong};
-    vfy_report r;
-    vfy_report_init(&r, NULL);
-    char msg[512];
-    assert_int_equal(vfy_run("quick", case_name, &o, &r, msg, sizeof msg), SIM_OK);
-    size_t failed = r.failed;
-    for (size_t i = 0; i < r.count; i++)
-        if (r.checks[i].verdict == VFY_FAIL)
-            print_message("  FAIL %s: %s\n", r.checks[i].name, r.checks[i].detail);
-    vfy_report_free(&r);
-    return failed;
+    return count_quick_failed(case_name, smaller, 1, wrong, nwrong, NULL);
 }
 
 static void test_grw_ex3_right_solver_passes(void **state)
@@ -93,30 +63,11 @@ static void test_brs_ex4(void **state)
     assert_true(count_failed("brs-ex4", wrong, 1) >= 1);
 }
 
-/* Failed checks of a quick case run as it is (no reference overrides), with
- * solver overrides; fills *skipped and *passed when not NULL. */
+/* Failed checks of a quick case run as it is, with a wrong solver. */
 static size_t count_failed_plain(const char *case_name, const char *const *wrong, size_t nwrong,
                                  size_t *passed)
 {
-    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir,
-                     .solver_overrides = wrong, .nsolver_overrides = nwrong};
-    vfy_report r;
-    vfy_report_init(&r, NULL);
-    char msg[512];
-    sim_status st = vfy_run("quick", case_name, &o, &r, msg, sizeof msg);
-    if (st != SIM_OK)
-        print_error("%s\n", msg);
-    assert_int_equal(st, SIM_OK);
-    size_t failed = r.failed, ok = 0;
-    for (size_t i = 0; i < r.count; i++) {
-        ok += r.checks[i].verdict == VFY_PASS;
-        if (r.checks[i].verdict == VFY_FAIL)
-            print_message("  FAIL %s: %s\n", r.checks[i].name, r.checks[i].detail);
-    }
-    if (passed)
-        *passed = ok;
-    vfy_report_free(&r);
-    return failed;
+    return count_quick_failed(case_name, NULL, 0, wrong, nwrong, passed);
 }
 
 /* Paper C (SPEC §5): the steady a2 of the white-noise thermostat against

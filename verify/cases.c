@@ -4,6 +4,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "checkpoint.h"
 #include "engine.h"
 #include "scene_ini.h"
 #include "table.h"
@@ -27,10 +28,34 @@ sim_status vfy_case_ms_table1(const vfy_case *, const vfy_options *, vfy_report 
                               size_t);
 sim_status vfy_case_ms_tails(const vfy_case *, const vfy_options *, vfy_report *, char *,
                              size_t);
+/* case_vro.c (issue 4: variance-reduced observation) */
+sim_status vfy_case_vro(const vfy_case *, const vfy_options *, vfy_report *, char *, size_t);
 /* case_split.c (SPEC §10) */
 sim_status vfy_case_split(const vfy_case *, const vfy_options *, vfy_report *, char *, size_t);
 extern const struct ms_case_data vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
     vfy_ms_table1, vfy_ms_tails;
+/* case_cost.c (SPEC §10: accuracy against CPU cost) */
+sim_status vfy_case_cost_grid(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                              size_t);
+sim_status vfy_case_cost_split(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                               size_t);
+extern const struct cost_grid_data vfy_cost_grw_ex3, vfy_cost_brs_ex2;
+extern const struct cost_split_data vfy_cost_split_ex5;
+/* case_hard.c (the hard suite, issue #5 item 1) */
+sim_status vfy_case_hard_dissipation(const vfy_case *, const vfy_options *, vfy_report *,
+                                     char *, size_t);
+sim_status vfy_case_hard_nongaussian(const vfy_case *, const vfy_options *, vfy_report *,
+                                     char *, size_t);
+sim_status vfy_case_hard_tails(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                               size_t);
+sim_status vfy_case_hard_tiny(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                              size_t);
+sim_status vfy_case_hard_long_run(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                                  size_t);
+sim_status vfy_case_hard_stiff(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                               size_t);
+sim_status vfy_case_hard_extreme(const vfy_case *, const vfy_options *, vfy_report *, char *,
+                                 size_t);
 
 static const vfy_case cases[] = {
     {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
@@ -39,6 +64,8 @@ static const vfy_case cases[] = {
      vfy_case_grw_convergence, &vfy_grw_table2},
     {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
      vfy_case_grw_hard_spheres, NULL},
+    {"vro-grw-ex3", "grw", "paper A Ex 3 observed through the exact conditional expectation "
+     "over the pending Brownian increments: the variance reduction", 1, vfy_case_vro, NULL},
     {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",
      1, vfy_case_brs_convergence, &vfy_brs_table1},
     {"brs-ex2", "brs", "paper B Ex 2, Table 2: Maxwell kernels, drifting background", 1,
@@ -61,6 +88,28 @@ static const vfy_case cases[] = {
      vfy_case_ms_tails, &vfy_ms_tails},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, vfy_case_split, NULL},
+    {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
+     " n x N, paper A Ex 3", 1, vfy_case_cost_grid, &vfy_cost_grw_ex3},
+    {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
+     " n x N, paper B Ex 2", 1, vfy_case_cost_grid, &vfy_cost_brs_ex2},
+    {"cost-split-ex5", "cost", "SPEC §10: Err (systematic + splitting + statistical) against"
+     " CPU time over n, N and h, paper A Ex 5", 1, vfy_case_cost_split, &vfy_cost_split_ex5},
+    {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
+     " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
+     vfy_case_hard_dissipation, NULL},
+    {"hard-nongaussian", "hard", "paper C's non-Gaussian thermostat near v = 0, alpha = 0.05,"
+     " 0.1: a2, Eq. (44), depletion at v = 0, momentum to round-off", 1,
+     vfy_case_hard_nongaussian, NULL},
+    {"hard-tails", "hard", "paper A Ex 7: growing majorant (no violations), overpopulated"
+     " tail, exact energy balance", 1, vfy_case_hard_tails, NULL},
+    {"hard-tiny", "hard", "n = 2, 3, 4: exact finite-n expectations (papers A and B), exact"
+     " Gaussian bulk velocity, majorant violations", 1, vfy_case_hard_tiny, NULL},
+    {"hard-long-run", "hard", "1e9 events per system: momentum and energy to round-off, exact"
+     " T(0) e^{-kt}, no NaN", 1, vfy_case_hard_long_run, NULL},
+    {"hard-stiff", "hard", "paper B closures with K = 100 and 1e-4 through CVODE: success or a"
+     " clear failure, never garbage", 1, vfy_case_hard_stiff, NULL},
+    {"hard-extreme", "hard", "restitution 1e-3 and 1, rate 1e6, T0 = 1e-8 and 1e8 against"
+     " exact expectations and the Sonine closure", 1, vfy_case_hard_extreme, NULL},
 };
 
 size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
@@ -133,6 +182,12 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
 sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen)
 {
+    return vfy_load_scene_stem(c->name, o, scene, solver, msg, msglen);
+}
+
+sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
+                               sim_scene *solver, char *msg, size_t msglen)
+{
     char path[1024];
     const char *sets[128];
     if (o->noverrides + o->nsolver_overrides > sizeof sets / sizeof *sets) {
@@ -143,7 +198,7 @@ sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scen
         sets[i] = o->overrides[i];
     for (size_t i = 0; i < o->nsolver_overrides; i++)
         sets[o->noverrides + i] = o->solver_overrides[i];
-    snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, c->name);
+    snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, stem);
     sim_status status = vfy_scene_load(path, o->overrides, o->noverrides, scene, msg, msglen);
     if (status == SIM_OK)
         status = vfy_scene_load(path, sets, o->noverrides + o->nsolver_overrides, solver, msg,
@@ -181,6 +236,11 @@ static void print_progress(size_t done, size_t total, void *ctx)
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen)
 {
+    if (o->checkpoint_dir && o->resume && vfy_checkpoint_load(o->checkpoint_dir, scene, res)) {
+        if (o->progress)
+            fprintf(o->progress, "   %s: taken from its checkpoint (--resume)\n", label);
+        return SIM_OK;
+    }
     sim_engine *engine = NULL;
     sim_error err = {{0}, {0}};
     memset(res, 0, sizeof *res);
@@ -189,10 +249,22 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
         progress_state p = {o->progress, label, wall_now(), wall_now()};
         status = sim_ensemble_run(engine, o->progress ? print_progress : NULL, &p, res, &err);
     }
-    if (status != SIM_OK)
-        vfy_scene_format_error(scene, &err, msg, msglen);
     sim_engine_free(engine);
-    return status;
+    if (status == SIM_ECANCELED) {
+        snprintf(msg, msglen, "%s: %s", label, err.msg);
+        return status;
+    }
+    if (status != SIM_OK) {
+        vfy_scene_format_error(scene, &err, msg, msglen);
+        return status;
+    }
+    if (o->checkpoint_dir
+        && (status = vfy_checkpoint_save(o->checkpoint_dir, label, scene, res, msg, msglen))
+               != SIM_OK)
+        return status;
+    if (o->stop_countdown && *o->stop_countdown > 0 && --*o->stop_countdown == 0)
+        sim_ensemble_request_stop();
+    return SIM_OK;
 }
 
 const char *vfy_report_path(const vfy_options *o, const char *name, const char *suffix,

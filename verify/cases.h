@@ -29,6 +29,12 @@ typedef struct vfy_options {
                                             e.g. a deliberately wrong solver */
     size_t nsolver_overrides;
     FILE *progress;                    /* progress lines, or NULL for silence */
+    const char *checkpoint_dir;        /* save every finished simulation there
+                                          (checkpoint.h), or NULL */
+    int resume;                        /* reuse the matching checkpoints */
+    size_t *stop_countdown;            /* if not NULL and > 0: counts finished
+                                          simulations down and requests a stop at 0, as
+                                          SIGINT would (a test's deterministic interrupt) */
 } vfy_options;
 
 typedef struct vfy_case vfy_case;
@@ -69,9 +75,16 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
 sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen);
 
+/* The same for the scene o->scene_dir/<stem>.ini, for a case built on
+ * another case's scene (e.g. cost-grw-ex3 on grw-ex3). */
+sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
+                               sim_scene *solver, char *msg, size_t msglen);
+
 /* Shared by the cases: build the engine for scene and run its ensembles,
- * with progress lines labelled `label`.  msg gets "FILE:LINE: key: ..." on
- * failure. */
+ * with progress lines labelled `label`; with o->checkpoint_dir, save the
+ * result there at once, and with o->resume take a matching saved result
+ * instead of simulating.  msg gets "FILE:LINE: key: ..." on failure;
+ * SIM_ECANCELED when a stop was requested. */
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen);
 

@@ -122,6 +122,16 @@ vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uin
                   (unsigned long long)expected);
 }
 
+vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *fmt, ...)
+{
+    char detail[sizeof r->checks[0].detail];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(detail, sizeof detail, fmt, ap);
+    va_end(ap);
+    return record(r, ok ? VFY_PASS : VFY_FAIL, name, "%s", detail);
+}
+
 void vfy_skip(vfy_report *r, const char *name, const char *reason)
 {
     record(r, VFY_SKIP, name, "%s", reason);

@@ -52,6 +52,11 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
 /* value == expected: counters such as majorant violations. */
 vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uint64_t expected);
 
+/* A condition judged by the caller (e.g. a pure check over a run's summary,
+ * verify/case_hard.h): PASS when ok, FAIL otherwise, with the detail. */
+vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
 /* A check that does not apply here, with the reason (never a failure). */
 void vfy_skip(vfy_report *r, const char *name, const char *reason);
 
