@@ -1045,6 +1045,8 @@ sim_status vfy_case_hard_long_run(const vfy_case *c, const vfy_options *o, vfy_r
             fprintf(o->progress, "   %s: %.3g events per system, T(t_end)/T(0) = %.6g, max |V| "
                     "%.3g\n", label, per_system, sum.T_last / sum.T_first, sum.momentum);
         sim_ensemble_result_free(&res);
+        if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
+            break;
     }
     free(buf);
     if (status == SIM_OK)
