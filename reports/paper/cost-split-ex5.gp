@@ -1,0 +1,14 @@
+# cost-split-ex5: gnuplot reports/paper/cost-split-ex5.gp
+set terminal pngcairo size 1100,750 font ',10'
+set termoption noenhanced
+set output 'reports/paper/cost-split-ex5.png'
+set datafile separator ','
+set title 'cost-split-ex5: Err of the time-averaged T against CPU time'
+set xlabel 'CPU seconds (all threads)'
+set ylabel 'Err = |T - T_inf| / T_inf (time-averaged T)'
+set logscale xy
+set format y '%.0e'
+set grid
+set key outside right top
+set label 1 'dotted: the model' at graph 0.02, graph 0.04
+plot 'reports/paper/cost-split-ex5-points.csv' index 0 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 1 title 'jump, N = 256 (n grows)', '' index 0 using 1:3 with lines dt 3 lw 2 lc 1 notitle, '' index 0 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 1 notitle, 'reports/paper/cost-split-ex5-points.csv' index 1 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 2 title 'jump, N = 1024 (n grows)', '' index 1 using 1:3 with lines dt 3 lw 2 lc 2 notitle, '' index 1 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 2 notitle, 'reports/paper/cost-split-ex5-points.csv' index 2 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 3 title 'strang, n = 256, N = 256 (h shrinks)', '' index 2 using 1:3 with lines dt 3 lw 2 lc 3 notitle, '' index 2 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 3 notitle, 'reports/paper/cost-split-ex5-points.csv' index 3 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 4 title 'strang, n = 1024, N = 256 (h shrinks)', '' index 3 using 1:3 with lines dt 3 lw 2 lc 4 notitle, '' index 3 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 4 notitle, 'reports/paper/cost-split-ex5-points.csv' index 4 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 5 title 'euler, n = 1024, N = 256 (h shrinks)', '' index 4 using 1:3 with lines dt 3 lw 2 lc 5 notitle, '' index 4 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 5 notitle, 'reports/paper/cost-split-ex5-points.csv' index 5 using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' title 'predicted cheapest per target (model)', '' index 5 using 1:2:4 with labels offset 0,-1.4 font ',7' tc rgb 'black' notitle, 0.01 with lines dt 2 lc rgb 'gray50' title 'targets 1e-2, 1e-3, 1e-4', 0.001 with lines dt 2 lc rgb 'gray50' notitle, 0.0001 with lines dt 2 lc rgb 'gray50' notitle
