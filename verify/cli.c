@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "cases.h"
 #include "engine.h"
@@ -101,8 +103,8 @@ static const char usage_verify[] =
     "Nothing is lost: every finished simulation is saved at once in\n"
     "DIR/.checkpoint, and each case's CSV table is rewritten after each finished\n"
     "row (files are written to FILE.tmp and renamed). SIGINT or SIGTERM stops\n"
-    "the run after the ensemble in progress, with exit status 130; a second\n"
-    "signal stops it at once.\n";
+    "the run after the ensemble in progress, with exit status 130; another\n"
+    "signal a second or more later stops it at once.\n";
 
 static const char usage_bench[] =
     "usage: gdsmc bench [--out FILE.csv] [--md FILE.md] [--max-n N] [--seconds S]\n"
@@ -162,22 +164,34 @@ typedef struct args {
     int quiet, list, resume;
 } args;
 
+/* Only async-signal-safe calls here (clock_gettime, _exit, a sig_atomic_t
+ * flag).  A repeat within a second is the same request delivered twice:
+ * timeout(1) signals the child and then its process group. */
 static void on_stop_signal(int sig)
 {
+    static struct timespec first;   /* written only here, both signals blocked */
+    struct timespec now;
     (void)sig;
-    sim_ensemble_request_stop();   /* async-signal-safe: sets a flag */
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    if (!sim_ensemble_stop_requested()) {
+        first = now;
+        sim_ensemble_request_stop();
+    } else if ((double)(now.tv_sec - first.tv_sec) + 1e-9 * (double)(now.tv_nsec - first.tv_nsec)
+               >= 1.0) {
+        _exit(EXIT_STOPPED);   /* a deliberate second signal: stop at once */
+    }
 }
 
 /* SIGINT and SIGTERM ask the ensembles to stop (exit 130 with what is done
- * on disk); the handler is reset after the first signal, so a second one
- * ends the process at once. */
+ * on disk); another signal a second or more later ends the process at once. */
 static void catch_stop_signals(void)
 {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_stop_signal;
-    sa.sa_flags = (int)SA_RESETHAND;
     sigemptyset(&sa.sa_mask);
+    sigaddset(&sa.sa_mask, SIGINT);
+    sigaddset(&sa.sa_mask, SIGTERM);
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
 }
