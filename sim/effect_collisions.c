@@ -64,6 +64,7 @@
 
 #include "collide.h"
 #include "effect.h"
+#include "first_stage.h"
 #include "particles.h"
 #include "rng.h"
 #include "run.h"
@@ -104,14 +105,6 @@ static inline double follow_bound(const collisions_params *p, collisions_state *
                                    : p->prefactor * pow(s->umax, p->lambda);
     }
     return s->rate;
-}
-
-/* |v - c|^2, in the order reset_bound (engine.c) and sim_run_cover use, so
- * that a_i <= R holds to the last bit for every covered velocity. */
-static inline double dist2(const double v[3], const double c[3])
-{
-    const double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
-    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
 
 static int collisions_needs_bound(const sim_effect *e)
@@ -162,7 +155,7 @@ static inline uint32_t draw_particle(collisions_state *s, sim_run *run, uint32_t
  * moves it, and stage 1 (a_i / R) needs a_i <= R for every drawn particle. */
 static inline void cover_moving(sim_run *run, const collisions_state *s, const double v[3])
 {
-    const double a = sqrt(dist2(v, run->centre)) + s->margin;
+    const double a = sqrt(sim_dist2(v, run->centre)) + s->margin;
     if (a > run->radius) {
         run->radius = a;
         run->bound_grew = 1;
@@ -175,7 +168,7 @@ static inline void cover_moving(sim_run *run, const collisions_state *s, const d
 static inline double bounded_distance(const collisions_params *p, collisions_state *s,
                                       sim_run *run, const double v[3], const int lazy_flow)
 {
-    const double a = sqrt(dist2(v, run->centre));
+    const double a = sqrt(sim_dist2(v, run->centre));
     if (a > run->radius) {
         run->counts.violations++;
         if (lazy_flow) {
@@ -312,33 +305,6 @@ static inline uint32_t bit_range(unsigned lo, unsigned hi)
     return ((1u << hi) - 1u) & ~((1u << lo) - 1u);
 }
 
-/* Stage 1 for the entries `which` of the current block: bit k of the result
- * is set when entry k's particle is kept (a_k / R: sim_rng_accept32's test
- * without branches; the undecided case u < x < u + 1, of probability 2^-32,
- * draws its further bits here).  A particle beyond the bound (a_k > R, a
- * violation) has x > 2^32 and is always kept: the caller counts it then. */
-static inline __attribute__((always_inline)) uint32_t
-stage1(const sim_batch *b, uint32_t which, const sim_particles *p, const double c[3],
-       double scale, gsl_rng *rng)
-{
-    /* u + 1 <= x and u < x compared as squares: no square root (a few
-     * cycles of throughput each) for the three in four entries rejected */
-    const double scale2 = scale * scale;
-    uint32_t keep = 0, below = 0;
-    for (unsigned k = 0; k < SIM_BATCH; k++) {
-        const double x2 = dist2(p->v[b->index[k]], c) * scale2;
-        const double u = (double)b->spare[k], u1 = u + 1.0;
-        keep |= (uint32_t)(u1 * u1 <= x2) << k;
-        below |= (uint32_t)(u * u < x2) << k;
-    }
-    for (uint32_t tie = below & ~keep & which; tie; tie &= tie - 1) {
-        const unsigned k = (unsigned)__builtin_ctz(tie);
-        const double x = sqrt(dist2(p->v[b->index[k]], c)) * scale;
-        keep |= (uint32_t)(sim_rng_uniform(rng) < x - (double)b->spare[k]) << k;
-    }
-    return keep & which;
-}
-
 /* Hard-sphere candidates without a lazy flow, first particles from the
  * blocks: up to `max` of them, stopping after a collision that grows the
  * bound; returns how many.  The first stage is decided for a whole block at
@@ -361,12 +327,12 @@ static inline uint64_t batched_hard_spheres(const collisions_params *p, collisio
     }
     const double c[3] = {run->centre[0], run->centre[1], run->centre[2]};
     const double radius = run->radius, scale = s->scale, alpha = p->alpha;
-    uint32_t keep = stage1(b, bit_range(b->pos, SIM_BATCH), ps, c, scale, rng);
+    uint32_t keep = sim_first_stage(b, bit_range(b->pos, SIM_BATCH), ps, c, scale, rng);
     uint64_t done = 0, collisions = 0, violations = 0;
     while (done < max) {
         if (b->pos == SIM_BATCH) {
             sim_batch_advance(b, ps, rng);
-            keep = stage1(b, bit_range(0, SIM_BATCH), ps, c, scale, rng);
+            keep = sim_first_stage(b, bit_range(0, SIM_BATCH), ps, c, scale, rng);
         }
         const uint32_t later = keep & bit_range(b->pos, SIM_BATCH);
         const unsigned k = later ? (unsigned)__builtin_ctz(later) : SIM_BATCH;
@@ -384,13 +350,13 @@ static inline uint64_t batched_hard_spheres(const collisions_params *p, collisio
 
         const uint32_t i = b->index[k];   /* kept in stage 1 */
         double *vi = ps->v[i];
-        const double ai = sqrt(dist2(vi, c));
+        const double ai = sqrt(sim_dist2(vi, c));
         uint32_t uj, j;
         do
             j = sim_pick_next(&s->pick, ps, rng, &uj, 0);
         while (j == i);
         double *vj = ps->v[j];
-        const double aj = sqrt(dist2(vj, c));
+        const double aj = sqrt(sim_dist2(vj, c));
         violations += (ai > radius) + (aj > radius);   /* never, without a lazy flow */
         double unit[3];
         if (contact) {
@@ -418,7 +384,7 @@ static inline uint64_t batched_hard_spheres(const collisions_params *p, collisio
         for (unsigned q = k + 1; q < SIM_BATCH; q++)
             moved |= (uint32_t)(b->index[q] == i || b->index[q] == j) << q;
         if (moved)
-            keep = (keep & ~moved) | stage1(b, moved, ps, c, scale, rng);
+            keep = (keep & ~moved) | sim_first_stage(b, moved, ps, c, scale, rng);
     }
     run->counts.candidates += done;
     run->counts.collisions += collisions;

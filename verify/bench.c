@@ -10,6 +10,7 @@
 
 #include "collide.h"
 #include "engine.h"
+#include "first_stage.h"
 #include "ensemble.h"
 #include "particles.h"
 #include "rng.h"
@@ -107,42 +108,15 @@ static sim_status run_engine(const sim_scene *s, size_t runs, bench_row *row, si
     return status;
 }
 
-static inline double dist2(const double v[3], const double c[3])
-{
-    const double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
-    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-}
-
 /* max |v_i - c| */
 static double radius_of(const sim_particles *p, const double c[3])
 {
     double r2 = 0.0;
     for (size_t i = 0; i < p->n; i++) {
-        const double x = dist2(p->v[i], c);
+        const double x = sim_dist2(p->v[i], c);
         r2 = x > r2 ? x : r2;
     }
     return sqrt(r2);
-}
-
-/* The floor's first stage for a whole block: bit k set when entry k's
- * particle is kept, a_k / R (as stage1 in sim/effect_collisions.c). */
-static inline uint32_t floor_stage1(const sim_batch *b, const sim_particles *p,
-                                    const double c[3], double scale, gsl_rng *rng)
-{
-    const double scale2 = scale * scale;
-    uint32_t keep = 0, below = 0;
-    for (unsigned k = 0; k < SIM_BATCH; k++) {
-        const double x2 = dist2(p->v[b->index[k]], c) * scale2;
-        const double u = (double)b->spare[k], u1 = u + 1.0;
-        keep |= (uint32_t)(u1 * u1 <= x2) << k;
-        below |= (uint32_t)(u * u < x2) << k;
-    }
-    for (uint32_t tie = below & ~keep; tie; tie &= tie - 1) {
-        const unsigned k = (unsigned)__builtin_ctz(tie);
-        const double x = sqrt(dist2(p->v[b->index[k]], c)) * scale;
-        keep |= (uint32_t)(sim_rng_uniform(rng) < x - (double)b->spare[k]) << k;
-    }
-    return keep;
 }
 
 /* The floor: `collisions` accepted elastic hard-sphere collisions on the
@@ -184,13 +158,13 @@ static sim_status run_floor(const sim_scene *s, double collisions, bench_row *ro
     const uint64_t target = (uint64_t)collisions, sweep = FLOOR_SWEEPS * (uint64_t)n;
     uint64_t accepted = 0, tries = 0, next_sweep = sweep;
     double start = thread_cpu_seconds(), wall = wall_seconds();
-    uint32_t keep = floor_stage1(&batch, &p, c, scale, rng);
+    uint32_t keep = sim_first_stage(&batch, SIM_BATCH_ALL, &p, c, scale, rng);
     while (accepted < target) {
         const uint32_t later = keep >> batch.pos << batch.pos;
         if (later == 0) {   /* the rest of the block is rejected */
             tries += SIM_BATCH - batch.pos;
             sim_batch_advance(&batch, &p, rng);
-            keep = floor_stage1(&batch, &p, c, scale, rng);
+            keep = sim_first_stage(&batch, SIM_BATCH_ALL, &p, c, scale, rng);
             continue;
         }
         const unsigned k = (unsigned)__builtin_ctz(later);
@@ -198,13 +172,13 @@ static sim_status run_floor(const sim_scene *s, double collisions, bench_row *ro
         batch.pos = k + 1;
         const uint32_t i = batch.index[k];
         double *vi = p.v[i];
-        const double ai = sqrt(dist2(vi, c));
+        const double ai = sqrt(sim_dist2(vi, c));
         uint32_t uj, j;
         do
             j = sim_pick_next(&pick, &p, rng, &uj, 0);
         while (j == i);
         double *vj = p.v[j];
-        const double aj = sqrt(dist2(vj, c));
+        const double aj = sqrt(sim_dist2(vj, c));
         const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
         const double gnorm = sim_norm3(g);
         if (!sim_rng_accept32_ratio(rng, uj, gnorm, ai + aj))
@@ -213,7 +187,7 @@ static sim_status run_floor(const sim_scene *s, double collisions, bench_row *ro
         sim_rng_unit_sphere(rng, e);
         sim_collide_inelastic(vi, vj, 1.0, gnorm, e);
         accepted++;
-        const double ri = dist2(vi, c), rj = dist2(vj, c), r2 = ri > rj ? ri : rj;
+        const double ri = sim_dist2(vi, c), rj = sim_dist2(vj, c), r2 = ri > rj ? ri : rj;
         int rescan = 0;
         if (r2 > radius * radius) {
             radius = sqrt(r2);
@@ -228,7 +202,7 @@ static sim_status run_floor(const sim_scene *s, double collisions, bench_row *ro
             rescan |= batch.index[q] == i || batch.index[q] == j;
         if (rescan) {
             scale = 0x1p32 / radius;
-            keep = floor_stage1(&batch, &p, c, scale, rng);
+            keep = sim_first_stage(&batch, SIM_BATCH_ALL, &p, c, scale, rng);
         }
     }
     row->cpu = thread_cpu_seconds() - start;
