@@ -438,17 +438,6 @@ static vfy_verdict check_gaussian_momentum(vfy_report *r, const char *name,
     return v;
 }
 
-/* The scene's time step (0 for the jump scheme or if it cannot build). */
-static double hard_step(const sim_scene *s)
-{
-    sim_engine *e = NULL;
-    double h = 0.0;
-    if (sim_engine_create(s, &e, NULL) == SIM_OK)
-        h = sim_engine_step(e);
-    sim_engine_free(e);
-    return h;
-}
-
 /* A message as one CSV and Markdown cell: no ',', '|' or line breaks. */
 static const char *csv_safe(char *text)
 {
@@ -741,7 +730,7 @@ sim_status vfy_case_hard_nongaussian(const vfy_case *c, const vfy_options *o, vf
                         ratio0, 0.0, DEPLETED + ratio0_ci);
         /* Paper C Eq. (62): the thermostat keeps the total momentum, and so
          * do the collisions: n per step plus each collision. */
-        const double h = hard_step(&solver);
+        const double h = vfy_scene_step(&solver);
         const double steps = h > 0.0 ? solver.t_end / h : 0.0;
         const double updates = (double)res.counts.collisions / (double)res.ensembles
                                + (double)res.n * steps;

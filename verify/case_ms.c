@@ -159,16 +159,6 @@ typedef struct ms_run {
     sim_ensemble_result res; /* owns its arrays */
 } ms_run;
 
-/* The time step the engine uses for this scene (0 if it cannot build). */
-static double ms_step(const sim_scene *s)
-{
-    sim_engine *e = NULL;
-    double h = 0.0;
-    if (sim_engine_create(s, &e, NULL) == SIM_OK)
-        h = sim_engine_step(e);
-    sim_engine_free(e);
-    return h;
-}
 
 /* Load scene stem with the case's overrides (scene) and solver overrides. */
 static sim_status ms_load(const vfy_case *c, const vfy_options *o, const char *stem,
@@ -213,7 +203,7 @@ static sim_status ms_simulate(const vfy_case *c, const vfy_options *o, ms_thermo
     if (sim_scene_key_line(s, "collisions.restitution") >= 0)
         s->collisions.restitution = alpha;
     ms_set_strength(s, th, alpha);
-    run->h = ms_step(s);
+    run->h = vfy_scene_step(s);
     char label[96];
     snprintf(label, sizeof label, "%s %s alpha=%.2f", c->name, ms_info[th].stem, alpha);
     status = vfy_simulate(s, o, label, &run->res, msg, msglen);

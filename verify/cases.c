@@ -267,6 +267,16 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
     return SIM_OK;
 }
 
+double vfy_scene_step(const sim_scene *s)
+{
+    sim_engine *e = NULL;
+    double h = 0.0;
+    if (sim_engine_create(s, &e, NULL) == SIM_OK)
+        h = sim_engine_step(e);
+    sim_engine_free(e);
+    return h;
+}
+
 const char *vfy_report_path(const vfy_options *o, const char *name, const char *suffix,
                             char *buf, size_t len)
 {

@@ -88,6 +88,10 @@ sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen);
 
+/* The time step the engine uses for scene s: 0 for the jump scheme or if
+ * it cannot build. */
+double vfy_scene_step(const sim_scene *s);
+
 /* out_dir/<name><suffix>, in buf. */
 const char *vfy_report_path(const vfy_options *o, const char *name, const char *suffix,
                             char *buf, size_t len);
