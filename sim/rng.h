@@ -22,11 +22,18 @@
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
 
+/* Philox blocks computed per refill.  rng.c computes them two at a time so
+ * that their rounds overlap in the multiplier: about 11 ns a block, against
+ * 14.5 ns when each block waits for the one before (measured on this
+ * project's 2-core Xeon VM, one word at a time as the engine draws them). */
+#define SIM_RNG_BLOCKS 8
+#define SIM_RNG_WORDS (4 * SIM_RNG_BLOCKS)
+
 typedef struct sim_rng_state {
     philox4x64_key_t key;   /* (seed, stream) */
-    philox4x64_ctr_t ctr;   /* block counter */
-    philox4x64_ctr_t block; /* current four output words */
-    unsigned next;          /* next unused word of block, 4 = empty */
+    philox4x64_ctr_t ctr;   /* counter of the next block to compute */
+    uint64_t word[SIM_RNG_WORDS];   /* blocks ctr - SIM_RNG_BLOCKS .. ctr - 1 */
+    unsigned next;          /* next unused word, SIM_RNG_WORDS = empty */
     uint64_t normals;       /* standard normal variates drawn so far */
 } sim_rng_state;
 
@@ -51,18 +58,19 @@ _Static_assert(sizeof(unsigned long) == 8, "gsl_rng words must hold 64 bits");
 
 static inline sim_rng_state *sim_rng_state_of(gsl_rng *r) { return (sim_rng_state *)r->state; }
 
-/* The next block of four words (rng.c): kept out of line so that the fast
- * path below stays small enough to inline into every hot loop. */
+/* The next SIM_RNG_BLOCKS blocks of four words (rng.c): kept out of line so
+ * that the fast path below stays small enough to inline into every hot loop. */
 void sim_rng_refill(sim_rng_state *s);
 
 /* Next 64 random bits: word k of the stream is word k % 4 of the Philox block
- * with counter k / 4 (all four words of every block are used). */
+ * with counter k / 4 (all four words of every block are used; how many blocks
+ * a refill computes does not change the stream). */
 static inline uint64_t sim_rng_u64(gsl_rng *r)
 {
     sim_rng_state *s = sim_rng_state_of(r);
-    if (s->next == 4)
+    if (s->next == SIM_RNG_WORDS)
         sim_rng_refill(s);
-    return s->block.v[s->next++];
+    return s->word[s->next++];
 }
 
 /* Uniform on [0, 1) with 53 random bits. */

@@ -304,6 +304,34 @@ static void test_streams(void **state)
     gsl_rng_free(d);
 }
 
+/* Word k of stream (seed, stream) is word k % 4 of the Philox4x64-10 block
+ * with counter (k / 4, 0, 0, sub), whatever the refill does: compared with
+ * Random123 directly over several refills, for a stream and a substream.  The
+ * same comparison rejects the neighbouring stream. */
+static int matches_philox(gsl_rng *r, uint64_t seed, uint64_t id, uint64_t sub, unsigned words)
+{
+    const philox4x64_key_t key = {{seed, id}};
+    int same = 1;
+    for (unsigned k = 0; k < words; k++) {
+        const philox4x64_ctr_t ctr = {{k / 4, 0, 0, sub}};
+        same &= sim_rng_u64(r) == philox4x64(ctr, key).v[k % 4];
+    }
+    return same;
+}
+
+static void test_stream_is_philox(void **state)
+{
+    (void)state;
+    const unsigned words = 5 * SIM_RNG_WORDS + 3;
+    gsl_rng *r = stream(2385, 7);
+    assert_true(matches_philox(r, 2385, 7, 0, words));
+    sim_rng_set_substream(r, 2385, 7, 1);
+    assert_true(matches_philox(r, 2385, 7, 1, words));
+    sim_rng_set_stream(r, 2385, 8);
+    assert_false(matches_philox(r, 2385, 7, 0, words));   /* the wrong stream */
+    gsl_rng_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -311,7 +339,7 @@ int main(void)
         cmocka_unit_test(test_unit_sphere), cmocka_unit_test(test_index),
         cmocka_unit_test(test_streams),     cmocka_unit_test(test_index32),
         cmocka_unit_test(test_accept32),    cmocka_unit_test(test_unit_sphere_uniform),
-        cmocka_unit_test(test_index_streams),
+        cmocka_unit_test(test_index_streams), cmocka_unit_test(test_stream_is_philox),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
