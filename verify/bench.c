@@ -389,7 +389,10 @@ static sim_status ensemble_row(const sim_engine *e, int threads, bench_row *row,
 
 /* Thread scaling: paper A Ex 3 (its scene's n) with N = 10 000 ensembles
  * (N = 10 000 seconds / 2, at least 200, when o->seconds < 1) on 1 and on 2
- * threads; speed-up = wall time on 1 / wall time on 2. */
+ * threads, REPEATS times alternately, the fastest of each (as hs_relax_rows:
+ * a single pair measured the first run's warm-up and whatever else ran, and
+ * gave speed-ups from 1.79 to 2.41 on the same code); speed-up = wall time
+ * on 1 / wall time on 2. */
 static sim_status thread_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
                               size_t msglen)
 {
@@ -404,10 +407,16 @@ static sim_status thread_rows(const vfy_bench_options *o, vfy_table *t, char *ms
     bench_row one = {0}, two = {0};
     const int max_threads = omp_get_max_threads();
     status = sim_engine_create(&s, &e, &err);
-    if (status == SIM_OK)
-        status = ensemble_row(e, 1, &one, &err);
-    if (status == SIM_OK)
-        status = ensemble_row(e, 2, &two, &err);
+    for (int r = 0; r < REPEATS && status == SIM_OK; r++) {
+        bench_row a = {0}, b = {0};
+        status = ensemble_row(e, 1, &a, &err);
+        if (status == SIM_OK)
+            status = ensemble_row(e, 2, &b, &err);
+        if (status == SIM_OK && (r == 0 || a.wall < one.wall))
+            one = a;
+        if (status == SIM_OK && (r == 0 || b.wall < two.wall))
+            two = b;
+    }
     omp_set_num_threads(max_threads);
     sim_engine_free(e);
     if (status != SIM_OK) {
