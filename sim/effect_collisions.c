@@ -315,7 +315,8 @@ static inline uint32_t bit_range(unsigned lo, unsigned hi)
  * contact = 0: the jump scheme (stage 2: |g| / (a_i + a_j), then e uniform and
  * the rule of collide.h); 1: the time-step scheme's contact rule (s uniform,
  * stage 2: Θ(g.s) (g.s) / (a_i + a_j)); a constant in each caller. */
-static inline uint64_t batched_hard_spheres(const collisions_params *p, collisions_state *s,
+static inline __attribute__((always_inline)) uint64_t
+batched_hard_spheres(const collisions_params *p, collisions_state *s,
                                             sim_run *run, uint64_t max, const int contact)
 {
     gsl_rng *rng = run->rng;
