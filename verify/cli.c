@@ -258,6 +258,15 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
     return -1;
 }
 
+/* Before long work: can --out FILE be written?  Says why not (exit 2). */
+static int probe_out(const char *cmd, const char *path)
+{
+    if (path == NULL || vfy_file_probe(path) == 0)
+        return EXIT_OK;
+    fprintf(stderr, "gdsmc %s: %s: cannot write: %s\n", cmd, path, strerror(errno));
+    return EXIT_BAD_INPUT;
+}
+
 /* Open the output (FILE.tmp, renamed on success) or standard output. */
 static FILE *open_out(const char *cmd, const char *path, char *tmp, size_t tmplen)
 {
@@ -316,6 +325,8 @@ static int cmd_run(int argc, char **argv)
     char effects[64];
     snprintf(effects, sizeof effects, "%s", sim_engine_effects(engine));
     sim_engine_free(engine);
+    if ((rc = probe_out("run", a.out)) != EXIT_OK)
+        return rc;
 
     vfy_options o = {.progress = a.quiet ? NULL : stderr};
     sim_ensemble_result res;
@@ -369,6 +380,8 @@ static int cmd_reference(int argc, char **argv)
         return rc;
     sim_scene scene;
     if ((rc = load_scene("reference", &a, &scene)) != EXIT_OK)
+        return rc;
+    if ((rc = probe_out("reference", a.out)) != EXIT_OK)
         return rc;
     vfy_refs refs;
     sim_error err;
@@ -508,6 +521,11 @@ static int cmd_bench(int argc, char **argv)
         if (end == seconds_text || *end || !(o.seconds > 0 && o.seconds <= 3600))
             return bad_usage("bench", "--seconds '%s': allowed 0 < S <= 3600", seconds_text);
     }
+    int rc = probe_out("bench", out);
+    if (rc == EXIT_OK)
+        rc = probe_out("bench", md);
+    if (rc != EXIT_OK)
+        return rc;
     vfy_table table;
     char msg[512];
     if (vfy_bench_run(&o, &table, msg, sizeof msg) != SIM_OK) {
@@ -518,7 +536,6 @@ static int cmd_bench(int argc, char **argv)
     char comment[256];
     snprintf(comment, sizeof comment, "gdsmc %s bench: one core, CPU seconds of the thread, "
              "about %g s per row", GDSMC_VERSION, o.seconds);
-    int rc = EXIT_OK;
     if (out && vfy_table_write_csv(&table, out, comment) != 0) {
         fprintf(stderr, "gdsmc bench: %s: cannot write: %s\n", out, strerror(errno));
         rc = EXIT_BAD_INPUT;

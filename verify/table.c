@@ -96,6 +96,23 @@ int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok)
     return 0;
 }
 
+int vfy_file_probe(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {   /* the final rename would fail */
+        errno = EISDIR;
+        return -1;
+    }
+    char tmp[4096];
+    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    fclose(f);
+    if (writes_files && tmp[0] != '\0')
+        remove(tmp);
+    return 0;
+}
+
 int vfy_ensure_dir(const char *path)
 {
     char buf[1024];
