@@ -310,6 +310,10 @@ gdsmc_add_cli_exact(cli_x_bench_md_unwritable 2
                     "gdsmc bench: /nonexistent/gdsmc/b.md: cannot write: No such file or directory"
                     bench --max-n 1000 --seconds 3600 --md /nonexistent/gdsmc/b.md)
 # gdsmc verify (verify/cli.c, verify/cases.c)
+gdsmc_add_cli_test(cli_x_verify_solver_set_out_of_range 2
+                   "[^!-~]gdsmc verify: --solver-set collisions\\.restitution=1\\.7: collisions\\.restitution: '1\\.7' is out of range \\(allowed 0 < restitution <= 1\\)[^!-~]*$"
+                   verify --case grw-ex3 --suite quick --out build/tests/solver-set
+                   --solver-set collisions.restitution=1.7)
 gdsmc_add_cli_test(cli_x_verify_unknown_suite 2
                    "^gdsmc verify: unknown suite 'fast' \\(allowed quick, paper, grw, brs[a-z, -]*\\) \\(see gdsmc verify --help\\)[^!-~]*$"
                    verify --suite fast)

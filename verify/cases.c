@@ -185,6 +185,25 @@ sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scen
     return vfy_load_scene_stem(c->name, o, scene, solver, msg, msglen);
 }
 
+/* The solver's scene failed where the user's (the same --set) did not, so a
+ * --solver-set override is at fault; the scene parser names every override
+ * "--set S.K=V": say which option it came from. */
+static void relabel_solver_override(const vfy_options *o, char *msg, size_t msglen)
+{
+    for (size_t i = 0; i < o->nsolver_overrides; i++) {
+        char was[1100];
+        snprintf(was, sizeof was, "--set %s:", o->solver_overrides[i]);
+        const char *at = strstr(msg, was);
+        if (at != NULL) {
+            char relabelled[2048];
+            snprintf(relabelled, sizeof relabelled, "%.*s--solver-set %s", (int)(at - msg), msg,
+                     at + strlen("--set "));
+            snprintf(msg, msglen, "%s", relabelled);
+            return;
+        }
+    }
+}
+
 sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen)
 {
@@ -200,9 +219,12 @@ sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene
         sets[o->noverrides + i] = o->solver_overrides[i];
     snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, stem);
     sim_status status = vfy_scene_load(path, o->overrides, o->noverrides, scene, msg, msglen);
-    if (status == SIM_OK)
+    if (status == SIM_OK) {
         status = vfy_scene_load(path, sets, o->noverrides + o->nsolver_overrides, solver, msg,
                                 msglen);
+        if (status != SIM_OK)
+            relabel_solver_override(o, msg, msglen);
+    }
     return status;
 }
 
