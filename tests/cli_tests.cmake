@@ -360,6 +360,16 @@ gdsmc_add_cli_exact(cli_x_verify_ms_needs_steady 2
                     "gdsmc verify: tests/scenes/cases/ms-white-noise.ini: paper C's cases need [steady] and scheme = timestep"
                     verify --case ms-a2-white-noise --suite quick --quiet --scenes ${B}/cases
                     --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
+# --set collisions.kernel=hard-spheres leaves paper A's cases without their
+# exact references: refused before simulating (they reported FAIL, Emax = inf)
+gdsmc_add_cli_exact(cli_x_verify_grw_needs_maxwell 2
+                    "gdsmc verify: verify/scenes/grw-ex3.ini: the scene has no T_exact T_finite_n T_raw_finite_n references (paper A's exact solution needs collisions.kernel = maxwell)"
+                    verify --case grw-ex3 --suite quick --quiet --scenes ${S}
+                    --set collisions.kernel=hard-spheres --out build/tests/grw-needs-maxwell)
+gdsmc_add_cli_exact(cli_x_verify_vro_needs_maxwell 2
+                    "gdsmc verify: verify/scenes/grw-ex3.ini: the scene has no T_finite_n T_raw_finite_n references (paper A's exact solution needs collisions.kernel = maxwell)"
+                    verify --case vro-grw-ex3 --suite quick --quiet --scenes ${S}
+                    --set collisions.kernel=hard-spheres --out build/tests/grw-needs-maxwell)
 gdsmc_add_cli_exact(cli_x_verify_brs_needs_hard_spheres 2
                     "gdsmc verify: tests/scenes/cases/brs-ex4.ini: the scene has no hard-sphere closures (allowed collisions.kernel = hard-spheres and background.kernel = hard-spheres)"
                     verify --case brs-ex4 --suite quick --quiet --scenes ${B}/cases

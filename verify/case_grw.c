@@ -74,6 +74,12 @@ sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy
     sim_status status = load_rows(c, o, 5, 3, 2000, &scene, &solver, n, &rows, msg, msglen);
     if (status != SIM_OK)
         return status;
+    /* the closed form (A.13) and the exact finite-n expectations: Maxwell
+     * molecules only (--set may change the kernel) */
+    static const char *const needs[] = {"T_exact", "T_finite_n", "T_raw_finite_n"};
+    if ((status = vfy_require_references(&scene, needs, 3, VFY_NEEDS_MAXWELL, msg, msglen))
+        != SIM_OK)
+        return status;
     const size_t M = scene.outputs;
 
     static const char *const cols[] = {

@@ -50,6 +50,10 @@ sim_status vfy_case_vro(const vfy_case *c, const vfy_options *o, vfy_report *r, 
     sim_status status = vfy_load_scene_stem("grw-ex3", o, &scene, &solver, msg, msglen);
     if (status != SIM_OK)
         return status;
+    static const char *const needs[] = {"T_finite_n", "T_raw_finite_n"};
+    if ((status = vfy_require_references(&scene, needs, 2, VFY_NEEDS_MAXWELL, msg, msglen))
+        != SIM_OK)
+        return status;
     const size_t rows = o->size == VFY_PAPER ? 3 : 2, M = scene.outputs;
     if (o->size == VFY_QUICK)
         scene.particles.ensembles = solver.particles.ensembles = 2000;

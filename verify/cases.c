@@ -1,12 +1,14 @@
 #include "cases.h"
 
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
 #include "checkpoint.h"
 #include "engine.h"
 #include "scene_ini.h"
+#include "scene_refs.h"
 #include "table.h"
 
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
@@ -226,6 +228,37 @@ sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene
             relabel_solver_override(o, msg, msglen);
     }
     return status;
+}
+
+sim_status vfy_require_references(const sim_scene *scene, const char *const *names,
+                                  size_t count, const char *why, char *msg, size_t msglen)
+{
+    vfy_refs refs;
+    sim_error err;
+    sim_status status = vfy_scene_references(scene, &refs, &err);
+    if (status != SIM_OK) {
+        vfy_scene_format_error(scene, &err, msg, msglen);
+        return status;
+    }
+    double *column = malloc(refs.outputs * sizeof *column);
+    size_t k = 0;
+    while (column && k < count && vfy_refs_column(&refs, names[k], column))
+        k++;
+    free(column);
+    vfy_refs_free(&refs);
+    if (column == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    if (k < count) {
+        int len = snprintf(msg, msglen, "%s: the scene has no", scene->file);
+        for (size_t i = 0; i < count && len > 0 && (size_t)len < msglen; i++)
+            len += snprintf(msg + len, msglen - (size_t)len, " %s", names[i]);
+        if (len > 0 && (size_t)len < msglen)
+            snprintf(msg + len, msglen - (size_t)len, " references (%s)", why);
+        return SIM_EINVAL;
+    }
+    return SIM_OK;
 }
 
 typedef struct progress_state {

@@ -80,6 +80,13 @@ sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scen
 sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen);
 
+/* Refuse, before any simulation, a scene without the references `names` (a
+ * case whose checks need them, given a scene changed by --set): msg gets
+ * "FILE: the scene has no <names[0]> ... references (why)". */
+sim_status vfy_require_references(const sim_scene *scene, const char *const *names,
+                                  size_t count, const char *why, char *msg, size_t msglen);
+#define VFY_NEEDS_MAXWELL "paper A's exact solution needs collisions.kernel = maxwell"
+
 /* Shared by the cases: build the engine for scene and run its ensembles,
  * with progress lines labelled `label`; with o->checkpoint_dir, save the
  * result there at once, and with o->resume take a matching saved result
