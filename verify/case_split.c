@@ -212,6 +212,34 @@ static int split_figure(const vfy_options *o, const char *name, const char *comm
     return 0;
 }
 
+/* One row of the case's table; CF cells (NaN: not known yet, or the first
+ * step) are empty. */
+static void split_table_row(vfy_table *t, const split_row *q, int is_jump, int strang,
+                            double cf, double cf_a2)
+{
+    const double coll = (double)q->counts.collisions;
+    vfy_table_cell(t, "%s", is_jump ? "jump" : strang ? "strang" : "euler");
+    vfy_table_number(t, !is_jump, "%g", q->h);
+    vfy_table_cell(t, "%.6f", q->T);
+    vfy_table_cell(t, "%.6f", q->T_ci);
+    vfy_table_number(t, !is_jump, "%+.3e", q->dT);
+    vfy_table_number(t, !is_jump, "%.2e", q->dT_ci);
+    vfy_table_number(t, !is_jump && !isnan(cf), "%.2f", cf);
+    vfy_table_number(t, !is_jump, "%.3e", q->dTmax);
+    vfy_table_number(t, !is_jump, "%.2e", q->dTmax_noise);
+    vfy_table_cell(t, "%.5f", q->a2);
+    vfy_table_cell(t, "%.5f", q->a2_ci);
+    vfy_table_number(t, !is_jump, "%+.3e", q->da2);
+    vfy_table_number(t, !is_jump, "%.2e", q->da2_ci);
+    vfy_table_number(t, !is_jump && !isnan(cf_a2), "%.2f", cf_a2);
+    vfy_table_cell(t, "%.2f", q->cpu);
+    vfy_table_cell(t, "%.2f", q->wall);
+    vfy_table_cell(t, "%llu", (unsigned long long)q->counts.candidates);
+    vfy_table_cell(t, "%llu", (unsigned long long)q->counts.collisions);
+    vfy_table_cell(t, "%llu", (unsigned long long)q->counts.normals);
+    vfy_table_cell(t, "%.1f", coll > 0 ? 1e9 * q->cpu / coll : 0.0);
+}
+
 sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
                           size_t msglen)
 {
@@ -261,6 +289,9 @@ sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r
         goto done;
     vfy_check_count(r, vfy_name(name, sizeof name, "%s jump majorant violations", c->name),
                     jump.counts.violations, 0);
+    split_table_row(&table, &jump, 1, 0, NAN, NAN);   /* rows so far, CF at the end */
+    if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
+        goto done;
 
     for (size_t sp = 0; sp < 2 && status == SIM_OK; sp++) {
         for (size_t k = 0; k < levels && status == SIM_OK; k++) {
@@ -284,6 +315,8 @@ sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r
             vfy_check_count(r, vfy_name(name, sizeof name, "%s %s majorant violations",
                                         c->name, label + strlen(c->name) + 1),
                             row->counts.violations, 0);
+            split_table_row(&table, row, 0, (int)sp, NAN, NAN);
+            status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
         }
     }
     if (status != SIM_OK)
@@ -305,35 +338,13 @@ sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r
     }
 
     /* The table: the jump row, then each splitting's rows. */
-    const split_row *all[1 + 2 * SPLIT_LEVELS_MAX];
-    all[0] = &jump;
-    for (size_t k = 0; k < 2 * levels; k++)
-        all[1 + k] = &rows[k];
-    for (size_t i = 0; i < 1 + 2 * levels; i++) {
-        const split_row *q = all[i];
-        const int is_jump = i == 0, sp = i > levels;
-        const size_t k = is_jump ? 0 : (i - 1) % levels;
-        const double coll = (double)q->counts.collisions;
-        vfy_table_cell(&table, "%s", is_jump ? "jump" : sp ? "strang" : "euler");
-        vfy_table_number(&table, !(is_jump), "%g", q->h);
-        vfy_table_cell(&table, "%.6f", q->T);
-        vfy_table_cell(&table, "%.6f", q->T_ci);
-        vfy_table_number(&table, !(is_jump), "%+.3e", q->dT);
-        vfy_table_number(&table, !(is_jump), "%.2e", q->dT_ci);
-        vfy_table_number(&table, !(is_jump || k == 0), "%.2f", cf[sp][k]);
-        vfy_table_number(&table, !(is_jump), "%.3e", q->dTmax);
-        vfy_table_number(&table, !(is_jump), "%.2e", q->dTmax_noise);
-        vfy_table_cell(&table, "%.5f", q->a2);
-        vfy_table_cell(&table, "%.5f", q->a2_ci);
-        vfy_table_number(&table, !(is_jump), "%+.3e", q->da2);
-        vfy_table_number(&table, !(is_jump), "%.2e", q->da2_ci);
-        vfy_table_number(&table, !(is_jump || k == 0), "%.2f", cf_a2[sp][k]);
-        vfy_table_cell(&table, "%.2f", q->cpu);
-        vfy_table_cell(&table, "%.2f", q->wall);
-        vfy_table_cell(&table, "%llu", (unsigned long long)q->counts.candidates);
-        vfy_table_cell(&table, "%llu", (unsigned long long)q->counts.collisions);
-        vfy_table_cell(&table, "%llu", (unsigned long long)q->counts.normals);
-        vfy_table_cell(&table, "%.1f", coll > 0 ? 1e9 * q->cpu / coll : 0.0);
+    vfy_table_free(&table);
+    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
+    split_table_row(&table, &jump, 1, 0, NAN, NAN);
+    for (size_t k = 0; k < 2 * levels; k++) {
+        const int sp = k >= levels, first = k % levels == 0;   /* no CF at the first step */
+        split_table_row(&table, &rows[k], 0, sp, first ? NAN : cf[sp][k % levels],
+                        first ? NAN : cf_a2[sp][k % levels]);
     }
 
     /* What a given accuracy costs: for a target error eps of T̄ (relative to
