@@ -385,6 +385,26 @@ static sim_status exact_sys(const struct cost_grid_data *d, const sim_scene *sce
     return SIM_OK;
 }
 
+/* One point of the (n, N) grid and its table row (model NaN: not fitted
+ * yet, its cells empty). */
+typedef struct grid_point {
+    double n, N, err, sys, stat, conf, z, model, cpu, wall, events;
+} grid_point;
+
+static void grid_row(vfy_table *t, const grid_point *g)
+{
+    vfy_table_cell(t, "%.0f", g->n);
+    vfy_table_cell(t, "%.0f", g->N);
+    vfy_table_cell(t, "%.3e", g->err);
+    vfy_table_cell(t, "%.3e", g->sys);
+    vfy_table_cell(t, "%.3e", g->stat);
+    vfy_table_cell(t, "%.3e", g->conf);
+    vfy_table_cell(t, "%.2f", g->z);
+    vfy_table_number(t, !isnan(g->model), "%.3e", g->model);
+    vfy_table_number(t, !isnan(g->model), "%.2f", g->err / g->model);
+    vfy_cost_cells(t, g->cpu, g->wall, g->events);
+}
+
 sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_report *r,
                               char *msg, size_t msglen)
 {
@@ -466,6 +486,10 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
                         "%.3e), %.2f CPU s\n", label, err[i], sys[i], stat[i], conf[i],
                         cpu[i]);
             sim_ensemble_result_free(&res);
+            const grid_point g = {gn[i], gN[i], err[i], sys[i], stat[i], conf[i], z[i], NAN,
+                                  cpu[i], wall[i], events[i]};
+            grid_row(&table, &g);   /* rows so far; the model needs the whole grid */
+            status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
         }
     }
     if (status != SIM_OK)
@@ -523,17 +547,12 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
     vfy_check_count(r, vfy_name(name, sizeof name, "%s majorant violations (all points)",
                                 c->name), violations, 0);
 
+    vfy_table_free(&table);   /* the rows again, now with the model */
+    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
     for (size_t i = 0; i < P; i++) {
-        vfy_table_cell(&table, "%.0f", gn[i]);
-        vfy_table_cell(&table, "%.0f", gN[i]);
-        vfy_table_cell(&table, "%.3e", err[i]);
-        vfy_table_cell(&table, "%.3e", sys[i]);
-        vfy_table_cell(&table, "%.3e", stat[i]);
-        vfy_table_cell(&table, "%.3e", conf[i]);
-        vfy_table_cell(&table, "%.2f", z[i]);
-        vfy_table_cell(&table, "%.3e", model[i]);
-        vfy_table_cell(&table, "%.2f", err[i] / model[i]);
-        vfy_cost_cells(&table, cpu[i], wall[i], events[i]);
+        const grid_point g = {gn[i], gN[i], err[i], sys[i], stat[i], conf[i], z[i], model[i],
+                              cpu[i], wall[i], events[i]};
+        grid_row(&table, &g);
     }
 
     /* Predictions: n = n_min 2^j up to 2^24, N among the grid's. */
@@ -714,6 +733,44 @@ static double split_model(const double c[2], sim_splitting split, double h)
     return c[0] * pow(h, p) + c[1] * pow(h, p + 1.0);
 }
 
+/* The parts of a row's Err, known once every row is in (relative to T_inf). */
+typedef struct split_parts {
+    double err, err_hi, sys, split, stat, conf, split_meas, split_meas_ci, model;
+} split_parts;
+
+/* One row of the cost-split table; parts NULL: not known yet, those cells
+ * empty. */
+static void split_point_row(vfy_table *t, const cost_split_spec *spec, double T, double Tci,
+                            const split_parts *parts, double cpu, double wall,
+                            const sim_counts *counts)
+{
+    const int ts = spec->scheme == SIM_SCHEME_TIMESTEP, known = parts != NULL;
+    const split_parts none = {0};
+    const split_parts *q = known ? parts : &none;
+    const double coll = (double)counts->collisions;
+    vfy_table_cell(t, "%s", spec_scheme(spec));
+    vfy_table_cell(t, "%zu", spec->n);
+    vfy_table_cell(t, "%zu", spec->N);
+    vfy_table_number(t, ts, "%g", spec->h);
+    vfy_table_cell(t, "%.6f", T);
+    vfy_table_cell(t, "%.6f", Tci);
+    vfy_table_number(t, known, "%.3e", q->err);
+    vfy_table_number(t, known, "%.3e", q->err_hi);
+    vfy_table_number(t, known, "%.3e", q->sys);
+    vfy_table_number(t, known && ts, "%.3e", q->split);
+    vfy_table_number(t, known, "%.3e", q->stat);
+    vfy_table_number(t, known, "%.3e", q->conf);
+    vfy_table_number(t, known && ts, "%+.3e", q->split_meas);
+    vfy_table_number(t, known && ts, "%.2e", q->split_meas_ci);
+    vfy_table_number(t, known, "%.3e", q->model);
+    vfy_table_cell(t, "%.2f", cpu);
+    vfy_table_cell(t, "%.2f", wall);
+    vfy_table_cell(t, "%llu", (unsigned long long)counts->candidates);
+    vfy_table_cell(t, "%llu", (unsigned long long)counts->collisions);
+    vfy_table_cell(t, "%llu", (unsigned long long)counts->normals);
+    vfy_table_cell(t, "%.1f", coll > 0 ? 1e9 * cpu / coll : 0.0);
+}
+
 sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_report *r,
                                char *msg, size_t msglen)
 {
@@ -786,6 +843,9 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
             if (o->progress)
                 fprintf(o->progress, "   %s: T̄ = %.6f ± %.6f, %.2f CPU s\n", label, T[i],
                         Tci[i], cpu[i]);
+            /* rows so far; the parts of Err need the fits over all rows */
+            split_point_row(&table, &spec[i], T[i], Tci[i], NULL, cpu[i], wall[i], &counts[i]);
+            status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
         }
         sim_ensemble_result_free(&res);
     }
@@ -910,30 +970,14 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
     }
     const double kappa = kappa_num / kappa_den;
 
+    vfy_table_free(&table);   /* the rows again, now with the fitted parts */
+    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
     for (size_t i = 0; i < P; i++) {
         const int ts = spec[i].scheme == SIM_SCHEME_TIMESTEP;
-        const double coll = (double)counts[i].collisions;
-        vfy_table_cell(&table, "%s", spec_scheme(&spec[i]));
-        vfy_table_cell(&table, "%zu", spec[i].n);
-        vfy_table_cell(&table, "%zu", spec[i].N);
-        vfy_table_number(&table, ts, "%g", spec[i].h);
-        vfy_table_cell(&table, "%.6f", T[i]);
-        vfy_table_cell(&table, "%.6f", Tci[i]);
-        vfy_table_cell(&table, "%.3e", err[i]);
-        vfy_table_cell(&table, "%.3e", err_hi[i]);
-        vfy_table_cell(&table, "%.3e", sys[i]);
-        vfy_table_number(&table, ts, "%.3e", spl[i]);
-        vfy_table_cell(&table, "%.3e", stat[i]);
-        vfy_table_cell(&table, "%.3e", conf[i]);
-        vfy_table_number(&table, ts, "%+.3e", ts ? dsplit[i] / T_inf : 0.0);
-        vfy_table_number(&table, ts, "%.2e", ts ? dsplit_ci[i] / T_inf : 0.0);
-        vfy_table_cell(&table, "%.3e", model[i]);
-        vfy_table_cell(&table, "%.2f", cpu[i]);
-        vfy_table_cell(&table, "%.2f", wall[i]);
-        vfy_table_cell(&table, "%llu", (unsigned long long)counts[i].candidates);
-        vfy_table_cell(&table, "%llu", (unsigned long long)counts[i].collisions);
-        vfy_table_cell(&table, "%llu", (unsigned long long)counts[i].normals);
-        vfy_table_cell(&table, "%.1f", coll > 0 ? 1e9 * cpu[i] / coll : 0.0);
+        const split_parts parts = {err[i], err_hi[i], sys[i], spl[i], stat[i], conf[i],
+                                   ts ? dsplit[i] / T_inf : 0.0, ts ? dsplit_ci[i] / T_inf : 0.0,
+                                   model[i]};
+        split_point_row(&table, &spec[i], T[i], Tci[i], &parts, cpu[i], wall[i], &counts[i]);
     }
 
     /* Predictions over n = n_min 2^j, N among the grid's, and the jump scheme
