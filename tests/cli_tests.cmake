@@ -443,3 +443,10 @@ gdsmc_add_no_output_test(cli_no_output_sonine_stdout_full 2
 # would replace the device node (as root) with a plain file.
 gdsmc_add_cli_test(cli_out_device 0 "^# gdsmc [^\n]*sonine[^\n]*\nname,value\nbeta_1,"
                    sonine --alpha 0.3 --out /dev/stdout)
+# a FIFO is written in place too, and is never opened before the results are
+# ready (opening and closing it early would end its reader's input)
+add_test(NAME cli_out_fifo
+         COMMAND sh -c "rm -f fifo.csv got.csv && mkfifo fifo.csv && { cat fifo.csv > got.csv & } && \"$0\" run \"$1\" --set particles.n=8 --set particles.ensembles=2 --quiet --out fifo.csv && wait && grep -c '^[0-9]' got.csv | grep -qx 81"
+                 $<TARGET_FILE:gdsmc> ${PROJECT_SOURCE_DIR}/${S}/grw-ex3.ini
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(cli_out_fifo PROPERTIES TIMEOUT 60 LABELS unit)

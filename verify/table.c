@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 void vfy_table_init(vfy_table *t, size_t ncols, const char *const *cols)
 {
@@ -103,6 +104,10 @@ int vfy_file_probe(const char *path)
         errno = EISDIR;
         return -1;
     }
+    /* a device or FIFO is written in place: ask, do not open (opening a FIFO
+     * would wait for its reader, and closing it would end the reader's input) */
+    if (writes_files && stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return access(path, W_OK);
     char tmp[4096];
     FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
     if (f == NULL)

@@ -66,8 +66,8 @@ int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok);
 /* Whether path could be written by vfy_file_begin and vfy_file_commit (its
  * directory takes a new file, it is not a directory): checked before long
  * work, so that an unwritable output is reported before the work, not after.
- * Leaves nothing behind (a device is opened and closed).  Returns 0, or -1
- * with errno set. */
+ * Leaves nothing behind (a device or FIFO is only checked for write
+ * permission, not opened).  Returns 0, or -1 with errno set. */
 int vfy_file_probe(const char *path);
 
 /* Create directory path and its parents if they do not exist.  Returns 0 or -1. */
