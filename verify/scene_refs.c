@@ -237,6 +237,14 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
     return status;
 }
 
+int vfy_refs_has(const vfy_refs *refs, const char *name)
+{
+    for (size_t j = 0; j < refs->count; j++)
+        if (strcmp(refs->names[j], name) == 0)
+            return 1;
+    return 0;
+}
+
 const double *vfy_refs_column(const vfy_refs *refs, const char *name, double *buf)
 {
     for (size_t j = 0; j < refs->count; j++) {

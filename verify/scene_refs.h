@@ -43,6 +43,9 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
 /* Column of a reference by name, or NULL. */
 const double *vfy_refs_column(const vfy_refs *refs, const char *name, double *buf);
 
+/* Whether refs has the column `name`. */
+int vfy_refs_has(const vfy_refs *refs, const char *name);
+
 void vfy_refs_free(vfy_refs *refs);
 
 /* The paper A parameters of a scene (no checks). */

@@ -100,20 +100,24 @@ int vfy_file_commit(FILE *f, const char *tmp, const char *path, int ok)
 int vfy_file_probe(const char *path)
 {
     struct stat st;
-    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {   /* the final rename would fail */
-        errno = EISDIR;
-        return -1;
+    if (stat(path, &st) == 0) {
+        if (S_ISDIR(st.st_mode)) {   /* the final rename would fail */
+            errno = EISDIR;
+            return -1;
+        }
+        /* a device or FIFO is written in place (vfy_file_begin): ask, do not
+         * open (opening a FIFO would wait for its reader, and closing it
+         * would end the reader's input) */
+        if (writes_files && !S_ISREG(st.st_mode))
+            return access(path, W_OK);
     }
-    /* a device or FIFO is written in place: ask, do not open (opening a FIFO
-     * would wait for its reader, and closing it would end the reader's input) */
-    if (writes_files && stat(path, &st) == 0 && !S_ISREG(st.st_mode))
-        return access(path, W_OK);
+    /* a new or regular file: FILE.tmp must be creatable beside it */
     char tmp[4096];
     FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
     fclose(f);
-    if (writes_files && tmp[0] != '\0')
+    if (writes_files)
         remove(tmp);
     return 0;
 }
