@@ -118,6 +118,7 @@ struct sim_workspace {
     unsigned char *states;   /* the event processes' per-run states */
     gsl_rng *observer_rng;   /* pair sampling (steady observers), or NULL */
     double *steady_sum;      /* [nsteady] sums of the samples of the current run */
+    size_t samples;          /* how many samples those sums hold */
 };
 
 static void append_name(sim_engine *e, const char *name)
@@ -657,8 +658,7 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
     }
 }
 
-void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs,
-                    sim_counts *counts)
+void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs)
 {
     const sim_scene *scene = &e->scene;
     sim_run *run = &ws->run;
@@ -666,34 +666,47 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
 
     sim_rng_set_stream(rng, scene->seed, index);
     memset(&run->counts, 0, sizeof run->counts);
-    size_t samples = 0;
+    ws->samples = 0;
     if (e->nsteady > 0) {
         memset(ws->steady_sum, 0, e->nsteady * sizeof *ws->steady_sum);
         if (ws->observer_rng)
             sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
     }
     sim_particles_sample(&run->p, scene, rng);
-    observe_at(e, ws, 0, obs, &samples);
+    observe_at(e, ws, 0, obs, &ws->samples);
+}
+
+void sim_engine_evolve(const sim_engine *e, sim_workspace *ws, double *obs, sim_counts *counts)
+{
+    const sim_scene *scene = &e->scene;
+    sim_run *run = &ws->run;
 
     /* the processes' per-run states start at 0 (the stages' remainders, the
      * index streams, which their first reset fills) */
     memset(ws->states, 0, e->state_bytes);
     if (scene->scheme == SIM_SCHEME_TIMESTEP)
-        run_timestep(e, ws, obs, &samples);
+        run_timestep(e, ws, obs, &ws->samples);
     else if (e->lazy_flow)
-        run_jump_timed(e, ws, obs, &samples);
+        run_jump_timed(e, ws, obs, &ws->samples);
     else
-        run_jump_counted(e, ws, obs, &samples);
+        run_jump_counted(e, ws, obs, &ws->samples);
 
     if (e->nsteady > 0) {   /* the time averages follow the rows */
         double *avg = obs + scene->outputs * SIM_OBS_COUNT;
         for (size_t k = 0; k < e->nsteady; k++)
-            avg[k] = ws->steady_sum[k] / (double)samples;
+            avg[k] = ws->steady_sum[k] / (double)ws->samples;
     }
     if (counts) {
-        run->counts.normals = sim_rng_state_of(rng)->normals;
+        run->counts.normals = sim_rng_state_of(run->rng)->normals;
         sim_counts_add(counts, &run->counts);
     }
+}
+
+void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs,
+                    sim_counts *counts)
+{
+    sim_engine_start(e, ws, index, obs);
+    sim_engine_evolve(e, ws, obs, counts);
 }
 
 void sim_counts_add(sim_counts *to, const sim_counts *from)

@@ -71,4 +71,12 @@ void sim_workspace_free(sim_workspace *ws);
 void sim_engine_run(const sim_engine *engine, sim_workspace *ws, uint64_t index, double *obs,
                     sim_counts *counts);
 
+/* sim_engine_run in its two parts, for timing the evolution alone (the
+ * bench): sim_engine_start draws ensemble `index`'s initial state and
+ * observes it (row 0 of obs); sim_engine_evolve then simulates to t_end and
+ * fills the other rows.  Call them in this order, with the same obs. */
+void sim_engine_start(const sim_engine *engine, sim_workspace *ws, uint64_t index, double *obs);
+void sim_engine_evolve(const sim_engine *engine, sim_workspace *ws, double *obs,
+                       sim_counts *counts);
+
 #endif

@@ -19,6 +19,7 @@
 #include "test_util.h"
 
 #include <omp.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "collide.h"
@@ -159,6 +160,42 @@ static void test_conservation(void **state)
     assert_int_equal(c.violations, 0);
     assert_int_equal(c.normals, 3 * 50);        /* the initial Maxwellian only */
     sim_workspace_free(ws);
+    sim_engine_free(e);
+}
+
+/* sim_engine_start then sim_engine_evolve is sim_engine_run, also on a
+ * workspace that ran another ensemble before (steady averages included:
+ * their sample count lives in the workspace between the two calls). */
+static void test_start_evolve_is_run(void **state)
+{
+    (void)state;
+    sim_scene s = heated_maxwell_scene(40, 1);
+    s.steady.present = 1;
+    s.steady.from = 1.0;
+    s.steady.pairs = 100;
+    sim_engine *e = NULL;
+    sim_workspace *fresh = NULL, *used = NULL;
+    assert_int_equal(sim_engine_create(&s, &e, NULL), SIM_OK);
+    assert_int_equal(sim_workspace_create(e, &fresh, NULL), SIM_OK);
+    assert_int_equal(sim_workspace_create(e, &used, NULL), SIM_OK);
+    const size_t len = s.outputs * SIM_OBS_COUNT + sim_engine_steady_count(e);
+    assert_true(sim_engine_steady_count(e) > 0);
+    double *whole = calloc(len, sizeof *whole), *parts = calloc(len, sizeof *parts);
+    assert_non_null(whole);
+    assert_non_null(parts);
+    sim_counts a = {0}, b = {0}, other = {0};
+    sim_engine_run(e, fresh, 3, whole, &a);
+    sim_engine_run(e, used, 5, parts, &other);
+    sim_engine_start(e, used, 3, parts);
+    sim_engine_evolve(e, used, parts, &b);
+    assert_memory_equal(whole, parts, len * sizeof *whole);
+    assert_memory_equal(&a, &b, sizeof a);
+    assert_true(a.collisions > 0);
+    assert_memory_not_equal(&a, &other, sizeof a);   /* ensemble 5 differs */
+    free(whole);
+    free(parts);
+    sim_workspace_free(fresh);
+    sim_workspace_free(used);
     sim_engine_free(e);
 }
 
@@ -535,6 +572,7 @@ int main(void)
         cmocka_unit_test(test_heated_maxwell_exact_finite_n),
         cmocka_unit_test(test_heating_only),
         cmocka_unit_test(test_conservation),
+        cmocka_unit_test(test_start_evolve_is_run),
         cmocka_unit_test(test_no_heating_draws_no_gaussians),
         cmocka_unit_test(test_thread_count_independence),
         cmocka_unit_test(test_hard_sphere_rate_paths),
