@@ -328,24 +328,26 @@ batched_hard_spheres(const collisions_params *p, collisions_state *s,
     }
     const double c[3] = {run->centre[0], run->centre[1], run->centre[2]};
     const double radius = run->radius, scale = s->scale, alpha = p->alpha;
-    uint32_t keep = sim_first_stage(b, bit_range(b->pos, SIM_BATCH), ps, c, scale, rng);
+    unsigned pos = b->pos;   /* the next entry of the block, in a register */
+    uint32_t keep = sim_first_stage(b, bit_range(pos, SIM_BATCH), ps, c, scale, rng);
     uint64_t done = 0, collisions = 0, violations = 0;
     while (done < max) {
-        if (b->pos == SIM_BATCH) {
+        if (pos == SIM_BATCH) {
             sim_batch_advance(b, ps, rng);
+            pos = 0;
             keep = sim_first_stage(b, bit_range(0, SIM_BATCH), ps, c, scale, rng);
         }
-        const uint32_t later = keep & bit_range(b->pos, SIM_BATCH);
+        const uint32_t later = keep & bit_range(pos, SIM_BATCH);
         const unsigned k = later ? (unsigned)__builtin_ctz(later) : SIM_BATCH;
         const uint64_t left = max - done;
-        if (k - b->pos >= left) {   /* the last candidates are all rejected in stage 1 */
-            b->pos += (unsigned)left;
+        if (k - pos >= left) {   /* the last candidates are all rejected in stage 1 */
+            pos += (unsigned)left;
             done = max;
             break;
         }
         const unsigned end = k < SIM_BATCH ? k + 1 : SIM_BATCH;
-        done += end - b->pos;
-        b->pos = end;
+        done += end - pos;
+        pos = end;
         if (k == SIM_BATCH)
             continue;
 
@@ -377,16 +379,22 @@ batched_hard_spheres(const collisions_params *p, collisions_state *s,
             sim_collide_inelastic(vi, vj, alpha, gnorm, unit);
         }
         collisions++;
-        sim_run_cover(run, vi);
-        sim_run_cover(run, vj);
-        if (run->radius != radius)
-            break;
+        /* sim_run_cover, with the loop's copies of the centre and of R
+         * (run->radius == radius until a collision grows it) */
+        const double ri = sim_dist2(vi, c), rj = sim_dist2(vj, c);
+        if ((ri > rj ? ri : rj) > radius * radius) {
+            sim_run_cover(run, vi);
+            sim_run_cover(run, vj);
+            if (run->radius != radius)
+                break;
+        }
         uint32_t moved = 0;   /* later entries of the block with particle i or j */
         for (unsigned q = k + 1; q < SIM_BATCH; q++)
             moved |= (uint32_t)(b->index[q] == i || b->index[q] == j) << q;
         if (moved)
             keep = (keep & ~moved) | sim_first_stage(b, moved, ps, c, scale, rng);
     }
+    b->pos = pos;
     run->counts.candidates += done;
     run->counts.collisions += collisions;
     run->counts.violations += violations;
