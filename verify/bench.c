@@ -396,10 +396,13 @@ static sim_status ensemble_row(const sim_engine *e, int threads, bench_row *row,
 
 /* Thread scaling: paper A Ex 3 (its scene's n) with N = 10 000 ensembles
  * (N = 10 000 seconds / 2, at least 200, when o->seconds < 1) on 1 and on 2
- * threads, REPEATS times alternately, the fastest of each (as hs_relax_rows:
- * a single pair measured the first run's warm-up and whatever else ran, and
- * gave speed-ups from 1.79 to 2.41 on the same code); speed-up = wall time
- * on 1 / wall time on 2. */
+ * threads, THREAD_REPEATS times alternately, the fastest of each (as
+ * hs_relax_rows: a single pair measured the first run's warm-up and whatever
+ * else ran, and gave speed-ups from 1.79 to 2.41 on the same code; the best
+ * of 3 pairs still gave 1.79 once in 11 bench runs, when work elsewhere on
+ * the host slowed the second core for all three); speed-up = wall time on 1
+ * / wall time on 2. */
+#define THREAD_REPEATS 5
 static sim_status thread_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
                               size_t msglen)
 {
@@ -414,7 +417,7 @@ static sim_status thread_rows(const vfy_bench_options *o, vfy_table *t, char *ms
     bench_row one = {0}, two = {0};
     const int max_threads = omp_get_max_threads();
     status = sim_engine_create(&s, &e, &err);
-    for (int r = 0; r < REPEATS && status == SIM_OK; r++) {
+    for (int r = 0; r < THREAD_REPEATS && status == SIM_OK; r++) {
         bench_row a = {0}, b = {0};
         status = ensemble_row(e, 1, &a, &err);
         if (status == SIM_OK)

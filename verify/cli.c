@@ -122,7 +122,7 @@ static const char usage_bench[] =
     "  ms-timestep  the time-step scheme on paper C's white-noise gas, one system\n"
     "            of n = 2e5 (accepted collisions), beside the floor at n = 2e5\n"
     "  grw-ex3-N10000  paper A Ex 3 with 10 000 ensembles on 1 and on 2 threads\n"
-    "            (events per wall second, and the speed-up; the best of 3 runs\n"
+    "            (events per wall second, and the speed-up; the best of 5 runs\n"
     "            on each, alternately; fewer ensembles when S < 1)\n"
     "Engine runs are timed from their initial state (drawn and observed before\n"
     "the clock starts, as the floor's) to t_end.  Print the table (Markdown) with\n"
