@@ -22,31 +22,11 @@
 #include "scene_refs.h"
 #include "table.h"
 
-#define ZMAX 4.5            /* max |z| over the output times for exact expectations */
-#define PAPER_RTOL 0.35     /* Emax within ±35% of the paper's */
-#define CF_LO 3.2
-#define CF_HI 5.0
-#define CLEAN_RATIO 4.0     /* a row is "clean" when Emax > 4 x its largest ci/T */
-#define SONINE_MODEL_RTOL 0.002  /* first-Sonine closure error allowed at t_end (a2^2 terms) */
+#include "driver.h"
+#include "tolerances.h"
 
-struct grw_paper_table {
-    const char *label;              /* "Table 1" */
-    double emax[5], cf[5], vinf[5]; /* rows n = 64, 256, 1024, 4096, 16384 */
-};
-
-/* SPEC §3 Ex 3 (paper A Table 1) and Ex 4 (Table 2). */
-const struct grw_paper_table vfy_grw_table1 = {
-    "Table 1",
-    {0.895e-01, 0.235e-01, 0.571e-02, 0.150e-02, 0.305e-03},
-    {NAN, 3.81, 4.11, 3.81, 4.92},
-    {0.672e-02, 0.516e-02, 0.211e-02, 0.141e-02, 0.355e-03},
-};
-const struct grw_paper_table vfy_grw_table2 = {
-    "Table 2",
-    {0.130e-00, 0.336e-01, 0.823e-02, 0.211e-02, 0.455e-03},
-    {NAN, 3.87, 4.08, 3.90, 4.64},
-    {0.306e-02, 0.188e-02, 0.874e-02, 0.581e-02, 0.148e-02},
-};
+#define SONINE_MODEL_RTOL VFY_TOL_SONINE_MODEL_RTOL
+#define ZMAX VFY_TOL_ZMAX
 
 /* Load the case's scenes (reference and solver) and its rows: n = 64, 256,
  * ... (paper_rows or quick_rows of them); N is the scene's at paper sizes,
@@ -65,152 +45,67 @@ static sim_status load_rows(const vfy_case *c, const vfy_options *o, size_t pape
     return status;
 }
 
-sim_status vfy_case_grw_convergence(const vfy_case *c, const vfy_options *o, vfy_report *r,
-                                    char *msg, size_t msglen)
-{
-    const struct grw_paper_table *paper = c->data;
-    sim_scene scene, solver;
-    size_t n[VFY_ROWS_MAX], rows;
-    sim_status status = load_rows(c, o, 5, 3, 2000, &scene, &solver, n, &rows, msg, msglen);
-    if (status != SIM_OK)
-        return status;
-    /* the closed form (A.13) and the exact finite-n expectations: Maxwell
-     * molecules only (--set may change the kernel) */
-    static const char *const needs[] = {"T_exact", "T_finite_n", "T_raw_finite_n"};
-    if ((status = vfy_require_references(&scene, needs, 3, VFY_NEEDS_MAXWELL, msg, msglen))
-        != SIM_OK)
-        return status;
-    const size_t M = scene.outputs;
-
-    static const char *const cols[] = {
-        "n", "N", "Emax", "Emax_paper", "CF", "CF_paper", "V_inf", "V_inf_paper", "Emax_T",
-        "noise", "z_T_raw", "z_T", VFY_COST_COLUMNS};
-    vfy_table table;
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    double *t = malloc(M * sizeof *t), *exact = malloc(M * sizeof *exact);
-    double *tmp_mean = malloc(M * sizeof *tmp_mean), *tmp_ci = malloc(M * sizeof *tmp_ci);
-    double *band_mean = malloc(rows * M * sizeof *band_mean);
-    double *band_ci = malloc(rows * M * sizeof *band_ci);
-    double *finite = malloc(M * sizeof *finite);
-    if (!t || !exact || !tmp_mean || !tmp_ci || !band_mean || !band_ci || !finite) {
-        snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-        goto done;
-    }
-
-    double emax_prev = NAN, noise_prev = NAN, wall_total = 0.0;
-    for (size_t i = 0; i < rows && status == SIM_OK; i++) {
-        scene.particles.n = solver.particles.n = n[i];
-        vfy_refs refs;
-        sim_ensemble_result res;
-        if ((status = vfy_run_row(c, o, &scene, &solver, &refs, &res, msg, msglen)) != SIM_OK)
-            break;
-        char name[128];
-        memcpy(t, res.t, M * sizeof *t);
-        vfy_refs_column(&refs, "T_exact", exact);
-
-        /* Emax (T_raw, paper A's estimator) and beside it the centred T. */
-        vfy_result_column(&res, SIM_OBS_T_RAW, tmp_mean, tmp_ci);
-        double emax = 0.0, emax_c = 0.0, noise = 0.0, vinf = 0.0;
-        for (size_t m = 0; m < M; m++) {
-            emax = fmax(emax, fabs(exact[m] - tmp_mean[m]) / exact[m]);
-            noise = fmax(noise, tmp_ci[m] / exact[m]);
-            emax_c = fmax(emax_c, fabs(exact[m] - sim_result_mean(&res, m, SIM_OBS_T)) / exact[m]);
-            double u[3] = {sim_result_mean(&res, m, SIM_OBS_UX), sim_result_mean(&res, m, SIM_OBS_UY),
-                           sim_result_mean(&res, m, SIM_OBS_UZ)};
-            vinf = fmax(vinf, sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
-        }
-        memcpy(band_mean + i * M, tmp_mean, M * sizeof *tmp_mean);
-        memcpy(band_ci + i * M, tmp_ci, M * sizeof *tmp_ci);
-        double cf = emax_prev / emax;
-
-        /* Checks.  Against the paper where it prints a value for n <= 4096. */
-        if (i < 4)
-            vfy_check_relative(r, vfy_name(name, sizeof name, "%s n=%zu Emax vs paper %s",
-                                            c->name, n[i], paper->label),
-                               emax, paper->emax[i], PAPER_RTOL);
-        else
-            vfy_skip(r, vfy_name(name, sizeof name, "%s n=%zu Emax vs paper", c->name, n[i]),
-                     "n > 4096: the paper's own statistical error is comparable to its Emax");
-        if (i > 0) {
-            vfy_name(name, sizeof name, "%s n=%zu CF", c->name, n[i]);
-            if (emax > CLEAN_RATIO * noise && emax_prev > CLEAN_RATIO * noise_prev)
-                vfy_check_range(r, name, cf, CF_LO, CF_HI);
-            else {
-                char why[160];
-                snprintf(why, sizeof why, "statistical error not well below Err (Emax %.3g, "
-                         "largest ci/T %.3g): CF %.3g not judged", emax, noise, cf);
-                vfy_skip(r, name, why);
-            }
-        }
-        vfy_refs_column(&refs, "T_raw_finite_n", finite);
-        double z_raw, z_c;
-        vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu T_raw vs exact finite-n "
-                                     "expectation", c->name, n[i]),
-                         tmp_mean + 1, tmp_ci + 1, finite + 1, M - 1, ZMAX, &z_raw);
-        vfy_result_column(&res, SIM_OBS_T, tmp_mean, tmp_ci);
-        vfy_refs_column(&refs, "T_finite_n", finite);
-        vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu T vs exact finite-n "
-                                     "expectation", c->name, n[i]),
-                         tmp_mean + 1, tmp_ci + 1, finite + 1, M - 1, ZMAX, &z_c);
-
-        double events = (double)res.counts.candidates;
-        vfy_table_cell(&table, "%zu", n[i]);
-        vfy_table_cell(&table, "%zu", res.ensembles);
-        vfy_table_cell(&table, "%.3e", emax);
-        vfy_table_cell(&table, "%.3e", paper->emax[i]);
-        vfy_table_number(&table, i, "%.2f", cf);
-        vfy_table_number(&table, i, "%.2f", paper->cf[i]);
-        vfy_table_cell(&table, "%.3e", vinf);
-        vfy_table_cell(&table, "%.3e", paper->vinf[i]);
-        vfy_table_cell(&table, "%.3e", emax_c);
-        vfy_table_cell(&table, "%.3e", noise);
-        vfy_table_cell(&table, "%.2f", z_raw);
-        vfy_table_cell(&table, "%.2f", z_c);
-        vfy_cost_cells(&table, res.cpu_seconds, res.wall_seconds, events);
-        wall_total += res.wall_seconds;
-        emax_prev = emax;
-        noise_prev = noise;
-        vfy_refs_free(&refs);
-        sim_ensemble_result_free(&res);
-        status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
-    }
-    if (status != SIM_OK)
-        goto done;
-
-    char comment[600], notes[2000], title[160];
-    vfy_run_comment(&solver, comment, sizeof comment);
-    snprintf(title, sizeof title, "%s: paper A %s reproduced (%s sizes)", c->name, paper->label,
-             o->size == VFY_PAPER ? "paper" : "quick");
-    snprintf(notes, sizeof notes,
-             "%s.\n\nEmax = max over the %zu output times of |T(t) - eta1(t)|/T(t), with paper A's "
-             "uncentred estimator T_raw = (1/3n) Σ|v_i|^2 and T(t) from (A.13); Emax_T uses the "
-             "centred T instead. CF = Emax(previous row)/Emax. V_inf = max_m |eta1 of V(t_m)|. "
-             "noise = max_m c/T(t_m) with c = 3.2 sqrt(Var/N), the confidence half-width "
-             "(the paper's Conf band is 2c wide). z_T_raw, z_T = max_m |eta1 - E xi^(n)|/sigma "
-             "against the exact expectation of the n-particle estimator (Maxwell molecules; "
-             "SPEC §10). events = candidate collisions (all accepted for Maxwell molecules); "
-             "cpu_s is process CPU time over all threads. Total wall time %.1f s.",
-             comment, M, wall_total);
-    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
-                                        msglen)) != SIM_OK)
-        goto done;
-    const char *ref_names[] = {"T_exact"};
-    const double *ref_cols[] = {exact};
-    if (vfy_write_curves(o, c->name, title, comment, t, M, 1, ref_names, ref_cols, rows, n, band_mean, band_ci,
-                     "T_raw", 2.0, 1) != 0)
-        status = vfy_io_error(c->name, msg, msglen);
-done:
-    vfy_table_free(&table);
-    free(t);
-    free(exact);
-    free(tmp_mean);
-    free(tmp_ci);
-    free(band_mean);
-    free(band_ci);
-    free(finite);
-    return status;
-}
+/* grw-ex3, grw-ex4 (paper A Tables 1 and 2): the same description but for
+ * the paper's numbers (SPEC §3 Ex 3, Ex 4). */
+static const char *const grw_needs[] = {"T_exact", "T_finite_n", "T_raw_finite_n", NULL};
+static const vfy_metric grw_metrics[] = {
+    {"Emax", vfy_metric_max_rel_err, "T_raw", "T_exact", 0},
+    {"noise", vfy_metric_max_rel_ci, "T_raw", "T_exact", 0},
+    {"Emax_T", vfy_metric_max_rel_err, "T", "T_exact", 0},
+    {"V_inf", vfy_metric_max_velocity, NULL, NULL, 0},
+    {"CF", vfy_metric_ratio_previous, "Emax", NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+static const vfy_check_spec grw_checks[] = {
+    {.name = "{case} n={n} Emax vs paper {paper}", .rule = vfy_rule_relative, .value = "Emax",
+     .expected = "Emax_paper", .tol = VFY_TOL_GRW_PAPER_RTOL,
+     .guard = {vfy_guard_at_most, "n", NULL, 4096,
+               "n > 4096: the paper's own statistical error is comparable to its Emax"}},
+    {.name = "{case} n={n} CF", .rule = vfy_rule_range, .value = "CF",
+     .lo = VFY_TOL_GRW_CF_LO, .hi = VFY_TOL_GRW_CF_HI,
+     .guard = {vfy_guard_clean_pair, "Emax", "noise", VFY_TOL_GRW_CLEAN_RATIO,
+               "statistical error not well below Err (Emax {Emax:%.3g}, largest ci/T "
+               "{noise:%.3g}): CF {CF:%.3g} not judged"}},
+    {.name = "{case} n={n} T_raw vs exact finite-n expectation", .rule = vfy_rule_zscore,
+     .value = "T_raw", .expected = "T_raw_finite_n", .from = 1, .tol = VFY_TOL_ZMAX,
+     .out = "z_T_raw"},
+    {.name = "{case} n={n} T vs exact finite-n expectation", .rule = vfy_rule_zscore,
+     .value = "T", .expected = "T_finite_n", .from = 1, .tol = VFY_TOL_ZMAX, .out = "z_T"},
+    {.name = NULL}};
+static const vfy_column grw_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"Emax", NULL, "%.3e"},
+    {"Emax_paper", NULL, "%.3e"}, {"CF", NULL, "%.2f"}, {"CF_paper", NULL, "%.2f"},
+    {"V_inf", NULL, "%.3e"}, {"V_inf_paper", NULL, "%.3e"}, {"Emax_T", NULL, "%.3e"},
+    {"noise", NULL, "%.3e"}, {"z_T_raw", NULL, "%.2f"}, {"z_T", NULL, "%.2f"},
+    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+#define GRW_TABLE(LABEL, PAPER)                                                         \
+    {.paper = LABEL,                                                                  \
+     .paper_rows = {{"particles.n"}, {"64 256 1024 4096 16384"}},                     \
+     .quick_rows = {{"particles.n"}, {"64 256 1024"}, .sets = "particles.ensembles=2000"}, \
+     .needs = grw_needs, .needs_why = VFY_NEEDS_MAXWELL, .paper_columns = PAPER,      \
+     .metrics = grw_metrics, .checks = grw_checks, .columns = grw_columns,           \
+     .figure = {VFY_FIGURE_CURVES, "T_raw", {"T_exact"}, 2.0, 1},                      \
+     .title = "{case}: paper A {paper} reproduced ({size} sizes)", .notes = grw_notes}
+static const char grw_notes[] =
+    "{comment}.\n\nEmax = max over the {outputs} output times of |T(t) - eta1(t)|/T(t), with "
+    "paper A's uncentred estimator T_raw = (1/3n) Σ|v_i|^2 and T(t) from (A.13); Emax_T uses "
+    "the centred T instead. CF = Emax(previous row)/Emax. V_inf = max_m |eta1 of V(t_m)|. "
+    "noise = max_m c/T(t_m) with c = 3.2 sqrt(Var/N), the confidence half-width (the paper's "
+    "Conf band is 2c wide). z_T_raw, z_T = max_m |eta1 - E xi^(n)|/sigma against the exact "
+    "expectation of the n-particle estimator (Maxwell molecules; SPEC §10). events = candidate "
+    "collisions (all accepted for Maxwell molecules); cpu_s is process CPU time over all "
+    "threads. Total wall time {wall_total:%.1f} s.";
+static const vfy_paper_column grw_table1[] = {
+    VFY_PAPER_COLUMN("Emax_paper", 0.895e-01, 0.235e-01, 0.571e-02, 0.150e-02, 0.305e-03),
+    VFY_PAPER_COLUMN("CF_paper", NAN, 3.81, 4.11, 3.81, 4.92),
+    VFY_PAPER_COLUMN("V_inf_paper", 0.672e-02, 0.516e-02, 0.211e-02, 0.141e-02, 0.355e-03),
+    {NULL, 0, NULL}};
+static const vfy_paper_column grw_table2[] = {
+    VFY_PAPER_COLUMN("Emax_paper", 0.130e-00, 0.336e-01, 0.823e-02, 0.211e-02, 0.455e-03),
+    VFY_PAPER_COLUMN("CF_paper", NAN, 3.87, 4.08, 3.90, 4.64),
+    VFY_PAPER_COLUMN("V_inf_paper", 0.306e-02, 0.188e-02, 0.874e-02, 0.581e-02, 0.148e-02),
+    {NULL, 0, NULL}};
+const vfy_case_desc vfy_grw_ex3 = GRW_TABLE("Table 1", grw_table1);
+const vfy_case_desc vfy_grw_ex4 = GRW_TABLE("Table 2", grw_table2);
 
 sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vfy_report *r,
                                      char *msg, size_t msglen)

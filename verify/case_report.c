@@ -1,7 +1,6 @@
 #include "case_report.h"
 
 #include <errno.h>
-#include <gsl/gsl_fit.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -170,18 +169,3 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
         fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
     return 0;
 }
-
-
-void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
-                               const double *sigma, double *T_inf, double *sd, double *chi2)
-{
-    double x[VFY_ROWS_MAX], w[VFY_ROWS_MAX], c0, c1, cov00, cov01, cov11;
-    for (size_t i = 0; i < rows; i++) {
-        x[i] = 1.0 / (double)n[i];
-        w[i] = sigma[i] > 0.0 ? 1.0 / (sigma[i] * sigma[i]) : 1e300;
-    }
-    gsl_fit_wlinear(x, 1, w, 1, mean, 1, rows, &c0, &c1, &cov00, &cov01, &cov11, chi2);
-    *T_inf = c0;
-    *sd = sqrt(cov00);
-}
-

@@ -8,6 +8,7 @@
 
 #include "cases.h"
 #include "ensemble.h"
+#include "metrics.h"
 #include "scene_refs.h"
 #include "table.h"
 
@@ -59,11 +60,5 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const double *const *refs, size_t rows, const size_t *n,
                      const double *mean, const double *ci, const char *quantity,
                      double x_from, int one_panel_per_row);
-
-/* O(1/n) extrapolation at one output time: weighted least squares of
- * mean_i = T_inf + b / n_i with weights 1/sigma_i^2 (GSL).  Returns T_inf,
- * its standard error and the fit's chi^2 (rows <= VFY_ROWS_MAX). */
-void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
-                               const double *sigma, double *T_inf, double *sd, double *chi2);
 
 #endif

@@ -5,17 +5,16 @@
 #include <time.h>
 
 #include "checkpoint.h"
+#include "driver.h"
 #include "engine.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
 #include "table.h"
 
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
-sim_status vfy_case_grw_convergence(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                                    size_t);
 sim_status vfy_case_grw_hard_spheres(const vfy_case *, const vfy_options *, vfy_report *, char *,
                                      size_t);
-extern const struct grw_paper_table vfy_grw_table1, vfy_grw_table2;
+extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4;
 /* case_brs.c */
 sim_status vfy_case_brs_convergence(const vfy_case *, const vfy_options *, vfy_report *, char *,
                                     size_t);
@@ -60,57 +59,57 @@ sim_status vfy_case_hard_extreme(const vfy_case *, const vfy_options *, vfy_repo
 
 static const vfy_case cases[] = {
     {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
-     vfy_case_grw_convergence, &vfy_grw_table1},
+     vfy_run_described, NULL, &vfy_grw_ex3},
     {"grw-ex4", "grw", "paper A Ex 4, Table 2: cooling Maxwell gas, Emax = O(1/n)", 1,
-     vfy_case_grw_convergence, &vfy_grw_table2},
+     vfy_run_described, NULL, &vfy_grw_ex4},
     {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
-     vfy_case_grw_hard_spheres, NULL},
+     vfy_case_grw_hard_spheres, NULL, NULL},
     {"vro-grw-ex3", "grw", "paper A Ex 3 observed through the exact conditional expectation "
-     "over the pending Brownian increments: the variance reduction", 1, vfy_case_vro, NULL},
+     "over the pending Brownian increments: the variance reduction", 1, vfy_case_vro, NULL, NULL},
     {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",
-     1, vfy_case_brs_convergence, &vfy_brs_table1},
+     1, vfy_case_brs_convergence, &vfy_brs_table1, NULL},
     {"brs-ex2", "brs", "paper B Ex 2, Table 2: Maxwell kernels, drifting background", 1,
-     vfy_case_brs_convergence, &vfy_brs_table2},
+     vfy_case_brs_convergence, &vfy_brs_table2, NULL},
     {"brs-ex3", "brs", "paper B Ex 3: Maxwell kernels, light background (slow relaxation)", 0,
-     vfy_case_brs_convergence, &vfy_brs_no_table},
+     vfy_case_brs_convergence, &vfy_brs_no_table, NULL},
     {"brs-ex4", "brs", "paper B Ex 4: hard spheres, K = 1/8: kinetic T* vs LE and Grad closures",
-     1, vfy_case_brs_steady, &vfy_brs_steady4},
+     1, vfy_case_brs_steady, &vfy_brs_steady4, NULL},
     {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,
-     vfy_case_brs_steady, &vfy_brs_steady5},
+     vfy_case_brs_steady, &vfy_brs_steady5, NULL},
     {"ms-a2-white-noise", "ms", "paper C Fig. 1: steady a2 vs alpha, white noise, vs (C.10)", 1,
-     vfy_case_ms_a2, &vfy_ms_white_noise},
+     vfy_case_ms_a2, &vfy_ms_white_noise, NULL},
     {"ms-a2-gaussian", "ms", "paper C Figs. 4, 6: steady a2, a3 vs alpha, Gaussian (HCS)", 1,
-     vfy_case_ms_a2, &vfy_ms_gaussian},
+     vfy_case_ms_a2, &vfy_ms_gaussian, NULL},
     {"ms-a2-non-gaussian", "ms", "paper C Fig. 8: steady a2 vs alpha, non-Gaussian, vs (C.76)",
-     1, vfy_case_ms_a2, &vfy_ms_non_gaussian},
+     1, vfy_case_ms_a2, &vfy_ms_non_gaussian, NULL},
     {"ms-table1", "ms", "paper C Table 1: mu4 direct vs through the exact steady relations", 1,
-     vfy_case_ms_table1, &vfy_ms_table1},
+     vfy_case_ms_table1, &vfy_ms_table1, NULL},
     {"ms-tails", "ms", "paper C Figs. 3, 7: high-energy tails G(c), fitted A vs theory", 0,
-     vfy_case_ms_tails, &vfy_ms_tails},
+     vfy_case_ms_tails, &vfy_ms_tails, NULL},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
-     " Euler and Strang", 1, vfy_case_split, NULL},
+     " Euler and Strang", 1, vfy_case_split, NULL, NULL},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
-     " n x N, paper A Ex 3", 1, vfy_case_cost_grid, &vfy_cost_grw_ex3},
+     " n x N, paper A Ex 3", 1, vfy_case_cost_grid, &vfy_cost_grw_ex3, NULL},
     {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
-     " n x N, paper B Ex 2", 1, vfy_case_cost_grid, &vfy_cost_brs_ex2},
+     " n x N, paper B Ex 2", 1, vfy_case_cost_grid, &vfy_cost_brs_ex2, NULL},
     {"cost-split-ex5", "cost", "SPEC §10: Err (systematic + splitting + statistical) against"
-     " CPU time over n, N and h, paper A Ex 5", 1, vfy_case_cost_split, &vfy_cost_split_ex5},
+     " CPU time over n, N and h, paper A Ex 5", 1, vfy_case_cost_split, &vfy_cost_split_ex5, NULL},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
      " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
-     vfy_case_hard_dissipation, NULL},
+     vfy_case_hard_dissipation, NULL, NULL},
     {"hard-nongaussian", "hard", "paper C's non-Gaussian thermostat near v = 0, alpha = 0.05,"
      " 0.1: a2, Eq. (44), depletion at v = 0, momentum to round-off", 1,
-     vfy_case_hard_nongaussian, NULL},
+     vfy_case_hard_nongaussian, NULL, NULL},
     {"hard-tails", "hard", "paper A Ex 7: growing majorant (no violations), overpopulated"
-     " tail, exact energy balance", 1, vfy_case_hard_tails, NULL},
+     " tail, exact energy balance", 1, vfy_case_hard_tails, NULL, NULL},
     {"hard-tiny", "hard", "n = 2, 3, 4: exact finite-n expectations (papers A and B), exact"
-     " Gaussian bulk velocity, majorant violations", 1, vfy_case_hard_tiny, NULL},
+     " Gaussian bulk velocity, majorant violations", 1, vfy_case_hard_tiny, NULL, NULL},
     {"hard-long-run", "hard", "1e9 events per system: momentum and energy to round-off, exact"
-     " T(0) e^{-kt}, no NaN", 1, vfy_case_hard_long_run, NULL},
+     " T(0) e^{-kt}, no NaN", 1, vfy_case_hard_long_run, NULL, NULL},
     {"hard-stiff", "hard", "paper B closures with K = 100 and 1e-4 through CVODE: success or a"
-     " clear failure, never garbage", 1, vfy_case_hard_stiff, NULL},
+     " clear failure, never garbage", 1, vfy_case_hard_stiff, NULL, NULL},
     {"hard-extreme", "hard", "restitution 1e-3 and 1, rate 1e6, T0 = 1e-8 and 1e8 against"
-     " exact expectations and the Sonine closure", 1, vfy_case_hard_extreme, NULL},
+     " exact expectations and the Sonine closure", 1, vfy_case_hard_extreme, NULL, NULL},
 };
 
 size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
@@ -208,21 +207,31 @@ static void relabel_solver_override(const vfy_options *o, char *msg, size_t msgl
 sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen)
 {
+    return vfy_load_scene_sets(stem, o, NULL, 0, scene, solver, msg, msglen);
+}
+
+sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const char *const *pre,
+                               size_t npre, sim_scene *scene, sim_scene *solver, char *msg,
+                               size_t msglen)
+{
     char path[1024];
-    const char *sets[128];
-    if (o->noverrides + o->nsolver_overrides > sizeof sets / sizeof *sets) {
+    const char *sets[160];
+    if (npre + o->noverrides + o->nsolver_overrides > sizeof sets / sizeof *sets) {
         snprintf(msg, msglen, "too many overrides (at most 128)");
         return SIM_EINVAL;
     }
+    size_t count = 0;
+    for (size_t i = 0; i < npre; i++)
+        sets[count++] = pre[i];
     for (size_t i = 0; i < o->noverrides; i++)
-        sets[i] = o->overrides[i];
+        sets[count++] = o->overrides[i];
+    size_t nscene = count;
     for (size_t i = 0; i < o->nsolver_overrides; i++)
-        sets[o->noverrides + i] = o->solver_overrides[i];
+        sets[count++] = o->solver_overrides[i];
     snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, stem);
-    sim_status status = vfy_scene_load(path, o->overrides, o->noverrides, scene, msg, msglen);
+    sim_status status = vfy_scene_load(path, sets, nscene, scene, msg, msglen);
     if (status == SIM_OK) {
-        status = vfy_scene_load(path, sets, o->noverrides + o->nsolver_overrides, solver, msg,
-                                msglen);
+        status = vfy_scene_load(path, sets, count, solver, msg, msglen);
         if (status != SIM_OK)
             relabel_solver_override(o, msg, msglen);
     }

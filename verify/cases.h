@@ -51,6 +51,8 @@ struct vfy_case {
     int quick;             /* part of the quick suite */
     vfy_case_fn run;
     const void *data;      /* the case's own constants (a paper table) */
+    const struct vfy_case_desc *desc;  /* the description run by vfy_run_described
+                                          (driver.h) */
 };
 
 size_t vfy_case_count(void);
@@ -79,6 +81,12 @@ sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scen
  * another case's scene (e.g. cost-grw-ex3 on grw-ex3). */
 sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen);
+
+/* The same with settings `sets` applied before the options' overrides (a
+ * case's sweep: what --set and --solver-set fix, they never change). */
+sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const char *const *sets,
+                               size_t nsets, sim_scene *scene, sim_scene *solver, char *msg,
+                               size_t msglen);
 
 /* Refuse, before any simulation, a scene without the references `names` (a
  * case whose checks need them, given a scene changed by --set): msg gets

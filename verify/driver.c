@@ -1,0 +1,545 @@
+#include "driver.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "case_report.h"
+#include "observe.h"
+#include "references.h"
+#include "scene_ini.h"
+#include "steady.h"
+
+/* ------------------------------------------------------------ values */
+
+static long values_find(const vfy_values *vals, const char *name)
+{
+    for (size_t i = 0; i < vals->count; i++)
+        if (strcmp(vals->names[i], name) == 0)
+            return (long)i;
+    return -1;
+}
+
+int vfy_values_set(vfy_values *vals, const char *name, double v)
+{
+    long at = values_find(vals, name);
+    if (at < 0) {
+        if (vals->count == vals->capacity) {
+            size_t cap = vals->capacity ? 2 * vals->capacity : 32;
+            char(*names)[32] = realloc(vals->names, cap * sizeof *names);
+            if (names == NULL)
+                return -1;
+            vals->names = names;
+            double *grown = realloc(vals->v, cap * sizeof *grown);
+            if (grown == NULL)
+                return -1;
+            vals->v = grown;
+            vals->capacity = cap;
+        }
+        at = (long)vals->count++;
+        snprintf(vals->names[at], sizeof vals->names[at], "%s", name);
+    }
+    vals->v[at] = v;
+    return 0;
+}
+
+double vfy_values_get(const vfy_values *vals, const char *name)
+{
+    long at = values_find(vals, name);
+    return at < 0 ? NAN : vals->v[at];
+}
+
+int vfy_values_has(const vfy_values *vals, const char *name) { return values_find(vals, name) >= 0; }
+
+void vfy_values_free(vfy_values *vals)
+{
+    free(vals->names);
+    free(vals->v);
+    memset(vals, 0, sizeof *vals);
+}
+
+/* ------------------------------------------------------------ rows */
+
+int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *ci)
+{
+    for (int k = 0; k < SIM_OBS_COUNT; k++)
+        if (strcmp(sim_observable_name((sim_observable)k), name) == 0) {
+            vfy_result_column(&row->res, k, mean, ci);
+            return 0;
+        }
+    if (vfy_refs_column(&row->refs, name, mean) == NULL)
+        return -1;
+    if (ci != NULL)
+        memset(ci, 0, row->res.outputs * sizeof *ci);
+    return 0;
+}
+
+const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row)
+{
+    return row->index > 0 ? &run->rows[row->index - 1] : NULL;
+}
+
+/* ------------------------------------------------------------ templates */
+
+static const char *run_string(const vfy_case_run *run, const char *name)
+{
+    if (strcmp(name, "case") == 0)
+        return run->c->name;
+    if (strcmp(name, "size") == 0)
+        return run->o->size == VFY_PAPER ? "paper" : "quick";
+    if (strcmp(name, "paper") == 0)
+        return run->d->paper ? run->d->paper : "";
+    if (strcmp(name, "comment") == 0)
+        return run->comment;
+    return NULL;
+}
+
+static const char *row_string(const vfy_row *row, const char *name)
+{
+    return row != NULL && strcmp(name, "label") == 0 ? row->label : NULL;
+}
+
+static double lookup(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    if (row != NULL && vfy_values_has(&row->values, name))
+        return vfy_values_get(&row->values, name);
+    return vfy_values_get(&run->values, name);
+}
+
+const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_run *run,
+                       const vfy_row *row)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (const char *p = tmpl; *p && used + 1 < len;) {
+        const char *close = p[0] == '{' && p[1] != '{' ? strchr(p, '}') : NULL;
+        if (close == NULL) {
+            p += p[0] == '{' && p[1] == '{';   /* "{{" is one brace */
+            buf[used++] = *p++;
+            buf[used] = '\0';
+            continue;
+        }
+        char name[64], fmt[16] = "";
+        size_t n = (size_t)(close - p - 1);
+        snprintf(name, sizeof name, "%.*s", (int)(n < sizeof name ? n : sizeof name - 1), p + 1);
+        char *colon = strchr(name, ':');
+        if (colon != NULL) {
+            snprintf(fmt, sizeof fmt, "%s", colon + 1);
+            *colon = '\0';
+        }
+        const char *s = row_string(row, name);
+        if (s == NULL)
+            s = run_string(run, name);
+        double v = lookup(run, row, name);
+        int w;
+        if (s != NULL)
+            w = snprintf(buf + used, len - used, "%s", s);
+        else if (fmt[0])
+            w = snprintf(buf + used, len - used, fmt, v);
+        else if (v == floor(v) && fabs(v) < 1e15)
+            w = snprintf(buf + used, len - used, "%.0f", v);
+        else
+            w = snprintf(buf + used, len - used, "%g", v);
+        used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
+        p = close + 1;
+    }
+    return buf;
+}
+
+/* ------------------------------------------------------------ rules */
+
+static double expected_of(const vfy_case_run *run, const vfy_row *row, const vfy_check_spec *c)
+{
+    return c->expected ? lookup(run, row, c->expected) : c->x;
+}
+
+vfy_verdict vfy_rule_relative(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                              const vfy_check_spec *c)
+{
+    return vfy_check_relative(r, name, lookup(run, row, c->value), expected_of(run, row, c),
+                              c->tol);
+}
+
+vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                           const vfy_check_spec *c)
+{
+    return vfy_check_range(r, name, lookup(run, row, c->value), c->lo, c->hi);
+}
+
+vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                              const vfy_check_spec *c)
+{
+    return vfy_check_absolute(r, name, lookup(run, row, c->value), expected_of(run, row, c),
+                              c->tol);
+}
+
+vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                           const vfy_check_spec *c)
+{
+    return vfy_check_count(r, name, (uint64_t)lookup(run, row, c->value),
+                           (uint64_t)expected_of(run, row, c));
+}
+
+vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                            const vfy_check_spec *c)
+{
+    (void)run;
+    size_t M = row->res.outputs;
+    double *buf = malloc(3 * M * sizeof *buf), z = INFINITY;
+    vfy_verdict v = VFY_FAIL;
+    if (buf == NULL || vfy_row_series(row, c->value, buf, buf + M) != 0
+        || vfy_row_series(row, c->expected, buf + 2 * M, NULL) != 0)
+        vfy_check_true(r, name, 0, "no series %s or %s in this row", c->value, c->expected);
+    else
+        v = vfy_check_zscore(r, name, buf + c->from, buf + M + c->from, buf + 2 * M + c->from,
+                             M - c->from, c->tol, &z);
+    if (c->out != NULL)
+        vfy_values_set(&row->values, c->out, z);
+    free(buf);
+    return v;
+}
+
+/* ------------------------------------------------------------ guards */
+
+vfy_guard_result vfy_guard_at_most(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g)
+{
+    return lookup(run, row, g->a) <= g->x ? VFY_JUDGE : VFY_GUARD_SKIP;
+}
+
+vfy_guard_result vfy_guard_clean_pair(const vfy_case_run *run, const vfy_row *row,
+                                      const vfy_guard *g)
+{
+    const vfy_row *prev = vfy_row_previous(run, row);
+    if (prev == NULL)
+        return VFY_OMIT;
+    int clean = vfy_values_get(&row->values, g->a) > g->x * vfy_values_get(&row->values, g->b)
+                && vfy_values_get(&prev->values, g->a)
+                       > g->x * vfy_values_get(&prev->values, g->b);
+    return clean ? VFY_JUDGE : VFY_GUARD_SKIP;
+}
+
+/* ------------------------------------------------------------ sweep */
+
+/* The i-th space-separated word of list into buf (empty if there is none). */
+static void nth_word(const char *list, size_t i, char *buf, size_t len)
+{
+    buf[0] = '\0';
+    for (const char *p = list; *p;) {
+        while (isspace((unsigned char)*p))
+            p++;
+        size_t n = strcspn(p, " \t\n");
+        if (n == 0)
+            break;
+        if (i-- == 0) {
+            snprintf(buf, len, "%.*s", (int)n, p);
+            return;
+        }
+        p += n;
+    }
+}
+
+static size_t word_count(const char *list)
+{
+    size_t count = 0;
+    char word[64];
+    while (nth_word(list, count, word, sizeof word), word[0])
+        count++;
+    return count;
+}
+
+static size_t sweep_rows(const vfy_sweep *s)
+{
+    if (s->rows != NULL) {
+        size_t rows = 0;
+        while (s->rows[rows])
+            rows++;
+        return rows;
+    }
+    size_t rows = s->keys[0] ? 1 : 0;
+    for (size_t k = 0; k < VFY_SWEEP_KEYS && s->keys[k]; k++) {
+        size_t n = word_count(s->values[k]);
+        rows = s->grid ? rows * n : (k == 0 || n < rows ? n : rows);
+    }
+    return rows;
+}
+
+/* Row i's value of key k (in buf). */
+static void sweep_value(const vfy_sweep *s, size_t i, size_t k, char *buf, size_t len)
+{
+    size_t at = i;
+    if (s->grid) {
+        size_t inner = 1;
+        for (size_t j = k + 1; j < VFY_SWEEP_KEYS && s->keys[j]; j++)
+            inner *= word_count(s->values[j]);
+        at = (i / inner) % word_count(s->values[k]);
+    }
+    nth_word(s->values[k], at, buf, len);
+}
+
+static const char *sweep_name(const vfy_sweep *s, size_t k)
+{
+    if (s->names[k])
+        return s->names[k];
+    const char *dot = strrchr(s->keys[k], '.');
+    return dot ? dot + 1 : s->keys[k];
+}
+
+/* ------------------------------------------------------------ one row */
+
+/* Up to `max` settings of "SET;SET;..." into storage and sets; a "scene=STEM"
+ * setting goes to stem instead.  Returns the new count. */
+static size_t split_sets(const char *list, char (*storage)[160], const char **sets,
+                         size_t count, size_t max, char *stem, size_t stemlen)
+{
+    for (const char *p = list; p && *p && count < max;) {
+        while (isspace((unsigned char)*p))
+            p++;
+        size_t n = strcspn(p, ";");
+        if (n > 0 && strncmp(p, "scene=", 6) == 0)
+            snprintf(stem, stemlen, "%.*s", (int)(n - 6), p + 6);
+        else if (n > 0) {
+            snprintf(storage[count], sizeof storage[count], "%.*s", (int)n, p);
+            sets[count] = storage[count];
+            count++;
+        }
+        p += n + (p[n] == ';');
+    }
+    return count;
+}
+
+/* Load row i's scenes: the sweep's settings, derived ones, then --set, then
+ * --solver-set. */
+static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, char *msg,
+                             size_t msglen)
+{
+    enum { MAX = VFY_SWEEP_KEYS + 32 };
+    char storage[MAX][160], stem[128];
+    const char *sets[MAX];
+    snprintf(stem, sizeof stem, "%s", run->d->scene ? run->d->scene : run->c->name);
+    size_t nsets = split_sets(s->sets, storage, sets, 0, MAX, stem, sizeof stem);
+    if (s->rows != NULL) {
+        const char *text = s->rows[row->index], *colon = strchr(text, ':');
+        size_t n = colon ? (size_t)(colon - text) : 0;
+        snprintf(row->label, sizeof row->label, "%.*s", (int)n, text);
+        nsets = split_sets(colon ? colon + 1 : text, storage, sets, nsets, MAX, stem,
+                           sizeof stem);
+    }
+    for (size_t k = 0; k < VFY_SWEEP_KEYS && s->keys[k] && nsets < MAX; k++) {
+        char value[64];
+        sweep_value(s, row->index, k, value, sizeof value);
+        snprintf(storage[nsets], sizeof storage[nsets], "%s=%s", s->keys[k], value);
+        sets[nsets] = storage[nsets];
+        nsets++;
+        vfy_values_set(&row->values, sweep_name(s, k), strtod(value, NULL));
+    }
+    sim_status status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene,
+                                            &row->solver, msg, msglen);
+    char derived[512];
+    if (status == SIM_OK && run->d->derive
+        && run->d->derive(&row->scene, derived, sizeof derived)[0]) {
+        nsets = split_sets(derived, storage, sets, nsets, MAX, stem, sizeof stem);
+        status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene, &row->solver, msg,
+                                     msglen);
+    }
+    return status;
+}
+
+static void row_cost_values(vfy_row *row)
+{
+    const sim_ensemble_result *res = &row->res;
+    double events = (double)res->counts.candidates;
+    vfy_values_set(&row->values, "N", (double)res->ensembles);
+    vfy_values_set(&row->values, "M", (double)res->outputs);
+    vfy_values_set(&row->values, "cpu_s", res->cpu_seconds);
+    vfy_values_set(&row->values, "wall_s", res->wall_seconds);
+    vfy_values_set(&row->values, "events", events);
+    vfy_values_set(&row->values, "ns_per_event", events > 0 ? 1e9 * res->cpu_seconds / events : 0.0);
+    vfy_values_set(&row->values, "collisions", (double)res->counts.collisions);
+    vfy_values_set(&row->values, "violations", (double)res->counts.violations);
+    for (size_t k = 0; k < res->nsteady && k < SIM_STEADY_BIN0; k++) {
+        char name[32], ci[40];
+        sim_steady_name(k, name, sizeof name);
+        snprintf(ci, sizeof ci, "%s_ci", name);
+        vfy_values_set(&row->values, name, res->steady_mean[k]);
+        vfy_values_set(&row->values, ci, res->steady_ci[k]);
+    }
+}
+
+static void row_checks(vfy_case_run *run, vfy_row *row, vfy_report *r)
+{
+    for (const vfy_check_spec *c = run->d->checks; c && c->name; c++) {
+        vfy_guard_result g = c->guard.fn ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
+        if (g == VFY_OMIT)
+            continue;
+        char name[160], why[320];
+        vfy_expand(name, sizeof name, c->name, run, row);
+        if (g == VFY_GUARD_SKIP)
+            vfy_skip(r, name, vfy_expand(why, sizeof why, c->guard.reason, run, row));
+        else
+            c->rule(r, name, run, row, c);
+    }
+}
+
+static int row_cells(vfy_case_run *run, const vfy_row *row)
+{
+    int rc = 0;
+    for (const vfy_column *col = run->d->columns; col->header; col++) {
+        double v = lookup(run, row, col->value ? col->value : col->header);
+        rc |= vfy_table_number(&run->table, !isnan(v), col->format, v);
+    }
+    return rc;
+}
+
+/* Simulate row i and derive its values, checks and cells. */
+static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, vfy_report *r,
+                          char *msg, size_t msglen)
+{
+    const vfy_case_desc *d = run->d;
+    sim_status status = row_scenes(run, s, row, msg, msglen);
+    if (status != SIM_OK)
+        return status;
+    if (row->index == 0 && d->needs) {
+        size_t count = 0;
+        while (d->needs[count])
+            count++;
+        status = vfy_require_references(&row->scene, d->needs, count, d->needs_why, msg, msglen);
+        if (status != SIM_OK)
+            return status;
+    }
+    vfy_values_set(&row->values, "index", (double)row->index);
+    vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
+    char label[128];
+    vfy_expand(label, sizeof label, d->label ? d->label : "{case} n={n}", run, row);
+    if (d->needs || d->figure.refs[0]) {
+        sim_error err;
+        if ((status = vfy_scene_references(&row->scene, &row->refs, &err)) != SIM_OK) {
+            vfy_scene_format_error(&row->scene, &err, msg, msglen);
+            return status;
+        }
+    }
+    for (const char *const *v = d->values; v && *v; v++)
+        vfy_values_set(&row->values, *v, vfy_reference_value(*v, &row->scene));
+    if (!d->no_simulation) {
+        status = vfy_simulate(&row->solver, run->o, label, &row->res, msg, msglen);
+        if (status != SIM_OK)
+            return status;
+        row_cost_values(row);
+    }
+    for (const vfy_paper_column *p = d->paper_columns; p && p->name; p++)
+        vfy_values_set(&row->values, p->name, row->index < p->count ? p->v[row->index] : NAN);
+    for (const vfy_metric *m = d->metrics; m && m->name; m++)
+        vfy_values_set(&row->values, m->name, m->fn(run, row, m));
+    row_checks(run, row, r);
+    if (row_cells(run, row) != 0) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    return vfy_write_rows_so_far(run->o, run->c->name, &run->table, &row->solver, msg, msglen);
+}
+
+/* ------------------------------------------------------------ figure */
+
+static int write_figure(vfy_case_run *run, const char *title)
+{
+    const vfy_figure_spec *f = &run->d->figure;
+    if (f->kind == VFY_FIGURE_NONE || run->nrows == 0)
+        return 0;
+    const vfy_row *last = &run->rows[run->nrows - 1];
+    size_t M = last->res.outputs, rows = run->nrows, nref = 0;
+    double *buf = malloc((2 * rows + 4) * M * sizeof *buf);
+    size_t *n = malloc(rows * sizeof *n);
+    int rc = -1;
+    if (buf != NULL && n != NULL) {
+        const char *names[4];
+        const double *refs[4];
+        double *mean = buf, *ci = buf + rows * M, *ref = buf + 2 * rows * M;
+        for (; nref < 4 && f->refs[nref]; nref++) {
+            vfy_row_series(last, f->refs[nref], ref + nref * M, NULL);
+            names[nref] = f->refs[nref];
+            refs[nref] = ref + nref * M;
+        }
+        for (size_t i = 0; i < rows; i++) {
+            n[i] = run->rows[i].solver.particles.n;
+            vfy_row_series(&run->rows[i], f->quantity, mean + i * M, ci + i * M);
+        }
+        rc = vfy_write_curves(run->o, run->c->name, title, run->comment, last->res.t, M, nref,
+                              names, refs, rows, n, mean, ci, f->quantity, f->x_from,
+                              f->panel_per_row);
+    }
+    free(buf);
+    free(n);
+    return rc;
+}
+
+/* ------------------------------------------------------------ the case */
+
+static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    const vfy_case_desc *d = run->d;
+    double wall = 0.0;
+    for (size_t i = 0; i < run->nrows; i++)
+        wall += run->rows[i].res.wall_seconds;
+    const vfy_row *last = &run->rows[run->nrows - 1];
+    vfy_values_set(&run->values, "wall_total", wall);
+    vfy_values_set(&run->values, "rows", (double)run->nrows);
+    vfy_values_set(&run->values, "outputs", (double)last->res.outputs);
+    vfy_run_comment(&last->solver, run->comment, sizeof run->comment);
+    sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
+    if (status != SIM_OK)
+        return status;
+    size_t notes_len = strlen(d->notes) + 4096;
+    char title[256], *notes = malloc(notes_len);
+    if (notes == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    vfy_expand(title, sizeof title, d->title, run, NULL);
+    vfy_expand(notes, notes_len, d->notes, run, NULL);
+    status = vfy_write_case_tables(run->o, run->c->name, &run->table, run->comment, title, notes,
+                                   msg, msglen);
+    free(notes);
+    if (status == SIM_OK && write_figure(run, title) != 0)
+        status = vfy_io_error(run->c->name, msg, msglen);
+    return status;
+}
+
+sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
+                             size_t msglen)
+{
+    const vfy_case_desc *d = c->desc;
+    const vfy_sweep *s = o->size == VFY_PAPER ? &d->paper_rows : &d->quick_rows;
+    vfy_case_run run = {.c = c, .d = d, .o = o};
+    size_t rows = sweep_rows(s), ncols = 0;
+    while (d->columns[ncols].header)
+        ncols++;
+    const char **headers = malloc((ncols + 1) * sizeof *headers);
+    run.rows = calloc(rows ? rows : 1, sizeof *run.rows);
+    if (headers == NULL || run.rows == NULL) {
+        free(headers);
+        free(run.rows);
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    for (size_t k = 0; k < ncols; k++)
+        headers[k] = d->columns[k].header;
+    vfy_table_init(&run.table, ncols, headers);
+    sim_status status = SIM_OK;
+    for (size_t i = 0; i < rows && status == SIM_OK; i++) {
+        run.rows[i].index = i;
+        run.nrows = i + 1;
+        status = run_row(&run, s, &run.rows[i], r, msg, msglen);
+    }
+    if (status == SIM_OK && rows > 0)
+        status = finish(&run, r, msg, msglen);
+    for (size_t i = 0; i < run.nrows; i++) {
+        vfy_refs_free(&run.rows[i].refs);
+        sim_ensemble_result_free(&run.rows[i].res);
+        vfy_values_free(&run.rows[i].values);
+    }
+    vfy_values_free(&run.values);
+    vfy_table_free(&run.table);
+    free(run.rows);
+    free(headers);
+    return status;
+}

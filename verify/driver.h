@@ -1,0 +1,260 @@
+/* Verification cases as data, and the one driver that runs them (SPEC §9).
+ *
+ * A case description (vfy_case_desc) names its scene, the rows (a sweep over
+ * scene keys), the references it needs, per-row metrics, checks with guards,
+ * the table's columns, a figure and its notes.  The driver owns everything
+ * else: the row loop, each row's scenes (the sweep's settings first, then
+ * --set, then --solver-set, so that the sweep never overrides what the user
+ * fixed), simulation with progress, checkpoints and --resume
+ * (vfy_simulate), the rows-so-far file after every row, the cost values,
+ * the tables and the figure.  Bespoke cross-row analysis (a fit over the
+ * rows, a second table) is a hook run after the rows, never a case body.
+ *
+ * Everything a description refers to is a value by name:
+ *   - the row's own: n, N (ensembles), M (outputs), index, each sweep key's
+ *     name, the value references it names (references.h), the result's
+ *     steady averages by name with _ci ("a2", "a2_ci"), paper columns (a value printed by the paper for this row), the
+ *     metrics and the values checks define, and the cost values cpu_s, wall_s,
+ *     events, ns_per_event, collisions, violations;
+ *   - the case's: wall_total (all rows), outputs, rows, and what hooks set.
+ * Series (one value per output time) are the result's observables by their
+ * column names ("T", "T_raw", "ux", ...) and the scene's references by name
+ * ("T_exact", ...; scene_refs.h).
+ *
+ * Text (check names, skip reasons, the title, notes, progress labels) are
+ * templates: "{name}" expands to a value (an integer prints as one, anything
+ * else with %g) or "{name:%.3g}" with a printf format; the strings {case},
+ * {size} ("quick" or "paper"), {paper} (the description's paper label) and
+ * {comment} (the provenance line) are always there, and {label} in a row.  "{{" is a brace.
+ */
+#ifndef GDSMC_VFY_DRIVER_H
+#define GDSMC_VFY_DRIVER_H
+
+#include <stddef.h>
+
+#include "cases.h"
+#include "ensemble.h"
+#include "scene.h"
+#include "scene_refs.h"
+#include "table.h"
+
+/* ------------------------------------------------------------ values */
+
+typedef struct vfy_values {
+    size_t count, capacity;
+    char (*names)[32];
+    double *v;
+} vfy_values;
+
+/* Set (or replace) a value; returns 0, or -1 when out of memory. */
+int vfy_values_set(vfy_values *vals, const char *name, double v);
+/* The value, or NAN when absent (so that a missing value fails every
+ * comparison and prints as an empty cell). */
+double vfy_values_get(const vfy_values *vals, const char *name);
+int vfy_values_has(const vfy_values *vals, const char *name);
+void vfy_values_free(vfy_values *vals);
+
+/* ------------------------------------------------------------ rows */
+
+typedef struct vfy_case_run vfy_case_run;
+
+/* One row: its scenes, the references of `scene` and the simulation of
+ * `solver`, and its values. */
+typedef struct vfy_row {
+    size_t index;
+    char label[96];             /* {label}: an explicit row's label, or "" */
+    sim_scene scene;            /* what the references describe */
+    sim_scene solver;           /* what was simulated (--solver-set added) */
+    vfy_refs refs;              /* the scene's references (empty if the case names none) */
+    sim_ensemble_result res;
+    vfy_values values;
+} vfy_row;
+
+/* The series `name` of a row (an observable of the result, or a reference):
+ * mean[m] and ci[m] (ci may be NULL; a reference has ci = 0) for the
+ * row's M outputs.  Returns 0, or -1 when the row has no such series. */
+int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *ci);
+
+/* The row before this one, or NULL for the first. */
+const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
+
+/* ------------------------------------------------------------ description */
+
+/* A per-row metric: defines value `name` from the row (pure functions in
+ * metrics.h do the arithmetic; these adapters name their operands). */
+typedef struct vfy_metric vfy_metric;
+typedef double (*vfy_metric_fn)(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+struct vfy_metric {
+    const char *name;
+    vfy_metric_fn fn;
+    const char *a, *b;   /* operands: series or value names */
+    double x;            /* a parameter, as the function documents */
+};
+
+/* A guard decides whether a check is judged on this row: VFY_JUDGE, a SKIP
+ * with the guard's reason, or VFY_OMIT (the check does not exist here, e.g.
+ * a ratio to the previous row on the first row). */
+typedef enum vfy_guard_result { VFY_JUDGE, VFY_GUARD_SKIP, VFY_OMIT } vfy_guard_result;
+typedef struct vfy_guard vfy_guard;
+typedef vfy_guard_result (*vfy_guard_fn)(const vfy_case_run *run, const vfy_row *row,
+                                         const vfy_guard *g);
+struct vfy_guard {
+    vfy_guard_fn fn;     /* NULL: always judged */
+    const char *a, *b;
+    double x;
+    const char *reason;  /* template of the SKIP's reason */
+};
+
+/* A check: a rule (checks.h) applied to named values. */
+typedef struct vfy_check_spec vfy_check_spec;
+typedef vfy_verdict (*vfy_rule_fn)(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                                   const vfy_check_spec *c);
+struct vfy_check_spec {
+    const char *name;          /* template */
+    vfy_rule_fn rule;
+    const char *value;         /* the value (or series) judged */
+    const char *expected;      /* the value (or series) it is judged against, or NULL */
+    double x;                  /* the expected constant when expected is NULL */
+    double tol, lo, hi;        /* as the rule documents */
+    size_t from;               /* series rules: the first output judged */
+    const char *out;           /* a value the rule defines (e.g. its max |z|), or NULL */
+    vfy_guard guard;
+};
+
+/* A table column: header, the value it prints (NULL: the header's name) and
+ * its printf format for a double; a NaN or missing value is an empty cell. */
+typedef struct vfy_column {
+    const char *header, *value, *format;
+} vfy_column;
+
+/* The cost columns most tables end with. */
+#define VFY_COST_COLUMN_SPECS                                                  \
+    {"cpu_s", NULL, "%.2f"}, {"wall_s", NULL, "%.2f"}, {"events", NULL, "%.0f"}, \
+        {"ns_per_event", NULL, "%.1f"}
+
+/* A value the paper prints for each row (NAN where it prints none). */
+typedef struct vfy_paper_column {
+    const char *name;
+    size_t count;
+    const double *v;
+} vfy_paper_column;
+#define VFY_PAPER_COLUMN(NAME, ...)                                            \
+    {NAME, sizeof((const double[]){__VA_ARGS__}) / sizeof(double),            \
+     (const double[]){__VA_ARGS__}}
+
+/* A sweep: rows of settings.  keys[k] takes the k-th value list, values[k]
+ * ("64 256 1024": one value a row, separated by spaces); the keys are zipped
+ * (row i takes the i-th value of each), or with `grid` every combination
+ * (the first key slowest).  names[k] names the value in the row (NULL: the
+ * key's part after the dot).  `sets` holds settings every row takes
+ * ("particles.ensembles=2000;scene.t_end=4").  Instead of keys, `rows` may
+ * list the rows explicitly, each "LABEL: SET;SET;..." ({label} in
+ * templates); in sets and rows, "scene=STEM" takes the row from scene file
+ * STEM instead of the description's. */
+#define VFY_SWEEP_KEYS 4
+typedef struct vfy_sweep {
+    const char *keys[VFY_SWEEP_KEYS];
+    const char *values[VFY_SWEEP_KEYS];
+    const char *names[VFY_SWEEP_KEYS];
+    int grid;
+    const char *sets;
+    const char *const *rows;   /* NULL-terminated */
+} vfy_sweep;
+
+typedef enum vfy_figure_kind {
+    VFY_FIGURE_NONE,
+    VFY_FIGURE_CURVES,   /* a series against t per row, with its confidence band,
+                            beside reference lines */
+} vfy_figure_kind;
+
+typedef struct vfy_figure_spec {
+    vfy_figure_kind kind;
+    const char *quantity;            /* the series drawn for every row */
+    const char *refs[4];             /* reference series drawn as lines */
+    double x_from;                   /* the t axis starts here */
+    int panel_per_row;               /* one panel per row (the first four), or one plot */
+} vfy_figure_spec;
+
+/* Settings derived from a row's scene (e.g. a thermostat's strength from
+ * alpha), as "key=value;key=value" in buf: applied after the sweep and
+ * before --set and --solver-set, so they never override what the user
+ * fixed.  Returns buf ("" for none). */
+typedef const char *(*vfy_derive_fn)(const sim_scene *scene, char *buf, size_t len);
+
+/* After the rows: cross-row analysis.  May record checks, set case values
+ * (run->values) for the notes, and write its own files.  Returns SIM_OK or
+ * an error with msg. */
+typedef sim_status (*vfy_hook_fn)(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen);
+
+typedef struct vfy_case_desc {
+    const char *scene;                  /* scene file stem (NULL: the case's name) */
+    const char *paper;                  /* {paper} in templates ("Table 1") */
+    vfy_sweep paper_rows, quick_rows;   /* the rows at paper and at quick sizes */
+    const char *const *needs;           /* references every row needs (NULL-terminated) */
+    const char *needs_why;              /* said when the scene lacks them */
+    const char *label;                  /* progress label (NULL: "{case} n={n}") */
+    vfy_derive_fn derive;               /* derived settings, or NULL */
+    const char *const *values;          /* value references (references.h) every row
+                                           takes at its scene (NULL-terminated) */
+    int no_simulation;                  /* rows evaluate references only */
+    const vfy_paper_column *paper_columns;  /* terminated by a NULL name */
+    const vfy_metric *metrics;          /* in order; terminated by a NULL name */
+    const vfy_check_spec *checks;       /* in order; terminated by a NULL name */
+    const vfy_column *columns;          /* terminated by a NULL header */
+    vfy_figure_spec figure;
+    const char *title, *notes;          /* templates */
+    vfy_hook_fn after_rows;
+} vfy_case_desc;
+
+/* ------------------------------------------------------------ the run */
+
+struct vfy_case_run {
+    const vfy_case *c;
+    const vfy_case_desc *d;
+    const vfy_options *o;
+    vfy_row *rows;
+    size_t nrows;
+    vfy_values values;     /* the case's values (wall_total, hooks') */
+    vfy_table table;
+    char comment[800];     /* provenance of the last row (vfy_run_comment) */
+};
+
+/* Run a described case (the vfy_case_fn of every description). */
+sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
+                             size_t msglen);
+
+/* Expand template `tmpl` for run and row (row may be NULL: case values
+ * only) into buf; returns buf. */
+const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_run *run,
+                       const vfy_row *row);
+
+/* ------------------------------------------------------------ rules */
+
+/* value within tol relative of expected (vfy_check_relative). */
+vfy_verdict vfy_rule_relative(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                              const vfy_check_spec *c);
+/* lo <= value <= hi (vfy_check_range). */
+vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                           const vfy_check_spec *c);
+/* |value - expected| <= tol (vfy_check_absolute). */
+vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                              const vfy_check_spec *c);
+/* value == expected (or x), integers (vfy_check_count). */
+vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                           const vfy_check_spec *c);
+/* Series value against series expected from output `from` on: max |z| <=
+ * tol (vfy_check_zscore); the max |z| becomes value `out`. */
+vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                            const vfy_check_spec *c);
+
+/* ------------------------------------------------------------ guards */
+
+/* Judged while value a <= x; else SKIP. */
+vfy_guard_result vfy_guard_at_most(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g);
+/* Omitted on the first row; judged when value a exceeds x times value b on
+ * this row and on the previous one ("clean": the error well above the
+ * noise); else SKIP. */
+vfy_guard_result vfy_guard_clean_pair(const vfy_case_run *run, const vfy_row *row,
+                                      const vfy_guard *g);
+
+#endif

@@ -1,0 +1,111 @@
+#include "metrics.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fit.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "observe.h"
+
+double vfy_max_rel_err(const double *mean, const double *exact, size_t count)
+{
+    double worst = 0.0;
+    for (size_t m = 0; m < count; m++)
+        worst = fmax(worst, fabs(exact[m] - mean[m]) / exact[m]);
+    return worst;
+}
+
+double vfy_max_rel_ci(const double *ci, const double *exact, size_t count)
+{
+    double worst = 0.0;
+    for (size_t m = 0; m < count; m++)
+        worst = fmax(worst, ci[m] / exact[m]);
+    return worst;
+}
+
+double vfy_max_norm3(const double *x, const double *y, const double *z, size_t count)
+{
+    double worst = 0.0;
+    for (size_t m = 0; m < count; m++)
+        worst = fmax(worst, sqrt(x[m] * x[m] + y[m] * y[m] + z[m] * z[m]));
+    return worst;
+}
+
+void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
+                               const double *sigma, double *T_inf, double *sd, double *chi2)
+{
+    double *x = malloc(2 * rows * sizeof *x), c0 = NAN, c1, cov00 = NAN, cov01, cov11;
+    *chi2 = NAN;
+    if (x != NULL) {
+        double *w = x + rows;
+        for (size_t i = 0; i < rows; i++) {
+            x[i] = 1.0 / (double)n[i];
+            w[i] = sigma[i] > 0.0 ? 1.0 / (sigma[i] * sigma[i]) : 1e300;
+        }
+        gsl_fit_wlinear(x, 1, w, 1, mean, 1, rows, &c0, &c1, &cov00, &cov01, &cov11, chi2);
+        free(x);
+    }
+    *T_inf = c0;
+    *sd = sqrt(cov00);
+}
+
+double vfy_student_t(double p, double dof) { return gsl_cdf_tdist_Pinv(p, dof); }
+
+/* ------------------------------------------------------------ adapters */
+
+/* Two series of a row into freshly allocated arrays (a's mean and ci, b's
+ * mean); NULL when out of memory or a series is missing. */
+static double *two_series(const vfy_row *row, const char *a, const char *b, double **a_ci,
+                          double **b_mean)
+{
+    size_t M = row->res.outputs;
+    double *buf = malloc(3 * M * sizeof *buf);
+    if (buf == NULL)
+        return NULL;
+    if (vfy_row_series(row, a, buf, buf + M) != 0
+        || (b != NULL && vfy_row_series(row, b, buf + 2 * M, NULL) != 0)) {
+        free(buf);
+        return NULL;
+    }
+    *a_ci = buf + M;
+    *b_mean = buf + 2 * M;
+    return buf;
+}
+
+double vfy_metric_max_rel_err(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *ci, *exact, *mean = two_series(row, m->a, m->b, &ci, &exact);
+    double v = mean ? vfy_max_rel_err(mean, exact, row->res.outputs) : NAN;
+    free(mean);
+    return v;
+}
+
+double vfy_metric_max_rel_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *ci, *exact, *mean = two_series(row, m->a, m->b, &ci, &exact);
+    double v = mean ? vfy_max_rel_ci(ci, exact, row->res.outputs) : NAN;
+    free(mean);
+    return v;
+}
+
+double vfy_metric_max_velocity(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    double *uy, *uz, *ux = two_series(row, "ux", "uz", &uy, &uz);
+    if (ux == NULL)
+        return NAN;
+    vfy_row_series(row, "uy", uy, NULL);
+    double v = vfy_max_norm3(ux, uy, uz, row->res.outputs);
+    free(ux);
+    return v;
+}
+
+double vfy_metric_ratio_previous(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const vfy_row *prev = vfy_row_previous(run, row);
+    return prev ? vfy_values_get(&prev->values, m->a) / vfy_values_get(&row->values, m->a)
+                : NAN;
+}

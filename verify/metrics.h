@@ -1,0 +1,44 @@
+/* Metrics of the verification cases (SPEC §9), as pure functions of arrays,
+ * and the adapters that let a case description name them (driver.h).
+ *
+ * Each pure function has a test in tests/test_metrics.c that hands it a
+ * wrong answer and sees the metric move.
+ */
+#ifndef GDSMC_VFY_METRICS_H
+#define GDSMC_VFY_METRICS_H
+
+#include <stddef.h>
+
+#include "driver.h"
+
+/* max_m |exact[m] - mean[m]| / exact[m]: paper A's Emax, paper B's Err. */
+double vfy_max_rel_err(const double *mean, const double *exact, size_t count);
+
+/* max_m ci[m] / exact[m]: the largest relative confidence half-width. */
+double vfy_max_rel_ci(const double *ci, const double *exact, size_t count);
+
+/* max_m |(x[m], y[m], z[m])|: the largest norm of a vector series. */
+double vfy_max_norm3(const double *x, const double *y, const double *z, size_t count);
+
+/* The O(1/n) extrapolation at one output time: weighted least squares of
+ * mean_i = T_inf + b / n_i with weights 1/sigma_i^2 (GSL).  Returns T_inf,
+ * its standard error and the fit's chi^2. */
+void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
+                               const double *sigma, double *T_inf, double *sd, double *chi2);
+
+/* Student's t quantile: P(T <= q) = p for dof degrees of freedom (GSL). */
+double vfy_student_t(double p, double dof);
+
+/* ------------------------------------------------- adapters (vfy_metric_fn) */
+
+/* vfy_max_rel_err of series a against series b. */
+double vfy_metric_max_rel_err(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* vfy_max_rel_ci of series a's half-widths against series b. */
+double vfy_metric_max_rel_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* vfy_max_norm3 of the mean velocity (ux, uy, uz). */
+double vfy_metric_max_velocity(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* Value a of the previous row over value a of this one (a convergence
+ * factor); NAN on the first row. */
+double vfy_metric_ratio_previous(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+
+#endif

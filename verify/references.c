@@ -1,0 +1,89 @@
+#include "references.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "sonine.h"
+
+/* Paper C's estimates in d = 3 at the scene's restitution coefficient. */
+#define SONINE(fn)                                                              \
+    static double fn##_at(const sim_scene *s)                                   \
+    {                                                                           \
+        return ref_sonine_##fn(s->collisions.restitution, 3.0);                 \
+    }
+SONINE(a2_white_noise)
+SONINE(a2_white_noise_ratio)
+SONINE(a2_gaussian)
+SONINE(a2_gaussian_alt)
+SONINE(a2_nongaussian)
+SONINE(a2_nongaussian_fit)
+SONINE(mu2_0)
+SONINE(mu2_1)
+SONINE(mu4_0)
+SONINE(mu4_1)
+SONINE(tail_A_white_noise)
+SONINE(tail_A_gaussian)
+#undef SONINE
+
+static const vfy_reference registry[] = {
+    /* series: scene_refs.h decides which apply */
+    {"T_exact", VFY_REF_SERIES, "paper A (A.13) or paper B (B.14): exact T(t), Maxwell molecules",
+     NULL},
+    {"T_finite_n", VFY_REF_SERIES, "exact E of the centred n-particle T (reference/heated.h, "
+     "reference/background.h)", NULL},
+    {"T_raw_finite_n", VFY_REF_SERIES, "exact E of paper A's uncentred T_raw (reference/heated.h)",
+     NULL},
+    {"ux_exact", VFY_REF_SERIES, "paper B (B.15-B.17): exact mean velocity", NULL},
+    {"uy_exact", VFY_REF_SERIES, "paper B (B.15-B.17): exact mean velocity", NULL},
+    {"uz_exact", VFY_REF_SERIES, "paper B (B.15-B.17): exact mean velocity", NULL},
+    {"T_maxwell_closure", VFY_REF_SERIES, "paper A Ex 5: Maxwellian closure (CVODE)", NULL},
+    {"T_sonine_closure", VFY_REF_SERIES, "paper A Ex 5: first-Sonine closure, a2 from (C.10)",
+     NULL},
+    {"T_le", VFY_REF_SERIES, "paper B (B.21): local-equilibrium closure (CVODE)", NULL},
+    {"ux_le", VFY_REF_SERIES, "paper B (B.21)", NULL},
+    {"uy_le", VFY_REF_SERIES, "paper B (B.21)", NULL},
+    {"uz_le", VFY_REF_SERIES, "paper B (B.21)", NULL},
+    {"T_grad", VFY_REF_SERIES, "paper B (B.22): Grad closure (CVODE)", NULL},
+    {"ux_grad", VFY_REF_SERIES, "paper B (B.22)", NULL},
+    {"uy_grad", VFY_REF_SERIES, "paper B (B.22)", NULL},
+    {"uz_grad", VFY_REF_SERIES, "paper B (B.22)", NULL},
+    /* values at the scene's alpha: paper C, d = 3 */
+    {"a2_C10", VFY_REF_VALUE, "paper C Eq. (10): white-noise a2", a2_white_noise_at},
+    {"a2_C32", VFY_REF_VALUE, "paper C Eq. (32): white-noise a2, ratio route",
+     a2_white_noise_ratio_at},
+    {"a2_C5", VFY_REF_VALUE, "paper C Eq. (5): Gaussian-thermostat (HCS) a2", a2_gaussian_at},
+    {"a2_C40", VFY_REF_VALUE, "paper C Eq. (40): Gaussian-thermostat a2, alternative",
+     a2_gaussian_alt_at},
+    {"a2_C50", VFY_REF_VALUE, "paper C Eq. (50): non-Gaussian a2", a2_nongaussian_at},
+    {"a2_C76", VFY_REF_VALUE, "paper C Eq. (76): non-Gaussian a2, semi-empirical",
+     a2_nongaussian_fit_at},
+    {"mu2_0", VFY_REF_VALUE, "paper C: mu2 of a Maxwellian", mu2_0_at},
+    {"mu2_1", VFY_REF_VALUE, "paper C: mu2's first-Sonine coefficient of a2", mu2_1_at},
+    {"mu4_0", VFY_REF_VALUE, "paper C: mu4 of a Maxwellian", mu4_0_at},
+    {"mu4_1", VFY_REF_VALUE, "paper C: mu4's first-Sonine coefficient of a2", mu4_1_at},
+    {"A_white_noise", VFY_REF_VALUE, "paper C Eq. (36): white-noise tail amplitude",
+     tail_A_white_noise_at},
+    {"A_gaussian", VFY_REF_VALUE, "paper C: Gaussian-thermostat tail amplitude",
+     tail_A_gaussian_at},
+};
+
+size_t vfy_reference_count(void) { return sizeof registry / sizeof *registry; }
+
+const vfy_reference *vfy_reference_at(size_t i)
+{
+    return i < vfy_reference_count() ? &registry[i] : NULL;
+}
+
+const vfy_reference *vfy_reference_find(const char *name)
+{
+    for (size_t i = 0; i < vfy_reference_count(); i++)
+        if (strcmp(registry[i].name, name) == 0)
+            return &registry[i];
+    return NULL;
+}
+
+double vfy_reference_value(const char *name, const sim_scene *s)
+{
+    const vfy_reference *r = vfy_reference_find(name);
+    return r && r->kind == VFY_REF_VALUE ? r->value(s) : NAN;
+}
