@@ -17,33 +17,10 @@
 #include <string.h>
 
 #include "case_report.h"
-#include "cases.h"
-#include "scene_ini.h"
-#include "scene_refs.h"
-#include "table.h"
-
 #include "driver.h"
+#include "metrics.h"
 #include "tolerances.h"
 
-#define SONINE_MODEL_RTOL VFY_TOL_SONINE_MODEL_RTOL
-#define ZMAX VFY_TOL_ZMAX
-
-/* Load the case's scenes (reference and solver) and its rows: n = 64, 256,
- * ... (paper_rows or quick_rows of them); N is the scene's at paper sizes,
- * quick_ensembles at quick sizes. */
-static sim_status load_rows(const vfy_case *c, const vfy_options *o, size_t paper_rows,
-                            size_t quick_rows, size_t quick_ensembles, sim_scene *scene,
-                            sim_scene *solver, size_t n[VFY_ROWS_MAX], size_t *rows, char *msg,
-                            size_t msglen)
-{
-    sim_status status = vfy_load_case_scene(c, o, scene, solver, msg, msglen);
-    *rows = o->size == VFY_PAPER ? paper_rows : quick_rows;
-    if (o->size == VFY_QUICK)
-        scene->particles.ensembles = solver->particles.ensembles = quick_ensembles;
-    for (size_t i = 0; i < *rows; i++)
-        n[i] = (size_t)64 << (2 * i);
-    return status;
-}
 
 /* grw-ex3, grw-ex4 (paper A Tables 1 and 2): the same description but for
  * the paper's numbers (SPEC §3 Ex 3, Ex 4). */
@@ -107,163 +84,126 @@ static const vfy_paper_column grw_table2[] = {
 const vfy_case_desc vfy_grw_ex3 = GRW_TABLE("Table 1", grw_table1);
 const vfy_case_desc vfy_grw_ex4 = GRW_TABLE("Table 2", grw_table2);
 
-sim_status vfy_case_grw_hard_spheres(const vfy_case *c, const vfy_options *o, vfy_report *r,
-                                     char *msg, size_t msglen)
-{
-    sim_scene scene, solver;
-    size_t n[VFY_ROWS_MAX], rows;
-    sim_status status = load_rows(c, o, 4, 3, 300, &scene, &solver, n, &rows, msg, msglen);
-    if (status != SIM_OK)
-        return status;
-    const size_t M = scene.outputs;
+/* grw-ex5 (SPEC §3 Ex 5): heated hard spheres; no exact solution, so the
+ * rows are extrapolated to n = infinity at every output time and compared
+ * with both closures. */
+static const vfy_metric ex5_metrics[] = {
+    {"dev_maxwell_closure", vfy_metric_max_ratio_dev, "T", "T_maxwell_closure", 0},
+    {"dev_sonine_closure", vfy_metric_max_ratio_dev, "T", "T_sonine_closure", 0},
+    {"T_end", vfy_metric_final_mean, "T", NULL, 0},
+    {"T_end_ci", vfy_metric_final_ci, "T", NULL, 0},
+    {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+static const vfy_check_spec ex5_checks[] = {
+    {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = NULL}};
+static const vfy_column ex5_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"T_end", NULL, "%.5f"},
+    {"T_end_ci", NULL, "%.5f"}, {"dev_maxwell_closure", NULL, "%.4f"},
+    {"dev_sonine_closure", NULL, "%.4f"}, {"fictitious_fraction", NULL, "%.3f"},
+    {"violations", NULL, "%.0f"}, VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
 
-    static const char *const cols[] = {"n", "N", "T_end", "T_end_ci", "dev_maxwell_closure",
-                                       "dev_sonine_closure", "fictitious_fraction", "violations",
-                                       VFY_COST_COLUMNS};
+/* The O(1/n) extrapolation at every output time: <case>-extrapolated.csv, the
+ * fit's chi^2 and T_inf(t_end) against the Sonine closure, and the n =
+ * infinity curve of the figure. */
+static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
     static const char *const xcols[] = {"t", "T_inf", "T_inf_ci", "T_maxwell_closure",
                                         "T_sonine_closure", "diff_maxwell", "diff_sonine",
                                         "chi2"};
-    vfy_table table, xtable;
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    vfy_table_init(&xtable, sizeof xcols / sizeof *xcols, xcols);
-    vfy_refs refs = {0};
-    sim_error err;
-    double *t = malloc(M * sizeof *t), *maxw = malloc(M * sizeof *maxw);
-    double *sonine = malloc(M * sizeof *sonine);
-    double *band_mean = malloc((rows + 1) * M * sizeof *band_mean);
-    double *band_ci = malloc((rows + 1) * M * sizeof *band_ci);
-    if (!t || !maxw || !sonine || !band_mean || !band_ci) {
+    const size_t rows = run->nrows, M = run->rows[0].res.outputs;
+    const double *t = run->rows[0].res.t;
+    double *buf = malloc(((2 * rows + 2) * M + 2 * rows) * sizeof *buf);
+    size_t *n = malloc(rows * sizeof *n);
+    run->extra_mean = malloc(M * sizeof *run->extra_mean);
+    run->extra_ci = malloc(M * sizeof *run->extra_ci);
+    if (!buf || !n || !run->extra_mean || !run->extra_ci) {
+        free(buf);
+        free(n);
         snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-        goto done;
+        return SIM_ENOMEM;
     }
-    if ((status = vfy_scene_references(&scene, &refs, &err)) != SIM_OK) {
-        vfy_scene_format_error(&scene, &err, msg, msglen);
-        goto done;
+    double *mean = buf, *sigma = buf + rows * M, *maxw = buf + 2 * rows * M, *son = maxw + M;
+    double *mm = son + M, *ss = mm + rows;   /* one output time's rows */
+    vfy_row_series(&run->rows[0], "T_maxwell_closure", maxw, NULL);
+    vfy_row_series(&run->rows[0], "T_sonine_closure", son, NULL);
+    for (size_t i = 0; i < rows; i++) {   /* row-major per output time below */
+        n[i] = run->rows[i].solver.particles.n;
+        double *ci = sigma + i * M;
+        vfy_row_series(&run->rows[i], "T", mean + i * M, ci);
+        for (size_t m = 0; m < M; m++)
+            ci[m] /= SIM_LAMBDA_P;
     }
-    vfy_refs_column(&refs, "T_maxwell_closure", maxw);
-    vfy_refs_column(&refs, "T_sonine_closure", sonine);
-
-    double wall_total = 0.0;
-    for (size_t i = 0; i < rows; i++) {
-        solver.particles.n = n[i];
-        char label[96], name[128];
-        snprintf(label, sizeof label, "%s n=%zu", c->name, n[i]);
-        sim_ensemble_result res;
-        status = vfy_simulate(&solver, o, label, &res, msg, msglen);
-        if (status != SIM_OK) {
-            sim_ensemble_result_free(&res);
-            goto done;
-        }
-        memcpy(t, res.t, M * sizeof *t);
-        vfy_result_column(&res, SIM_OBS_T, band_mean + i * M, band_ci + i * M);
-        double dev_m = 0.0, dev_s = 0.0;
-        for (size_t m = 0; m < M; m++) {
-            dev_m = fmax(dev_m, fabs(band_mean[i * M + m] / maxw[m] - 1.0));
-            dev_s = fmax(dev_s, fabs(band_mean[i * M + m] / sonine[m] - 1.0));
-        }
-        vfy_check_count(r, vfy_name(name, sizeof name, "%s n=%zu majorant violations", c->name,
-                                    n[i]),
-                        res.counts.violations, 0);
-        double events = (double)res.counts.candidates;
-        vfy_table_cell(&table, "%zu", n[i]);
-        vfy_table_cell(&table, "%zu", res.ensembles);
-        vfy_table_cell(&table, "%.5f", band_mean[i * M + M - 1]);
-        vfy_table_cell(&table, "%.5f", band_ci[i * M + M - 1]);
-        vfy_table_cell(&table, "%.4f", dev_m);
-        vfy_table_cell(&table, "%.4f", dev_s);
-        vfy_table_cell(&table, "%.3f", 1.0 - (double)res.counts.collisions / events);
-        vfy_table_cell(&table, "%llu", (unsigned long long)res.counts.violations);
-        vfy_cost_cells(&table, res.cpu_seconds, res.wall_seconds, events);
-        wall_total += res.wall_seconds;
-        sim_ensemble_result_free(&res);
-        if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
-            goto done;
-    }
-
-    /* n -> infinity at every output time. */
-    double *T_inf = band_mean + rows * M, *T_inf_ci = band_ci + rows * M;
-    double chi2_max = 0.0, diff_m_steady = 0.0, diff_s_steady = 0.0, ci_steady = 0.0;
+    vfy_table xtable;
+    vfy_table_init(&xtable, sizeof xcols / sizeof *xcols, xcols);
+    double chi2_max = 0.0;
     for (size_t m = 0; m < M; m++) {
-        double mean[VFY_ROWS_MAX], sigma[VFY_ROWS_MAX], sd, chi2;
+        double *T = run->extra_mean, *Tci = run->extra_ci, sd, chi2;
         for (size_t i = 0; i < rows; i++) {
-            mean[i] = band_mean[i * M + m];
-            sigma[i] = band_ci[i * M + m] / SIM_LAMBDA_P;
+            mm[i] = mean[i * M + m];
+            ss[i] = sigma[i * M + m];
         }
-        vfy_extrapolate_inverse_n(rows, n, mean, sigma, &T_inf[m], &sd, &chi2);
-        T_inf_ci[m] = SIM_LAMBDA_P * sd;
+        vfy_extrapolate_inverse_n(rows, n, mm, ss, &T[m], &sd, &chi2);
+        Tci[m] = SIM_LAMBDA_P * sd;
         if (m > 0)
             chi2_max = fmax(chi2_max, chi2);
         vfy_table_cell(&xtable, "%.4g", t[m]);
-        vfy_table_cell(&xtable, "%.6f", T_inf[m]);
-        vfy_table_cell(&xtable, "%.6f", T_inf_ci[m]);
+        vfy_table_cell(&xtable, "%.6f", T[m]);
+        vfy_table_cell(&xtable, "%.6f", Tci[m]);
         vfy_table_cell(&xtable, "%.6f", maxw[m]);
-        vfy_table_cell(&xtable, "%.6f", sonine[m]);
-        vfy_table_cell(&xtable, "%+.6f", T_inf[m] - maxw[m]);
-        vfy_table_cell(&xtable, "%+.6f", T_inf[m] - sonine[m]);
+        vfy_table_cell(&xtable, "%.6f", son[m]);
+        vfy_table_cell(&xtable, "%+.6f", T[m] - maxw[m]);
+        vfy_table_cell(&xtable, "%+.6f", T[m] - son[m]);
         vfy_table_cell(&xtable, "%.2f", chi2);
     }
-    diff_m_steady = T_inf[M - 1] - maxw[M - 1];
-    diff_s_steady = T_inf[M - 1] - sonine[M - 1];
-    ci_steady = T_inf_ci[M - 1];
+    const double T_inf = run->extra_mean[M - 1], ci_end = run->extra_ci[M - 1];
+    vfy_values_set(&run->values, "t_end", t[M - 1]);
+    vfy_values_set(&run->values, "T_inf", T_inf);
+    vfy_values_set(&run->values, "T_inf_ci", ci_end);
+    vfy_values_set(&run->values, "diff_maxwell", T_inf - maxw[M - 1]);
+    vfy_values_set(&run->values, "diff_sonine", T_inf - son[M - 1]);
+    vfy_values_set(&run->values, "chi2_max", chi2_max);
 
     /* The O(1/n) model must describe the rows: chi^2 with rows - 2 degrees of
-     * freedom below its 0.999 quantile at every time (13.8 for 2, 10.8 for 1). */
-    char name[128];
-    vfy_check_range(r, vfy_name(name, sizeof name, "%s O(1/n) fit chi^2 (max over t)", c->name),
+     * freedom below its 0.999 quantile at every time (13.8 for 2, 10.8 for 1).
+     * The kinetic T at t_end, extrapolated to n = infinity, agrees with the
+     * first-Sonine closure within its confidence half-width plus the
+     * closure's own model error. */
+    char name[128], path[1024];
+    vfy_check_range(r, vfy_expand(name, sizeof name, "{case} O(1/n) fit chi^2 (max over t)", run,
+                                  NULL),
                     chi2_max, 0.0, rows >= 4 ? 13.8 : 10.8);
-    /* The kinetic temperature at t_end, extrapolated to n = infinity, agrees
-     * with the first-Sonine closure within its confidence half-width plus
-     * the closure's own model error. */
-    vfy_check_absolute(r, vfy_name(name, sizeof name, "%s T_inf(t_end) vs Sonine closure",
-                                   c->name),
-                       T_inf[M - 1], sonine[M - 1],
-                       ci_steady + SONINE_MODEL_RTOL * sonine[M - 1]);
-    if (o->progress)
-        fprintf(o->progress, "   %s: at t = %g, T_inf = %.5f ± %.5f; Maxwellian closure %+.5f, "
-                "Sonine closure %+.5f\n", c->name, t[M - 1], T_inf[M - 1], ci_steady,
-                diff_m_steady, diff_s_steady);
-
-    char path[1024], comment[600], notes[2400], title[160];
-    vfy_run_comment(&solver, comment, sizeof comment);
-    snprintf(title, sizeof title, "%s: paper A Ex 5, heated hard spheres (%s sizes)", c->name,
-             o->size == VFY_PAPER ? "paper" : "quick");
-    snprintf(notes, sizeof notes,
-             "%s.\n\nNo exact solution exists. T is the centred temperature; dev_* = max over "
-             "the output times of |eta1/T_closure - 1|; T_end at t = %g with its confidence "
-             "half-width. The extrapolation to n = infinity (weighted least squares in 1/n at "
-             "every output time, reports/%s-extrapolated.csv) gives T_inf = %.5f ± %.5f at "
-             "t = %g: minus the Maxwellian closure %+.5f, minus the first-Sonine closure "
-             "(a2 from C.10) %+.5f. Largest chi^2 of the O(1/n) fit over the output times: "
-             "%.2f (%zu rows). Total wall time %.1f s.",
-             comment, t[M - 1], c->name, T_inf[M - 1], ci_steady, t[M - 1], diff_m_steady,
-             diff_s_steady, chi2_max, rows, wall_total);
+    vfy_check_absolute(r, vfy_expand(name, sizeof name, "{case} T_inf(t_end) vs Sonine closure",
+                                     run, NULL),
+                       T_inf, son[M - 1], ci_end + VFY_TOL_SONINE_MODEL_RTOL * son[M - 1]);
+    if (run->o->progress)
+        fprintf(run->o->progress, "   %s: at t = %g, T_inf = %.5f ± %.5f; Maxwellian closure "
+                "%+.5f, Sonine closure %+.5f\n", run->c->name, t[M - 1], T_inf, ci_end,
+                T_inf - maxw[M - 1], T_inf - son[M - 1]);
     char xname[160];
-    snprintf(xname, sizeof xname, "%s-extrapolated", c->name);
-    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
-                                        msglen)) != SIM_OK)
-        goto done;
-    if (vfy_table_write_csv(&xtable, vfy_report_path(o, xname, ".csv", path, sizeof path),
-                            comment) != 0) {
+    snprintf(xname, sizeof xname, "%s-extrapolated", run->c->name);
+    sim_status status = SIM_OK;
+    if (vfy_table_write_csv(&xtable, vfy_report_path(run->o, xname, ".csv", path, sizeof path),
+                            run->comment) != 0)
         status = vfy_io_error(path, msg, msglen);
-        goto done;
-    }
-    size_t n_all[VFY_ROWS_MAX + 1];
-    memcpy(n_all, n, rows * sizeof *n);
-    n_all[rows] = 0;   /* the extrapolated curve */
-    const char *ref_names[] = {"T_maxwell_closure", "T_sonine_closure"};
-    const double *ref_cols[] = {maxw, sonine};
-    if (vfy_write_curves(o, c->name, title, comment, t, M, 2, ref_names, ref_cols, rows + 1, n_all, band_mean,
-                     band_ci, "T", 0.0, 0) != 0)
-        status = vfy_io_error(c->name, msg, msglen);
-done:
-    vfy_refs_free(&refs);
-    vfy_table_free(&table);
     vfy_table_free(&xtable);
-    free(t);
-    free(maxw);
-    free(sonine);
-    free(band_mean);
-    free(band_ci);
+    free(buf);
+    free(n);
     return status;
 }
+
+const vfy_case_desc vfy_grw_ex5 = {
+    .paper_rows = {{"particles.n"}, {"64 256 1024 4096"}},
+    .quick_rows = {{"particles.n"}, {"64 256 1024"}, .sets = "particles.ensembles=300"},
+    .metrics = ex5_metrics, .checks = ex5_checks, .columns = ex5_columns,
+    .figure = {VFY_FIGURE_CURVES, "T", {"T_maxwell_closure", "T_sonine_closure"}, 0.0, 0},
+    .after_rows = ex5_extrapolate,
+    .title = "{case}: paper A Ex 5, heated hard spheres ({size} sizes)",
+    .notes = "{comment}.\n\nNo exact solution exists. T is the centred temperature; dev_* = "
+             "max over the output times of |eta1/T_closure - 1|; T_end at t = {t_end:%g} with "
+             "its confidence half-width. The extrapolation to n = infinity (weighted least "
+             "squares in 1/n at every output time, reports/{case}-extrapolated.csv) gives "
+             "T_inf = {T_inf:%.5f} ± {T_inf_ci:%.5f} at t = {t_end:%g}: minus the Maxwellian "
+             "closure {diff_maxwell:%+.5f}, minus the first-Sonine closure (a2 from C.10) "
+             "{diff_sonine:%+.5f}. Largest chi^2 of the O(1/n) fit over the output times: "
+             "{chi2_max:%.2f} ({rows} rows). Total wall time {wall_total:%.1f} s."};

@@ -61,13 +61,44 @@ void vfy_values_free(vfy_values *vals)
 
 /* ------------------------------------------------------------ rows */
 
+/* The variant index of name "X@VARIANT" in the description (0 without '@'),
+ * or -1. */
+static long variant_index(const vfy_case_desc *d, const char *variant)
+{
+    if (variant == NULL || variant[0] == '\0')
+        return 0;
+    for (long k = 0; d->variants && d->variants[k]; k++) {
+        size_t n = strcspn(d->variants[k], ":");
+        if (strlen(variant) == n && strncmp(d->variants[k], variant, n) == 0)
+            return k;
+    }
+    return -1;
+}
+
+const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row *row,
+                                          const char *variant)
+{
+    long k = variant_index(run->d, variant);
+    return k < 0 ? NULL : k == 0 ? &row->res : &row->more[k - 1];
+}
+
 int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *ci)
 {
-    for (int k = 0; k < SIM_OBS_COUNT; k++)
-        if (strcmp(sim_observable_name((sim_observable)k), name) == 0) {
-            vfy_result_column(&row->res, k, mean, ci);
+    const char *at = strchr(name, '@');
+    size_t len = at ? (size_t)(at - name) : strlen(name);
+    const sim_ensemble_result *res = &row->res;
+    if (at != NULL) {
+        res = vfy_row_result(row->run, row, at + 1);
+        if (res == NULL)
+            return -1;
+    }
+    for (int k = 0; k < SIM_OBS_COUNT; k++) {
+        const char *obs = sim_observable_name((sim_observable)k);
+        if (strlen(obs) == len && strncmp(obs, name, len) == 0) {
+            vfy_result_column(res, k, mean, ci);
             return 0;
         }
+    }
     if (vfy_refs_column(&row->refs, name, mean) == NULL)
         return -1;
     if (ci != NULL)
@@ -194,7 +225,7 @@ vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, 
     else
         v = vfy_check_zscore(r, name, buf + c->from, buf + M + c->from, buf + 2 * M + c->from,
                              M - c->from, c->tol, &z);
-    if (c->out != NULL)
+    if (c->out != NULL && !(vfy_values_get(&row->values, c->out) >= z))
         vfy_values_set(&row->values, c->out, z);
     free(buf);
     return v;
@@ -308,10 +339,10 @@ static size_t split_sets(const char *list, char (*storage)[160], const char **se
     return count;
 }
 
-/* Load row i's scenes: the sweep's settings, derived ones, then --set, then
- * --solver-set. */
-static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, char *msg,
-                             size_t msglen)
+/* Load row i's scenes: the sweep's settings, `extra` (a variant's, or
+ * NULL), derived ones, then --set, then --solver-set. */
+static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row,
+                             const char *extra, char *msg, size_t msglen)
 {
     enum { MAX = VFY_SWEEP_KEYS + 32 };
     char storage[MAX][160], stem[128];
@@ -333,6 +364,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
         nsets++;
         vfy_values_set(&row->values, sweep_name(s, k), strtod(value, NULL));
     }
+    nsets = split_sets(extra, storage, sets, nsets, MAX, stem, sizeof stem);
     sim_status status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene,
                                             &row->solver, msg, msglen);
     char derived[512];
@@ -345,25 +377,66 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     return status;
 }
 
-static void row_cost_values(vfy_row *row)
+/* The cost values of result res, each name followed by suffix ("" or
+ * "@VARIANT"), and for the first variant the steady averages by name. */
+static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const char *suffix)
 {
-    const sim_ensemble_result *res = &row->res;
+    static const char *const names[] = {"N", "M", "cpu_s", "wall_s", "events", "ns_per_event",
+                                        "collisions", "violations"};
     double events = (double)res->counts.candidates;
-    vfy_values_set(&row->values, "N", (double)res->ensembles);
-    vfy_values_set(&row->values, "M", (double)res->outputs);
-    vfy_values_set(&row->values, "cpu_s", res->cpu_seconds);
-    vfy_values_set(&row->values, "wall_s", res->wall_seconds);
-    vfy_values_set(&row->values, "events", events);
-    vfy_values_set(&row->values, "ns_per_event", events > 0 ? 1e9 * res->cpu_seconds / events : 0.0);
-    vfy_values_set(&row->values, "collisions", (double)res->counts.collisions);
-    vfy_values_set(&row->values, "violations", (double)res->counts.violations);
-    for (size_t k = 0; k < res->nsteady && k < SIM_STEADY_BIN0; k++) {
+    const double v[] = {(double)res->ensembles, (double)res->outputs, res->cpu_seconds,
+                        res->wall_seconds, events,
+                        events > 0 ? 1e9 * res->cpu_seconds / events : 0.0,
+                        (double)res->counts.collisions, (double)res->counts.violations};
+    for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
+        char name[48];
+        snprintf(name, sizeof name, "%s%s", names[k], suffix);
+        vfy_values_set(&row->values, name, v[k]);
+    }
+    for (size_t k = 0; suffix[0] == '\0' && k < res->nsteady && k < SIM_STEADY_BIN0; k++) {
         char name[32], ci[40];
         sim_steady_name(k, name, sizeof name);
         snprintf(ci, sizeof ci, "%s_ci", name);
         vfy_values_set(&row->values, name, res->steady_mean[k]);
         vfy_values_set(&row->values, ci, res->steady_ci[k]);
     }
+}
+
+/* Simulate each variant of the row (or its one solver scene). */
+static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, char *msg,
+                               size_t msglen)
+{
+    const vfy_case_desc *d = run->d;
+    size_t nvariants = 0;
+    while (d->variants && d->variants[nvariants])
+        nvariants++;
+    if (nvariants > 1 && (row->more = calloc(nvariants - 1, sizeof *row->more)) == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    sim_status status = SIM_OK;
+    for (size_t k = 0; k < (nvariants ? nvariants : 1) && status == SIM_OK; k++) {
+        char variant[64] = "", suffix[68] = "", label[160];
+        if (nvariants > 0) {
+            const char *text = d->variants[k], *colon = strchr(text, ':');
+            snprintf(variant, sizeof variant, "%.*s", (int)strcspn(text, ":"), text);
+            if (k > 0)
+                snprintf(suffix, sizeof suffix, "@%s", variant);
+            if ((status = row_scenes(run, s, row, colon ? colon + 1 : NULL, msg, msglen))
+                != SIM_OK)
+                break;
+        }
+        char tmpl[160];
+        snprintf(tmpl, sizeof tmpl, "%s", d->label ? d->label : "{case} n={n}");
+        vfy_expand(label, sizeof label, tmpl, run, row);
+        if (variant[0])
+            snprintf(label + strlen(label), sizeof label - strlen(label), " %s", variant);
+        sim_ensemble_result *res = k == 0 ? &row->res : &row->more[k - 1];
+        status = vfy_simulate(&row->solver, run->o, label, res, msg, msglen);
+        if (status == SIM_OK)
+            row_cost_values(row, res, suffix);
+    }
+    return status;
 }
 
 static void row_checks(vfy_case_run *run, vfy_row *row, vfy_report *r)
@@ -396,7 +469,7 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
                           char *msg, size_t msglen)
 {
     const vfy_case_desc *d = run->d;
-    sim_status status = row_scenes(run, s, row, msg, msglen);
+    sim_status status = row_scenes(run, s, row, NULL, msg, msglen);
     if (status != SIM_OK)
         return status;
     if (row->index == 0 && d->needs) {
@@ -409,8 +482,6 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
     }
     vfy_values_set(&row->values, "index", (double)row->index);
     vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
-    char label[128];
-    vfy_expand(label, sizeof label, d->label ? d->label : "{case} n={n}", run, row);
     if (d->needs || d->figure.refs[0]) {
         sim_error err;
         if ((status = vfy_scene_references(&row->scene, &row->refs, &err)) != SIM_OK) {
@@ -420,12 +491,8 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
     }
     for (const char *const *v = d->values; v && *v; v++)
         vfy_values_set(&row->values, *v, vfy_reference_value(*v, &row->scene));
-    if (!d->no_simulation) {
-        status = vfy_simulate(&row->solver, run->o, label, &row->res, msg, msglen);
-        if (status != SIM_OK)
-            return status;
-        row_cost_values(row);
-    }
+    if (!d->no_simulation && (status = row_simulate(run, s, row, msg, msglen)) != SIM_OK)
+        return status;
     for (const vfy_paper_column *p = d->paper_columns; p && p->name; p++)
         vfy_values_set(&row->values, p->name, row->index < p->count ? p->v[row->index] : NAN);
     for (const vfy_metric *m = d->metrics; m && m->name; m++)
@@ -434,6 +501,11 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
     if (row_cells(run, row) != 0) {
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
+    }
+    if (d->row_progress && run->o->progress) {
+        char line[512];
+        fprintf(run->o->progress, "   %s\n", vfy_expand(line, sizeof line, d->row_progress, run,
+                                                         row));
     }
     return vfy_write_rows_so_far(run->o, run->c->name, &run->table, &row->solver, msg, msglen);
 }
@@ -446,7 +518,7 @@ static int write_figure(vfy_case_run *run, const char *title)
     if (f->kind == VFY_FIGURE_NONE || run->nrows == 0)
         return 0;
     const vfy_row *last = &run->rows[run->nrows - 1];
-    size_t M = last->res.outputs, rows = run->nrows, nref = 0;
+    size_t M = last->res.outputs, rows = run->nrows + (run->extra_mean != NULL), nref = 0;
     double *buf = malloc((2 * rows + 4) * M * sizeof *buf);
     size_t *n = malloc(rows * sizeof *n);
     int rc = -1;
@@ -459,9 +531,14 @@ static int write_figure(vfy_case_run *run, const char *title)
             names[nref] = f->refs[nref];
             refs[nref] = ref + nref * M;
         }
-        for (size_t i = 0; i < rows; i++) {
+        for (size_t i = 0; i < run->nrows; i++) {
             n[i] = run->rows[i].solver.particles.n;
             vfy_row_series(&run->rows[i], f->quantity, mean + i * M, ci + i * M);
+        }
+        if (run->extra_mean != NULL) {   /* n = 0 marks the extrapolation */
+            n[rows - 1] = 0;
+            memcpy(mean + (rows - 1) * M, run->extra_mean, M * sizeof *mean);
+            memcpy(ci + (rows - 1) * M, run->extra_ci, M * sizeof *ci);
         }
         rc = vfy_write_curves(run->o, run->c->name, title, run->comment, last->res.t, M, nref,
                               names, refs, rows, n, mean, ci, f->quantity, f->x_from,
@@ -527,6 +604,7 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     sim_status status = SIM_OK;
     for (size_t i = 0; i < rows && status == SIM_OK; i++) {
         run.rows[i].index = i;
+        run.rows[i].run = &run;
         run.nrows = i + 1;
         status = run_row(&run, s, &run.rows[i], r, msg, msglen);
     }
@@ -535,10 +613,15 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     for (size_t i = 0; i < run.nrows; i++) {
         vfy_refs_free(&run.rows[i].refs);
         sim_ensemble_result_free(&run.rows[i].res);
+        for (size_t k = 0; run.rows[i].more && d->variants[k + 1]; k++)
+            sim_ensemble_result_free(&run.rows[i].more[k]);
+        free(run.rows[i].more);
         vfy_values_free(&run.rows[i].values);
     }
     vfy_values_free(&run.values);
     vfy_table_free(&run.table);
+    free(run.extra_mean);
+    free(run.extra_ci);
     free(run.rows);
     free(headers);
     return status;

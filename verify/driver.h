@@ -61,19 +61,26 @@ typedef struct vfy_case_run vfy_case_run;
 /* One row: its scenes, the references of `scene` and the simulation of
  * `solver`, and its values. */
 typedef struct vfy_row {
+    const vfy_case_run *run;    /* the run it belongs to */
     size_t index;
     char label[96];             /* {label}: an explicit row's label, or "" */
     sim_scene scene;            /* what the references describe */
     sim_scene solver;           /* what was simulated (--solver-set added) */
     vfy_refs refs;              /* the scene's references (empty if the case names none) */
-    sim_ensemble_result res;
+    sim_ensemble_result res;    /* the first variant's result (or the only one) */
+    sim_ensemble_result *more;  /* the other variants' results, in order */
     vfy_values values;
 } vfy_row;
 
 /* The series `name` of a row (an observable of the result, or a reference):
  * mean[m] and ci[m] (ci may be NULL; a reference has ci = 0) for the
- * row's M outputs.  Returns 0, or -1 when the row has no such series. */
+ * row's M outputs; "NAME@VARIANT" is the observable of a variant's result.
+ * Returns 0, or -1 when the row has no such series. */
 int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *ci);
+
+/* The result of the variant named `variant` (NULL or "": the first). */
+const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row *row,
+                                          const char *variant);
 
 /* The row before this one, or NULL for the first. */
 const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
@@ -192,7 +199,13 @@ typedef struct vfy_case_desc {
     vfy_sweep paper_rows, quick_rows;   /* the rows at paper and at quick sizes */
     const char *const *needs;           /* references every row needs (NULL-terminated) */
     const char *needs_why;              /* said when the scene lacks them */
-    const char *label;                  /* progress label (NULL: "{case} n={n}") */
+    const char *label;                  /* progress label (NULL: "{case} n={n}";
+                                           {variant} names the variant) */
+    const char *const *variants;        /* each row simulated once per variant,
+                                           "NAME: SET;SET" (NULL-terminated; NULL: once);
+                                           the variants after the first have their cost
+                                           values as "cpu_s@NAME" ... */
+    const char *row_progress;           /* printed after each row (a template), or NULL */
     vfy_derive_fn derive;               /* derived settings, or NULL */
     const char *const *values;          /* value references (references.h) every row
                                            takes at its scene (NULL-terminated) */
@@ -217,6 +230,9 @@ struct vfy_case_run {
     vfy_values values;     /* the case's values (wall_total, hooks') */
     vfy_table table;
     char comment[800];     /* provenance of the last row (vfy_run_comment) */
+    double *extra_mean, *extra_ci;  /* set by a hook (malloc'd, M each): one more
+                                       curve in the figure, the n = infinity
+                                       extrapolation */
 };
 
 /* Run a described case (the vfy_case_fn of every description). */
@@ -243,7 +259,8 @@ vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run
 vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                            const vfy_check_spec *c);
 /* Series value against series expected from output `from` on: max |z| <=
- * tol (vfy_check_zscore); the max |z| becomes value `out`. */
+ * tol (vfy_check_zscore); value `out` becomes the largest max |z| of the
+ * checks that name it on this row. */
 vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                             const vfy_check_spec *c);
 

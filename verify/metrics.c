@@ -4,6 +4,7 @@
 #include <gsl/gsl_fit.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "observe.h"
 
@@ -13,6 +14,32 @@ double vfy_max_rel_err(const double *mean, const double *exact, size_t count)
     for (size_t m = 0; m < count; m++)
         worst = fmax(worst, fabs(exact[m] - mean[m]) / exact[m]);
     return worst;
+}
+
+double vfy_max_ratio_dev(const double *mean, const double *ref, size_t count)
+{
+    double worst = 0.0;
+    for (size_t m = 0; m < count; m++)
+        worst = fmax(worst, fabs(mean[m] / ref[m] - 1.0));
+    return worst;
+}
+
+double vfy_fictitious_fraction(double collisions, double events)
+{
+    return 1.0 - collisions / events;
+}
+
+void vfy_variance_ratio(const double *var_a, const double *var_b, size_t count, double *mean,
+                        double *min)
+{
+    double sum = 0.0, lo = INFINITY;
+    for (size_t m = 1; m < count; m++) {
+        double ratio = var_a[m] / var_b[m];
+        sum += ratio;
+        lo = fmin(lo, ratio);
+    }
+    *mean = sum / (double)(count - 1);
+    *min = lo;
 }
 
 double vfy_max_rel_ci(const double *ci, const double *exact, size_t count)
@@ -88,6 +115,67 @@ double vfy_metric_max_rel_ci(const vfy_case_run *run, const vfy_row *row, const 
     double v = mean ? vfy_max_rel_ci(ci, exact, row->res.outputs) : NAN;
     free(mean);
     return v;
+}
+
+double vfy_metric_max_ratio_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *ci, *ref, *mean = two_series(row, m->a, m->b, &ci, &ref);
+    double v = mean ? vfy_max_ratio_dev(mean, ref, row->res.outputs) : NAN;
+    free(mean);
+    return v;
+}
+
+/* Series a at the last output: its mean (ci = 0) or its half-width (ci = 1). */
+static double final_value(const vfy_row *row, const char *a, int ci)
+{
+    double *c, *unused, *mean = two_series(row, a, NULL, &c, &unused);
+    size_t M = row->res.outputs;
+    double v = mean && M > 0 ? (ci ? c[M - 1] : mean[M - 1]) : NAN;
+    free(mean);
+    return v;
+}
+
+double vfy_metric_final_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    return final_value(row, m->a, 0);
+}
+
+double vfy_metric_final_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    return final_value(row, m->a, 1);
+}
+
+double vfy_metric_fictitious_fraction(const vfy_case_run *run, const vfy_row *row,
+                                      const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    return vfy_fictitious_fraction(vfy_values_get(&row->values, "collisions"),
+                                   vfy_values_get(&row->values, "events"));
+}
+
+double vfy_metric_variance_ratio(const vfy_case_run *run, const vfy_row *row,
+                                 const vfy_metric *m)
+{
+    const sim_ensemble_result *a = vfy_row_result(run, row, NULL);
+    const sim_ensemble_result *b = vfy_row_result(run, row, m->b);
+    int k = 0;
+    while (k < SIM_OBS_COUNT && strcmp(sim_observable_name((sim_observable)k), m->a) != 0)
+        k++;
+    size_t M = a->outputs;
+    double *va = malloc(2 * M * sizeof *va), mean = NAN, min = NAN;
+    if (b != NULL && k < SIM_OBS_COUNT && va != NULL) {
+        for (size_t t = 0; t < M; t++) {
+            va[t] = a->var[t * SIM_OBS_COUNT + (size_t)k];
+            va[M + t] = b->var[t * SIM_OBS_COUNT + (size_t)k];
+        }
+        vfy_variance_ratio(va, va + M, M, &mean, &min);
+    }
+    free(va);
+    return m->x == 0 ? mean : min;
 }
 
 double vfy_metric_max_velocity(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)

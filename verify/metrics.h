@@ -14,6 +14,18 @@
 /* max_m |exact[m] - mean[m]| / exact[m]: paper A's Emax, paper B's Err. */
 double vfy_max_rel_err(const double *mean, const double *exact, size_t count);
 
+/* max_m |mean[m] / ref[m] - 1|: the largest relative deviation from a
+ * closure. */
+double vfy_max_ratio_dev(const double *mean, const double *ref, size_t count);
+
+/* 1 - collisions / events: the fraction of fictitious (rejected) candidates. */
+double vfy_fictitious_fraction(double collisions, double events);
+
+/* Var_a[m] / Var_b[m] over m = 1 .. count-1 (t > 0): its mean (*mean) and
+ * smallest (*min) -- a variance reduction factor. */
+void vfy_variance_ratio(const double *var_a, const double *var_b, size_t count, double *mean,
+                        double *min);
+
 /* max_m ci[m] / exact[m]: the largest relative confidence half-width. */
 double vfy_max_rel_ci(const double *ci, const double *exact, size_t count);
 
@@ -35,6 +47,18 @@ double vfy_student_t(double p, double dof);
 double vfy_metric_max_rel_err(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 /* vfy_max_rel_ci of series a's half-widths against series b. */
 double vfy_metric_max_rel_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* vfy_max_ratio_dev of series a against series b. */
+double vfy_metric_max_ratio_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* Series a's mean, and its confidence half-width, at the last output time. */
+double vfy_metric_final_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+double vfy_metric_final_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* vfy_fictitious_fraction of the row's counts. */
+double vfy_metric_fictitious_fraction(const vfy_case_run *run, const vfy_row *row,
+                                      const vfy_metric *m);
+/* vfy_variance_ratio of observable a between the row's first variant and
+ * variant b: the mean (x = 0) or the smallest (x = 1). */
+double vfy_metric_variance_ratio(const vfy_case_run *run, const vfy_row *row,
+                                 const vfy_metric *m);
 /* vfy_max_norm3 of the mean velocity (ux, uy, uz). */
 double vfy_metric_max_velocity(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 /* Value a of the previous row over value a of this one (a convergence
