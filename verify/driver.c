@@ -279,7 +279,7 @@ static size_t word_count(const char *list)
     return count;
 }
 
-static size_t sweep_rows(const vfy_sweep *s)
+size_t vfy_sweep_rows(const vfy_sweep *s)
 {
     if (s->rows != NULL) {
         size_t rows = 0;
@@ -295,8 +295,7 @@ static size_t sweep_rows(const vfy_sweep *s)
     return rows;
 }
 
-/* Row i's value of key k (in buf). */
-static void sweep_value(const vfy_sweep *s, size_t i, size_t k, char *buf, size_t len)
+void vfy_sweep_value(const vfy_sweep *s, size_t i, size_t k, char *buf, size_t len)
 {
     size_t at = i;
     if (s->grid) {
@@ -358,7 +357,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     }
     for (size_t k = 0; k < VFY_SWEEP_KEYS && s->keys[k] && nsets < MAX; k++) {
         char value[64];
-        sweep_value(s, row->index, k, value, sizeof value);
+        vfy_sweep_value(s, row->index, k, value, sizeof value);
         snprintf(storage[nsets], sizeof storage[nsets], "%s=%s", s->keys[k], value);
         sets[nsets] = storage[nsets];
         nsets++;
@@ -587,7 +586,7 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     const vfy_case_desc *d = c->desc;
     const vfy_sweep *s = o->size == VFY_PAPER ? &d->paper_rows : &d->quick_rows;
     vfy_case_run run = {.c = c, .d = d, .o = o};
-    size_t rows = sweep_rows(s), ncols = 0;
+    size_t rows = vfy_sweep_rows(s), ncols = 0;
     while (d->columns[ncols].header)
         ncols++;
     const char **headers = malloc((ncols + 1) * sizeof *headers);

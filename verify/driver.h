@@ -168,6 +168,10 @@ typedef struct vfy_sweep {
     const char *const *rows;   /* NULL-terminated */
 } vfy_sweep;
 
+/* The number of rows of a sweep, and row i's value of key k (in buf). */
+size_t vfy_sweep_rows(const vfy_sweep *s);
+void vfy_sweep_value(const vfy_sweep *s, size_t i, size_t k, char *buf, size_t len);
+
 typedef enum vfy_figure_kind {
     VFY_FIGURE_NONE,
     VFY_FIGURE_CURVES,   /* a series against t per row, with its confidence band,

@@ -1,0 +1,283 @@
+/* The case driver (verify/driver.h) and the metrics (verify/metrics.h):
+ * every metric moves with a wrong answer, every rule and guard can fail or
+ * skip, templates expand as documented, sweeps enumerate their rows, and a
+ * small description run end to end passes with the right solver and fails
+ * with a wrong one. */
+#include "test_verify_util.h"
+
+#include <gsl/gsl_cdf.h>
+
+#include "driver.h"
+#include "metrics.h"
+
+static void test_values(void **state)
+{
+    (void)state;
+    vfy_values v = {0};
+    for (int i = 0; i < 100; i++) {   /* grows past its first capacity */
+        char name[16];
+        snprintf(name, sizeof name, "x%d", i);
+        assert_int_equal(vfy_values_set(&v, name, i), 0);
+    }
+    vfy_values_set(&v, "x7", 70.0);   /* replaced, not added */
+    assert_int_equal(v.count, 100);
+    assert_close(vfy_values_get(&v, "x7"), 70.0, 0, 0);
+    assert_close(vfy_values_get(&v, "x99"), 99.0, 0, 0);
+    assert_true(isnan(vfy_values_get(&v, "absent")));
+    assert_false(vfy_values_has(&v, "absent"));
+    vfy_values_free(&v);
+}
+
+/* Paper A's Emax on three points: the right mean gives the largest relative
+ * error; a wrong one moves it. */
+static void test_pure_metrics(void **state)
+{
+    (void)state;
+    const double exact[3] = {1.0, 2.0, 4.0};
+    double mean[3] = {1.01, 1.98, 4.0};
+    assert_close(vfy_max_rel_err(mean, exact, 3), 0.01, 1e-12, 0);
+    mean[2] = 4.2;
+    assert_close(vfy_max_rel_err(mean, exact, 3), 0.05, 1e-12, 0);
+    assert_close(vfy_max_ratio_dev(mean, exact, 3), 0.05, 1e-12, 0);
+    const double ci[3] = {0.01, 0.1, 0.1};
+    assert_close(vfy_max_rel_ci(ci, exact, 3), 0.05, 1e-12, 0);
+    const double ux[2] = {0.0, 3.0}, uy[2] = {1.0, 4.0}, uz[2] = {0.0, 0.0};
+    assert_close(vfy_max_norm3(ux, uy, uz, 2), 5.0, 1e-15, 0);
+    assert_close(vfy_fictitious_fraction(25.0, 100.0), 0.75, 1e-15, 0);
+    /* the first point (t = 0) is not counted: its variances are equal or 0 */
+    const double va[4] = {1.0, 2.0, 3.0, 4.0}, vb[4] = {0.0, 1.0, 1.0, 4.0};
+    double mean_ratio, min_ratio;
+    vfy_variance_ratio(va, vb, 4, &mean_ratio, &min_ratio);
+    assert_close(mean_ratio, 2.0, 1e-15, 0);
+    assert_close(min_ratio, 1.0, 0, 0);
+}
+
+/* T_i = 2 + 3/n_i is extrapolated to 2 with chi^2 = 0; data with an
+ * O(1/sqrt n) error do not fit the O(1/n) model (large chi^2). */
+static void test_extrapolation(void **state)
+{
+    (void)state;
+    const size_t n[4] = {64, 256, 1024, 4096};
+    double T[4], sigma[4] = {1e-3, 1e-3, 1e-3, 1e-3}, T_inf, sd, chi2;
+    for (int i = 0; i < 4; i++)
+        T[i] = 2.0 + 3.0 / (double)n[i];
+    vfy_extrapolate_inverse_n(4, n, T, sigma, &T_inf, &sd, &chi2);
+    assert_close(T_inf, 2.0, 1e-12, 0);
+    assert_true(chi2 < 1e-12);
+    for (int i = 0; i < 4; i++)
+        T[i] = 2.0 + 1.0 / sqrt((double)n[i]);
+    vfy_extrapolate_inverse_n(4, n, T, sigma, &T_inf, &sd, &chi2);
+    assert_true(chi2 > 100.0);
+}
+
+/* The tail probability of the normal bound 3.2 needs 3.916 with 15 degrees
+ * of freedom (16 ensembles); the two-sided p = 0.999 quantile is 4.073
+ * (GSL; tables give 4.073); many degrees of freedom give the normal one. */
+static void test_student_t(void **state)
+{
+    (void)state;
+    double p = gsl_cdf_ugaussian_P(3.2);
+    assert_close(vfy_student_t(p, 15.0), 3.916474, 1e-6, 0);
+    assert_close(vfy_student_t(0.9995, 15.0), 4.072765, 1e-6, 0);
+    assert_close(vfy_student_t(p, 1e6), 3.2, 1e-4, 0);
+}
+
+static void test_sweeps(void **state)
+{
+    (void)state;
+    char v[32];
+    const vfy_sweep zipped = {.keys = {"particles.n", "particles.ensembles"},
+                              .values = {"64 256 1024", "10 20 30 40"}};
+    assert_int_equal(vfy_sweep_rows(&zipped), 3);   /* the shorter list */
+    vfy_sweep_value(&zipped, 2, 1, v, sizeof v);
+    assert_string_equal(v, "30");
+    const vfy_sweep grid = {.keys = {"particles.n", "particles.ensembles"},
+                            .values = {"64 256", "10 20 30"}, .grid = 1};
+    assert_int_equal(vfy_sweep_rows(&grid), 6);
+    vfy_sweep_value(&grid, 4, 0, v, sizeof v);   /* the first key slowest */
+    assert_string_equal(v, "256");
+    vfy_sweep_value(&grid, 4, 1, v, sizeof v);
+    assert_string_equal(v, "20");
+    static const char *const rows[] = {"a: x.y=1", "b: x.y=2", NULL};
+    const vfy_sweep explicit_rows = {.rows = rows};
+    assert_int_equal(vfy_sweep_rows(&explicit_rows), 2);
+    const vfy_sweep none = {.keys = {NULL}};
+    assert_int_equal(vfy_sweep_rows(&none), 0);
+}
+
+/* A run with two rows of values, for templates, rules and guards. */
+static const vfy_case test_case = {"test-case", "test", "a test", 0, NULL, NULL, NULL};
+static const vfy_case_desc test_desc = {.paper = "Table 9"};
+static const vfy_options test_options = {.size = VFY_QUICK};
+
+static void fake_run(vfy_case_run *run, vfy_row rows[2])
+{
+    memset(rows, 0, 2 * sizeof *rows);
+    *run = (vfy_case_run){.c = &test_case, .d = &test_desc, .o = &test_options, .rows = rows,
+                          .nrows = 2};
+    snprintf(run->comment, sizeof run->comment, "provenance");
+    for (size_t i = 0; i < 2; i++) {
+        rows[i].index = i;
+        rows[i].run = run;
+    }
+    vfy_values_set(&rows[0].values, "Emax", 0.08);
+    vfy_values_set(&rows[0].values, "noise", 0.01);
+    vfy_values_set(&rows[1].values, "n", 256);
+    vfy_values_set(&rows[1].values, "Emax", 0.02);
+    vfy_values_set(&rows[1].values, "noise", 0.01);
+    vfy_values_set(&run->values, "wall_total", 12.345);
+}
+
+static void free_run(vfy_case_run *run)
+{
+    for (size_t i = 0; i < run->nrows; i++)
+        vfy_values_free(&run->rows[i].values);
+    vfy_values_free(&run->values);
+}
+
+static void test_templates(void **state)
+{
+    (void)state;
+    vfy_case_run run;
+    vfy_row rows[2];
+    fake_run(&run, rows);
+    char buf[256];
+    vfy_expand(buf, sizeof buf, "{case} n={n} Emax={Emax:%.3e} {paper} ({size}) {comment}",
+               &run, &rows[1]);
+    assert_string_equal(buf, "test-case n=256 Emax=2.000e-02 Table 9 (quick) provenance");
+    /* case values without a row; an absent value prints as nan; {{ is a brace */
+    vfy_expand(buf, sizeof buf, "{wall_total:%.1f} s, {wall_total}, {nothing}, {{x}", &run,
+               NULL);
+    assert_string_equal(buf, "12.3 s, 12.345, nan, {x}");
+    vfy_expand(buf, 8, "{case} and more", &run, NULL);   /* truncated, terminated */
+    assert_string_equal(buf, "test-ca");
+    free_run(&run);
+}
+
+static void test_rules_and_guards(void **state)
+{
+    (void)state;
+    vfy_case_run run;
+    vfy_row rows[2];
+    fake_run(&run, rows);
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    vfy_check_spec rel = {.name = "rel", .rule = vfy_rule_relative, .value = "Emax",
+                          .x = 0.0235, .tol = 0.35};
+    assert_int_equal(rel.rule(&r, "rel", &run, &rows[1], &rel), VFY_PASS);
+    rel.x = 0.04;   /* Emax twice the paper's */
+    assert_int_equal(rel.rule(&r, "rel", &run, &rows[1], &rel), VFY_FAIL);
+    rel.value = "absent";   /* a missing value never passes */
+    assert_int_equal(rel.rule(&r, "rel", &run, &rows[1], &rel), VFY_FAIL);
+    vfy_check_spec range = {.rule = vfy_rule_range, .value = "Emax", .lo = 0.0, .hi = 0.01};
+    assert_int_equal(range.rule(&r, "range", &run, &rows[1], &range), VFY_FAIL);
+    vfy_check_spec absolute = {.rule = vfy_rule_absolute, .value = "Emax",
+                               .expected = "noise", .tol = 0.005};
+    assert_int_equal(absolute.rule(&r, "abs", &run, &rows[1], &absolute), VFY_FAIL);
+    absolute.tol = 0.0101;
+    assert_int_equal(absolute.rule(&r, "abs", &run, &rows[1], &absolute), VFY_PASS);
+    vfy_values_set(&rows[1].values, "violations", 2);
+    vfy_check_spec count = {.rule = vfy_rule_count, .value = "violations"};
+    assert_int_equal(count.rule(&r, "count", &run, &rows[1], &count), VFY_FAIL);
+
+    /* CF = 4 is judged only where Emax is 4 x the noise on both rows */
+    const vfy_guard clean = {vfy_guard_clean_pair, "Emax", "noise", 4.0, "noisy"};
+    assert_int_equal(clean.fn(&run, &rows[0], &clean), VFY_OMIT);
+    assert_int_equal(clean.fn(&run, &rows[1], &clean), VFY_GUARD_SKIP);   /* 0.02 < 0.04 */
+    vfy_values_set(&rows[1].values, "noise", 0.004);
+    assert_int_equal(clean.fn(&run, &rows[1], &clean), VFY_JUDGE);
+    const vfy_guard at_most = {vfy_guard_at_most, "n", NULL, 4096, "large n"};
+    assert_int_equal(at_most.fn(&run, &rows[1], &at_most), VFY_JUDGE);
+    vfy_values_set(&rows[1].values, "n", 16384);
+    assert_int_equal(at_most.fn(&run, &rows[1], &at_most), VFY_GUARD_SKIP);
+    assert_int_equal(r.failed, 5);
+    vfy_report_free(&r);
+    free_run(&run);
+}
+
+/* A small description end to end on paper A Ex 3's scene: two rows, a
+ * z-test against the exact finite-n expectation, a convergence factor, the
+ * table and its rows.  The right solver passes; alpha = 0.45 fails. */
+static const char *const e2e_needs[] = {"T_raw_finite_n", NULL};
+static const vfy_metric e2e_metrics[] = {
+    {"Emax", vfy_metric_max_rel_err, "T_raw", "T_exact", 0},
+    {"CF", vfy_metric_ratio_previous, "Emax", NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+static const vfy_check_spec e2e_checks[] = {
+    {.name = "{case} n={n} z", .rule = vfy_rule_zscore, .value = "T_raw",
+     .expected = "T_raw_finite_n", .from = 1, .tol = 4.5, .out = "z"},
+    {.name = NULL}};
+static const vfy_column e2e_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"CF", NULL, "%.2f"}, {"z", NULL, "%.2f"},
+    {NULL, NULL, NULL}};
+static const vfy_case_desc e2e_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {{"particles.n"}, {"16 64"},
+                   .sets = "particles.ensembles=400;scene.outputs=21"},
+    .needs = e2e_needs, .needs_why = "Maxwell molecules", .metrics = e2e_metrics,
+    .checks = e2e_checks, .columns = e2e_columns, .title = "{case}",
+    .notes = "{rows} rows, {outputs} outputs"};
+static const vfy_case e2e_case = {"driver-e2e", "test", "", 0, vfy_run_described, NULL,
+                                  &e2e_desc};
+
+static size_t run_e2e(const char *const *wrong, size_t nwrong, char *table, size_t len)
+{
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir,
+                     .solver_overrides = wrong, .nsolver_overrides = nwrong};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512];
+    assert_int_equal(vfy_run_described(&e2e_case, &o, &r, msg, sizeof msg), SIM_OK);
+    assert_int_equal(r.count, 2);   /* one z-test a row */
+    size_t failed = r.failed;
+    vfy_report_free(&r);
+    char path[600];
+    snprintf(path, sizeof path, "%s/driver-e2e.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t got = fread(table, 1, len - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    return failed;
+}
+
+static void test_end_to_end(void **state)
+{
+    (void)state;
+    char table[4096];
+    assert_int_equal(run_e2e(NULL, 0, table, sizeof table), 0);
+    /* the header, then n and N of each row; the first row has no CF */
+    assert_non_null(strstr(table, "\nn,N,CF,z\n16,400,,"));
+    assert_non_null(strstr(table, "\n64,400,"));
+    const char *wrong[] = {"collisions.restitution=0.45"};
+    assert_true(run_e2e(wrong, 1, table, sizeof table) >= 1);
+    /* --set fixes a key the sweep also sets: the user's value wins */
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    const char *sets[] = {"particles.ensembles=300"};
+    o.overrides = sets;
+    o.noverrides = 1;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512];
+    assert_int_equal(vfy_run_described(&e2e_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    char path[600];
+    snprintf(path, sizeof path, "%s/driver-e2e.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t got = fread(table, 1, sizeof table - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    assert_non_null(strstr(table, "\n16,300,"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_values),      cmocka_unit_test(test_pure_metrics),
+        cmocka_unit_test(test_extrapolation), cmocka_unit_test(test_student_t),
+        cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
+        cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
+    };
+    return cmocka_run_group_tests(tests, setup, NULL);
+}
