@@ -5,6 +5,9 @@ set(B tests/scenes)
 gdsmc_add_cli_test(cli_help 0 "usage: gdsmc COMMAND" --help)
 gdsmc_add_cli_test(cli_run_help 0 "NAME_ci = 3.2 sqrt" run --help)
 gdsmc_add_cli_test(cli_verify_list 0 "grw-ex3" verify --list)
+gdsmc_add_cli_test(cli_reference_list 0
+                   "name,kind,what\nT_exact,series,.*\nT_le,series,.*\na2_C10,value,\"paper C Eq. \\(10\\)"
+                   reference --list)
 gdsmc_add_cli_test(cli_no_command 2 "usage: gdsmc" "")
 gdsmc_add_cli_test(cli_unknown_command 2 "unknown command 'frobnicate'" frobnicate)
 gdsmc_add_cli_test(cli_unknown_option 2 "gdsmc run: unknown option '--fast'"

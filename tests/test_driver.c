@@ -9,6 +9,9 @@
 
 #include "driver.h"
 #include "metrics.h"
+#include "references.h"
+#include "scene_ini.h"
+#include "scene_refs.h"
 
 static void test_values(void **state)
 {
@@ -271,6 +274,43 @@ static void test_end_to_end(void **state)
     assert_non_null(strstr(table, "\n16,300,"));
 }
 
+/* The registry names every series vfy_scene_references gives a shipped
+ * scene (so the two cannot drift apart), and value references evaluate at
+ * a scene's restitution. */
+static void test_reference_registry(void **state)
+{
+    (void)state;
+    static const char *const stems[] = {"grw-ex3", "grw-ex5", "brs-ex1", "brs-ex4"};
+    size_t seen = 0;
+    for (size_t i = 0; i < sizeof stems / sizeof *stems; i++) {
+        char path[700], msg[512];
+        snprintf(path, sizeof path, "%s/%s.ini", scene_dir, stems[i]);
+        sim_scene scene;
+        assert_int_equal(vfy_scene_load(path, NULL, 0, &scene, msg, sizeof msg), SIM_OK);
+        vfy_refs refs;
+        sim_error err;
+        assert_int_equal(vfy_scene_references(&scene, &refs, &err), SIM_OK);
+        for (size_t j = 0; j < refs.count; j++, seen++) {
+            const vfy_reference *ref = vfy_reference_find(refs.names[j]);
+            if (ref == NULL)
+                print_error("%s: %s is not in the registry\n", stems[i], refs.names[j]);
+            assert_non_null(ref);
+            assert_int_equal(ref->kind, VFY_REF_SERIES);
+        }
+        vfy_refs_free(&refs);
+    }
+    assert_true(seen >= 10);
+    assert_null(vfy_reference_find("T_exac"));   /* whole words only */
+    assert_null(vfy_reference_find("exact"));
+    sim_scene s;
+    sim_scene_defaults(&s);
+    s.collisions.restitution = 0.5;
+    /* paper C Eq. (10) at alpha = 0.5: 16 (0.5)(0.5) / (73 + 168 - 1.5 (59) + 30 (0.5)(0.25)) */
+    assert_close(vfy_reference_value("a2_C10", &s), 4.0 / 156.25, 1e-12, 0);
+    assert_true(isnan(vfy_reference_value("T_exact", &s)));   /* a series, not a value */
+    assert_true(isnan(vfy_reference_value("no_such", &s)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -278,6 +318,7 @@ int main(void)
         cmocka_unit_test(test_extrapolation), cmocka_unit_test(test_student_t),
         cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
+        cmocka_unit_test(test_reference_registry),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -15,6 +15,7 @@
 #include "bench.h"
 #include "ensemble.h"
 #include "scene_ini.h"
+#include "references.h"
 #include "scene_refs.h"
 #include "sonine.h"
 #include "table.h"
@@ -59,6 +60,7 @@ static const char usage_run[] =
 
 static const char usage_reference[] =
     "usage: gdsmc reference SCENE [--set SECTION.KEY=VALUE]... [--out FILE.csv]\n"
+    "       gdsmc reference --list\n"
     "\n"
     "Write the references that apply to the scene on its output times, one column\n"
     "per reference named QUANTITY_MODEL: for heated Maxwell molecules T_exact\n"
@@ -68,7 +70,11 @@ static const char usage_reference[] =
     "T_exact ux_exact uy_exact uz_exact (B.14-B.17) and T_finite_n (the exact\n"
     "expectation of the n-particle T); for hard spheres the local-equilibrium and\n"
     "Grad closures T_le ux_le uy_le uz_le, T_grad ux_grad uy_grad uz_grad (B.21,\n"
-    "B.22, CVODE). Exit 2 when no reference applies.\n";
+    "B.22, CVODE). Exit 2 when no reference applies.\n"
+    "\n"
+    "  --list   every reference the verification cases name, as CSV name,kind,what:\n"
+    "           the series above and the values at a scene's restitution (paper C's\n"
+    "           Sonine estimates)\n";
 
 static const char usage_verify[] =
     "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME] [--out DIR]\n"
@@ -221,7 +227,8 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
         } else if (strcmp(s, "--quiet") == 0) {
             a->quiet = 1;
             continue;
-        } else if (strcmp(s, "--list") == 0 && strcmp(cmd, "verify") == 0) {
+        } else if (strcmp(s, "--list") == 0
+                   && (strcmp(cmd, "verify") == 0 || strcmp(cmd, "reference") == 0)) {
             a->list = 1;
             continue;
         } else if (strcmp(s, "--resume") == 0 && strcmp(cmd, "verify") == 0) {
@@ -255,7 +262,7 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
             return bad_usage(cmd, "option '%s' needs a value", s);
         *value = argv[++i];
     }
-    if (wants_scene && a->scene == NULL)
+    if (wants_scene && a->scene == NULL && !a->list)
         return bad_usage(cmd, "%s", "missing SCENE file");
     return -1;
 }
@@ -380,6 +387,18 @@ static int cmd_reference(int argc, char **argv)
     int rc = parse_args("reference", usage_reference, 1, argc, argv, &a);
     if (rc >= 0)
         return rc;
+    if (a.list) {
+        printf("name,kind,what\n");
+        for (size_t i = 0; i < vfy_reference_count(); i++) {
+            const vfy_reference *ref = vfy_reference_at(i);
+            char names[256];
+            snprintf(names, sizeof names, "%s", ref->name);
+            for (char *w = strtok(names, " "); w; w = strtok(NULL, " "))
+                printf("%s,%s,\"%s\"\n", w, ref->kind == VFY_REF_SERIES ? "series" : "value",
+                       ref->what);
+        }
+        return EXIT_OK;
+    }
     sim_scene scene;
     if ((rc = load_scene("reference", &a, &scene)) != EXIT_OK)
         return rc;

@@ -185,11 +185,18 @@ static double expected_of(const vfy_case_run *run, const vfy_row *row, const vfy
     return c->expected ? lookup(run, row, c->expected) : c->x;
 }
 
+/* check(value, expected, tol): the relative and absolute rules. */
+static vfy_verdict compare(vfy_report *r, const char *name, const vfy_case_run *run,
+                           const vfy_row *row, const vfy_check_spec *c,
+                           vfy_verdict (*check)(vfy_report *, const char *, double, double, double))
+{
+    return check(r, name, lookup(run, row, c->value), expected_of(run, row, c), c->tol);
+}
+
 vfy_verdict vfy_rule_relative(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                               const vfy_check_spec *c)
 {
-    return vfy_check_relative(r, name, lookup(run, row, c->value), expected_of(run, row, c),
-                              c->tol);
+    return compare(r, name, run, row, c, vfy_check_relative);
 }
 
 vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
@@ -201,8 +208,7 @@ vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, v
 vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                               const vfy_check_spec *c)
 {
-    return vfy_check_absolute(r, name, lookup(run, row, c->value), expected_of(run, row, c),
-                              c->tol);
+    return compare(r, name, run, row, c, vfy_check_absolute);
 }
 
 vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,

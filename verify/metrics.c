@@ -99,31 +99,33 @@ static double *two_series(const vfy_row *row, const char *a, const char *b, doub
     return buf;
 }
 
+/* fn of series a's means (or, with ci, its half-widths) against series b's
+ * means. */
+static double series_pair(const vfy_row *row, const vfy_metric *m,
+                          double (*fn)(const double *, const double *, size_t), int ci)
+{
+    double *a_ci, *b, *a = two_series(row, m->a, m->b, &a_ci, &b);
+    double v = a ? fn(ci ? a_ci : a, b, row->res.outputs) : NAN;
+    free(a);
+    return v;
+}
+
 double vfy_metric_max_rel_err(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)run;
-    double *ci, *exact, *mean = two_series(row, m->a, m->b, &ci, &exact);
-    double v = mean ? vfy_max_rel_err(mean, exact, row->res.outputs) : NAN;
-    free(mean);
-    return v;
+    return series_pair(row, m, vfy_max_rel_err, 0);
 }
 
 double vfy_metric_max_rel_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)run;
-    double *ci, *exact, *mean = two_series(row, m->a, m->b, &ci, &exact);
-    double v = mean ? vfy_max_rel_ci(ci, exact, row->res.outputs) : NAN;
-    free(mean);
-    return v;
+    return series_pair(row, m, vfy_max_rel_ci, 1);
 }
 
 double vfy_metric_max_ratio_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)run;
-    double *ci, *ref, *mean = two_series(row, m->a, m->b, &ci, &ref);
-    double v = mean ? vfy_max_ratio_dev(mean, ref, row->res.outputs) : NAN;
-    free(mean);
-    return v;
+    return series_pair(row, m, vfy_max_ratio_dev, 0);
 }
 
 /* Series a at the last output: its mean (ci = 0) or its half-width (ci = 1). */

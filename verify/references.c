@@ -26,27 +26,19 @@ SONINE(tail_A_gaussian)
 #undef SONINE
 
 static const vfy_reference registry[] = {
-    /* series: scene_refs.h decides which apply */
-    {"T_exact", VFY_REF_SERIES, "paper A (A.13) or paper B (B.14): exact T(t), Maxwell molecules",
+    /* series, in groups (one name each): scene_refs.h decides which apply */
+    {"T_exact ux_exact uy_exact uz_exact", VFY_REF_SERIES,
+     "exact T(t) and mean velocity, Maxwell molecules: paper A (A.13), paper B (B.14-B.17)",
      NULL},
-    {"T_finite_n", VFY_REF_SERIES, "exact E of the centred n-particle T (reference/heated.h, "
+    {"T_finite_n T_raw_finite_n", VFY_REF_SERIES,
+     "exact expectations of the n-particle estimators T and T_raw (reference/heated.h, "
      "reference/background.h)", NULL},
-    {"T_raw_finite_n", VFY_REF_SERIES, "exact E of paper A's uncentred T_raw (reference/heated.h)",
+    {"T_maxwell_closure T_sonine_closure", VFY_REF_SERIES,
+     "paper A Ex 5: Maxwellian and first-Sonine (a2 from C.10) closures (CVODE)", NULL},
+    {"T_le ux_le uy_le uz_le", VFY_REF_SERIES, "paper B (B.21): local-equilibrium closure (CVODE)",
      NULL},
-    {"ux_exact", VFY_REF_SERIES, "paper B (B.15-B.17): exact mean velocity", NULL},
-    {"uy_exact", VFY_REF_SERIES, "paper B (B.15-B.17): exact mean velocity", NULL},
-    {"uz_exact", VFY_REF_SERIES, "paper B (B.15-B.17): exact mean velocity", NULL},
-    {"T_maxwell_closure", VFY_REF_SERIES, "paper A Ex 5: Maxwellian closure (CVODE)", NULL},
-    {"T_sonine_closure", VFY_REF_SERIES, "paper A Ex 5: first-Sonine closure, a2 from (C.10)",
+    {"T_grad ux_grad uy_grad uz_grad", VFY_REF_SERIES, "paper B (B.22): Grad closure (CVODE)",
      NULL},
-    {"T_le", VFY_REF_SERIES, "paper B (B.21): local-equilibrium closure (CVODE)", NULL},
-    {"ux_le", VFY_REF_SERIES, "paper B (B.21)", NULL},
-    {"uy_le", VFY_REF_SERIES, "paper B (B.21)", NULL},
-    {"uz_le", VFY_REF_SERIES, "paper B (B.21)", NULL},
-    {"T_grad", VFY_REF_SERIES, "paper B (B.22): Grad closure (CVODE)", NULL},
-    {"ux_grad", VFY_REF_SERIES, "paper B (B.22)", NULL},
-    {"uy_grad", VFY_REF_SERIES, "paper B (B.22)", NULL},
-    {"uz_grad", VFY_REF_SERIES, "paper B (B.22)", NULL},
     /* values at the scene's alpha: paper C, d = 3 */
     {"a2_C10", VFY_REF_VALUE, "paper C Eq. (10): white-noise a2", a2_white_noise_at},
     {"a2_C32", VFY_REF_VALUE, "paper C Eq. (32): white-noise a2, ratio route",
@@ -74,10 +66,20 @@ const vfy_reference *vfy_reference_at(size_t i)
     return i < vfy_reference_count() ? &registry[i] : NULL;
 }
 
+/* Whether `name` is one of the space-separated words of names. */
+static int names_word(const char *names, const char *name)
+{
+    size_t len = strlen(name);
+    for (const char *p = strstr(names, name); p; p = strstr(p + 1, name))
+        if ((p == names || p[-1] == ' ') && (p[len] == ' ' || p[len] == '\0'))
+            return 1;
+    return 0;
+}
+
 const vfy_reference *vfy_reference_find(const char *name)
 {
     for (size_t i = 0; i < vfy_reference_count(); i++)
-        if (strcmp(registry[i].name, name) == 0)
+        if (names_word(registry[i].name, name))
             return &registry[i];
     return NULL;
 }

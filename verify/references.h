@@ -18,7 +18,7 @@
 typedef enum vfy_reference_kind { VFY_REF_SERIES, VFY_REF_VALUE } vfy_reference_kind;
 
 typedef struct vfy_reference {
-    const char *name;
+    const char *name;                      /* series come in groups: "T_le ux_le ..." */
     vfy_reference_kind kind;
     const char *what;                      /* the formula and its source, one line */
     double (*value)(const sim_scene *s);   /* VFY_REF_VALUE: at the scene (NAN: n/a) */
@@ -26,6 +26,7 @@ typedef struct vfy_reference {
 
 size_t vfy_reference_count(void);
 const vfy_reference *vfy_reference_at(size_t i);
+/* The entry that holds `name` (a group of series holds several). */
 const vfy_reference *vfy_reference_find(const char *name);
 
 /* Value reference `name` at scene s; NAN when there is no such value
