@@ -25,48 +25,114 @@
 
 #include "case_report.h"
 #include "cases.h"
+#include "driver.h"
+#include "metrics.h"
+#include "tolerances.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
 #include "table.h"
 
-#define ZMAX 4.5             /* max |z| over the output times for exact expectations */
-#define PAPER_ERR_RTOL 0.35  /* Err within ±35% of the paper's */
-#define PAPER_CONF_RTOL 0.20 /* Conf within ±20% */
-#define PAPER_MAX_N 256      /* rows compared with the paper (its larger rows are noise-led) */
-#define CONF_CF_LO 3.2       /* Conf = O(1/sqrt(n N)): CF 4 when n and N grow by 4 */
-#define CONF_CF_HI 5.0
-#define ERR_CF_LO 2.5        /* Err: CF 4 for the O(1/n) bias, blurred by noise of the */
-#define ERR_CF_HI 6.4        /* same order (c/T is about Err/2 in these tables) */
 #define STEADY_ATOL 0.004    /* kinetic T* within 0.004 of the paper's */
 #define CLOSURE_ATOL 0.0005  /* closures' T* to the paper's three digits */
 #define BATCHES 32           /* independent batches per row of the steady cases */
 
-struct brs_paper_table {
-    const char *label;                           /* "Table 1", or NULL: no table */
-    double err[5], err_cf[5], conf[5], conf_cf[5]; /* rows n = 4, 16, 64, 256, 1024 */
-    const char *conf_note;   /* why Conf is not judged against this table, or NULL */
-};
-
-/* SPEC §4 Ex 1 (paper B Table 1) and Ex 2 (Table 2). */
-const struct brs_paper_table vfy_brs_table1 = {
-    "Table 1",
-    {3.49e-1, 8.80e-2, 1.99e-2, 5.51e-3, 1.08e-3},
-    {NAN, 3.97, 4.42, 3.61, 5.10},
-    {1.15e+0, 2.50e-1, 6.41e-2, 1.62e-2, 3.99e-3},
-    {NAN, 4.60, 3.90, 3.96, 4.06},
-    "paper B's Table 1 Conf is 5.0-5.3 times max c/T at every row, while its Err agrees "
-    "and the same Conf reproduces Table 2 within 4%; no reading of the band (c or 2c, "
-    "absolute or relative, T or T_raw) gives its numbers: reported, not judged",
-};
-const struct brs_paper_table vfy_brs_table2 = {
-    "Table 2",
-    {3.14e-1, 9.20e-2, 2.34e-2, 5.71e-3, 1.48e-3},
-    {NAN, 3.41, 3.93, 4.10, 3.86},
-    {1.99e-1, 4.51e-2, 1.13e-2, 2.73e-3, 6.80e-4},
-    {NAN, 3.68, 3.99, 4.14, 4.01},
-    NULL,
-};
-const struct brs_paper_table vfy_brs_no_table = {NULL, {0}, {0}, {0}, {0}, NULL};
+/* brs-ex1, brs-ex2, brs-ex3 (SPEC §4 Ex 1-3): Maxwell kernels, rows n = 4,
+ * 16, 64, ... with N = 16 n. */
+static const char *const conv_needs[] = {"T_exact", "T_finite_n", "ux_exact", "uy_exact",
+                                         "uz_exact", NULL};
+static const vfy_metric conv_metrics[] = {
+    {"Err", vfy_metric_max_rel_err, "T", "T_exact", 0},
+    {"Conf", vfy_metric_max_rel_ci, "T", "T_exact", 0},
+    {"e_sys", vfy_metric_max_rel_err, "T_finite_n", "T_exact", 0},
+    {"CF", vfy_metric_ratio_previous, "Err", NULL, 0},
+    {"CF_Conf", vfy_metric_ratio_previous, "Conf", NULL, 0},
+    {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+/* The z-tests, the CFs and the violations; the paper's checks come first
+ * in the tables' own lists. */
+#define BRS_Z(Q, REF, OUT, NAME)                                                         \
+    {.name = "{case} n={n} " NAME, .rule = vfy_rule_zscore, .value = Q, .expected = REF,  \
+     .from = 1, .tol = VFY_TOL_ZMAX, .out = OUT}
+#define BRS_EXACT_CHECKS                                                                 \
+    BRS_Z("T", "T_finite_n", "z_T", "T vs exact finite-n expectation"),                  \
+        BRS_Z("ux", "ux_exact", "z_u", "ux vs exact u(t)"),                               \
+        BRS_Z("uy", "uy_exact", "z_u", "uy vs exact u(t)"),                               \
+        BRS_Z("uz", "uz_exact", "z_u", "uz vs exact u(t)")
+#define BRS_CF_CHECKS                                                                    \
+    {.name = "{case} n={n} CF of Err", .rule = vfy_rule_range, .value = "CF",            \
+     .lo = VFY_TOL_BRS_ERR_CF_LO, .hi = VFY_TOL_BRS_ERR_CF_HI,                           \
+     .guard = {vfy_guard_after_first, NULL, NULL, 0, NULL}},                              \
+        {.name = "{case} n={n} CF of Conf", .rule = vfy_rule_range, .value = "CF_Conf",  \
+         .lo = VFY_TOL_BRS_CONF_CF_LO, .hi = VFY_TOL_BRS_CONF_CF_HI,                     \
+         .guard = {vfy_guard_after_first, NULL, NULL, 0, NULL}},                          \
+        {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count,             \
+         .value = "violations"}
+#define BRS_PAPER_ERR                                                                    \
+    {.name = "{case} n={n} Err vs paper {paper}", .rule = vfy_rule_relative, .value = "Err", \
+     .expected = "Err_paper", .tol = VFY_TOL_BRS_PAPER_ERR_RTOL,                         \
+     .guard = {vfy_guard_only_at_most, "n", NULL, VFY_TOL_BRS_PAPER_MAX_N, NULL}}
+static const vfy_check_spec table1_checks[] = {
+    BRS_EXACT_CHECKS, BRS_PAPER_ERR,
+    {.name = "{case} n={n} Conf vs paper {paper}",
+     .guard = {vfy_guard_reported_at_most, "n", NULL, VFY_TOL_BRS_PAPER_MAX_N,
+               "paper B's Table 1 Conf is 5.0-5.3 times max c/T at every row, while its Err "
+               "agrees and the same Conf reproduces Table 2 within 4%; no reading of the band "
+               "(c or 2c, absolute or relative, T or T_raw) gives its numbers: reported, not "
+               "judged"}},
+    BRS_CF_CHECKS, {.name = NULL}};
+static const vfy_check_spec table2_checks[] = {
+    BRS_EXACT_CHECKS, BRS_PAPER_ERR,
+    {.name = "{case} n={n} Conf vs paper {paper}", .rule = vfy_rule_relative, .value = "Conf",
+     .expected = "Conf_paper", .tol = VFY_TOL_BRS_PAPER_CONF_RTOL,
+     .guard = {vfy_guard_only_at_most, "n", NULL, VFY_TOL_BRS_PAPER_MAX_N, NULL}},
+    BRS_CF_CHECKS, {.name = NULL}};
+static const vfy_check_spec no_table_checks[] = {BRS_EXACT_CHECKS, BRS_CF_CHECKS,
+                                                 {.name = NULL}};
+static const vfy_column conv_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"Err", NULL, "%.3e"},
+    {"Err_paper", NULL, "%.2e"}, {"CF", NULL, "%.2f"}, {"CF_paper", NULL, "%.2f"},
+    {"Conf", NULL, "%.3e"}, {"Conf_paper", NULL, "%.2e"}, {"CF_Conf", NULL, "%.2f"},
+    {"CF_Conf_paper", NULL, "%.2f"}, {"e_sys", NULL, "%.3e"}, {"z_T", NULL, "%.2f"},
+    {"z_u", NULL, "%.2f"}, {"fictitious_fraction", NULL, "%.3f"}, {"violations", NULL, "%.0f"},
+    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char conv_notes[] =
+    "{comment}; N = 16 n per row.\n\nErr = max over the {outputs} output times of |T(t) - "
+    "eta1(t)|/T(t), with the centred temperature and T(t) from (B.15). Conf = max over the "
+    "output times of c(t)/T(t), c = 3.2 sqrt(Var/N) the confidence half-width (the band is 2c "
+    "thick). CF = previous row / this row. e_sys = max |E T_n - T|/T, the exact systematic "
+    "error of the n-particle estimator (reference/background.h); z_T = max |eta1 - E T_n|/sigma "
+    "and z_u = the same for u against the exact u(t) (= E u_n for every n), over all output "
+    "times. events = candidate events (binary and background); fictitious_fraction = 1 - "
+    "accepted/candidates (0 for Maxwell kernels, Algorithm 1); cpu_s is process CPU time over "
+    "all threads. Total wall time {wall_total:%.1f} s.";
+#define BRS_CONVERGENCE(LABEL, PAPER, CHECKS)                                            \
+    {.paper = LABEL,                                                                      \
+     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
+                    .values = {"4 16 64 256 1024", "64 256 1024 4096 16384"}},           \
+     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
+                    .values = {"4 16 64", "64 256 1024"}},                               \
+     .needs = conv_needs, .needs_why = VFY_NEEDS_BRS_MAXWELL, .paper_columns = PAPER,    \
+     .metrics = conv_metrics, .checks = CHECKS, .columns = conv_columns,                 \
+     .figures = {{VFY_FIGURE_CURVES, "-T", "T", {"T_exact"}, 0.0, 1, 0},                   \
+                 {VFY_FIGURE_CURVES, "-uy", "uy", {"uy_exact"}, 0.0, 1, 0}},               \
+     .title = "{case}: paper B {paper} ({size} sizes)", .notes = conv_notes}
+/* SPEC §4 Ex 1 (paper B Table 1) and Ex 2 (Table 2): rows n = 4 ... 1024. */
+static const vfy_paper_column brs_table1[] = {
+    VFY_PAPER_COLUMN("Err_paper", 3.49e-1, 8.80e-2, 1.99e-2, 5.51e-3, 1.08e-3),
+    VFY_PAPER_COLUMN("CF_paper", NAN, 3.97, 4.42, 3.61, 5.10),
+    VFY_PAPER_COLUMN("Conf_paper", 1.15e+0, 2.50e-1, 6.41e-2, 1.62e-2, 3.99e-3),
+    VFY_PAPER_COLUMN("CF_Conf_paper", NAN, 4.60, 3.90, 3.96, 4.06),
+    {NULL, 0, NULL}};
+static const vfy_paper_column brs_table2[] = {
+    VFY_PAPER_COLUMN("Err_paper", 3.14e-1, 9.20e-2, 2.34e-2, 5.71e-3, 1.48e-3),
+    VFY_PAPER_COLUMN("CF_paper", NAN, 3.41, 3.93, 4.10, 3.86),
+    VFY_PAPER_COLUMN("Conf_paper", 1.99e-1, 4.51e-2, 1.13e-2, 2.73e-3, 6.80e-4),
+    VFY_PAPER_COLUMN("CF_Conf_paper", NAN, 3.68, 3.99, 4.14, 4.01),
+    {NULL, 0, NULL}};
+const vfy_case_desc vfy_brs_ex1 = BRS_CONVERGENCE("Table 1", brs_table1, table1_checks);
+const vfy_case_desc vfy_brs_ex2 = BRS_CONVERGENCE("Table 2", brs_table2, table2_checks);
+const vfy_case_desc vfy_brs_ex3 =
+    BRS_CONVERGENCE("Maxwell kernels, relaxation", NULL, no_table_checks);
 
 struct brs_paper_steady {
     double kinetic, le, grad;   /* steady temperatures printed by the paper */
@@ -91,170 +157,6 @@ static int alloc_all(double **bufs, const size_t *sizes, size_t count)
         ok &= bufs[i] != NULL;
     }
     return ok;
-}
-
-sim_status vfy_case_brs_convergence(const vfy_case *c, const vfy_options *o, vfy_report *r,
-                                    char *msg, size_t msglen)
-{
-    const struct brs_paper_table *paper = c->data;
-    sim_scene scene, solver;
-    sim_status status = vfy_load_case_scene(c, o, &scene, &solver, msg, msglen);
-    if (status != SIM_OK)
-        return status;
-    const size_t rows = o->size == VFY_PAPER ? 5 : 3, M = scene.outputs;
-    size_t n[VFY_ROWS_MAX];
-    for (size_t i = 0; i < rows; i++)
-        n[i] = (size_t)4 << (2 * i);
-
-    static const char *const cols[] = {
-        "n", "N", "Err", "Err_paper", "CF", "CF_paper", "Conf", "Conf_paper", "CF_Conf",
-        "CF_Conf_paper", "e_sys", "z_T", "z_u", "fictitious_fraction", "violations",
-        VFY_COST_COLUMNS};
-    vfy_table table;
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    enum { T_GRID, T_EXACT, U_EXACT, T_FINITE, MEAN, CI, BAND_T, BAND_T_CI, BAND_U, BAND_U_CI,
-           NBUF };
-    double *buf[NBUF] = {0};
-    const size_t sizes[NBUF] = {M, M, 3 * M, M, M, M, rows * M, rows * M, rows * M, rows * M};
-    if (!alloc_all(buf, sizes, NBUF)) {
-        free_all(buf, NBUF);
-        vfy_table_free(&table);
-        snprintf(msg, msglen, "out of memory");
-        return SIM_ENOMEM;
-    }
-    double *t = buf[T_GRID], *exact = buf[T_EXACT], *finite = buf[T_FINITE];
-    double *mean = buf[MEAN], *ci = buf[CI];
-
-    double err_prev = NAN, conf_prev = NAN, wall_total = 0.0;
-    for (size_t i = 0; i < rows && status == SIM_OK; i++) {
-        scene.particles.n = solver.particles.n = n[i];
-        scene.particles.ensembles = solver.particles.ensembles = 16 * n[i];
-        vfy_refs refs;
-        sim_ensemble_result res;
-        if ((status = vfy_run_row(c, o, &scene, &solver, &refs, &res, msg, msglen)) != SIM_OK)
-            break;
-        char name[128];
-        memcpy(t, res.t, M * sizeof *t);
-        vfy_refs_column(&refs, "T_exact", exact);
-        vfy_refs_column(&refs, "T_finite_n", finite);
-
-        /* Err, Conf and the exact systematic error of the centred T. */
-        vfy_result_column(&res, SIM_OBS_T, mean, ci);
-        double err_row = 0.0, conf = 0.0, e_sys = 0.0;
-        for (size_t m = 0; m < M; m++) {
-            err_row = fmax(err_row, fabs(exact[m] - mean[m]) / exact[m]);
-            conf = fmax(conf, ci[m] / exact[m]);
-            e_sys = fmax(e_sys, fabs(exact[m] - finite[m]) / exact[m]);
-        }
-        memcpy(buf[BAND_T] + i * M, mean, M * sizeof *mean);
-        memcpy(buf[BAND_T_CI] + i * M, ci, M * sizeof *ci);
-        double z_T, z_u = 0.0;
-        vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu T vs exact finite-n "
-                                     "expectation", c->name, n[i]),
-                         mean + 1, ci + 1, finite + 1, M - 1, ZMAX, &z_T);
-        static const char *const u_names[] = {"ux", "uy", "uz"};
-        static const int u_obs[] = {SIM_OBS_UX, SIM_OBS_UY, SIM_OBS_UZ};
-        for (int k = 0; k < 3; k++) {   /* E u_n = u(t) exactly */
-            char ref_name[16];
-            double z;
-            snprintf(ref_name, sizeof ref_name, "%s_exact", u_names[k]);
-            vfy_refs_column(&refs, ref_name, buf[U_EXACT] + k * M);
-            vfy_result_column(&res, u_obs[k], mean, ci);
-            vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu %s vs exact u(t)", c->name,
-                                         n[i], u_names[k]),
-                             mean + 1, ci + 1, buf[U_EXACT] + k * M + 1, M - 1, ZMAX, &z);
-            z_u = fmax(z_u, z);
-            if (k == 1) {
-                memcpy(buf[BAND_U] + i * M, mean, M * sizeof *mean);
-                memcpy(buf[BAND_U_CI] + i * M, ci, M * sizeof *ci);
-            }
-        }
-
-        /* Against the paper, and the convergence factors. */
-        double cf = err_prev / err_row, cf_conf = conf_prev / conf;
-        if (paper->label && n[i] <= PAPER_MAX_N) {
-            vfy_check_relative(r, vfy_name(name, sizeof name, "%s n=%zu Err vs paper %s",
-                                            c->name, n[i], paper->label),
-                               err_row, paper->err[i], PAPER_ERR_RTOL);
-            vfy_name(name, sizeof name, "%s n=%zu Conf vs paper %s", c->name, n[i],
-                     paper->label);
-            if (paper->conf_note)
-                vfy_skip(r, name, paper->conf_note);
-            else
-                vfy_check_relative(r, name, conf, paper->conf[i], PAPER_CONF_RTOL);
-        }
-        if (i > 0) {
-            vfy_check_range(r, vfy_name(name, sizeof name, "%s n=%zu CF of Err", c->name, n[i]),
-                            cf, ERR_CF_LO, ERR_CF_HI);
-            vfy_check_range(r, vfy_name(name, sizeof name, "%s n=%zu CF of Conf", c->name, n[i]),
-                            cf_conf, CONF_CF_LO, CONF_CF_HI);
-        }
-
-        vfy_check_count(r, vfy_name(name, sizeof name, "%s n=%zu majorant violations", c->name,
-                                    n[i]),
-                        res.counts.violations, 0);
-        double events = (double)res.counts.candidates;
-        double accepted = (double)(res.counts.collisions + res.counts.background);
-        vfy_table_cell(&table, "%zu", n[i]);
-        vfy_table_cell(&table, "%zu", res.ensembles);
-        vfy_table_cell(&table, "%.3e", err_row);
-        vfy_table_number(&table, paper->label != NULL, "%.2e", paper->err[i]);
-        vfy_table_number(&table, i, "%.2f", cf);
-        vfy_table_number(&table, paper->label && i, "%.2f", paper->err_cf[i]);
-        vfy_table_cell(&table, "%.3e", conf);
-        vfy_table_number(&table, paper->label != NULL, "%.2e", paper->conf[i]);
-        vfy_table_number(&table, i, "%.2f", cf_conf);
-        vfy_table_number(&table, paper->label && i, "%.2f", paper->conf_cf[i]);
-        vfy_table_cell(&table, "%.3e", e_sys);
-        vfy_table_cell(&table, "%.2f", z_T);
-        vfy_table_cell(&table, "%.2f", z_u);
-        vfy_table_cell(&table, "%.3f", events > 0 ? 1.0 - accepted / events : 0.0);
-        vfy_table_cell(&table, "%llu", (unsigned long long)res.counts.violations);
-        vfy_cost_cells(&table, res.cpu_seconds, res.wall_seconds, events);
-        wall_total += res.wall_seconds;
-        err_prev = err_row;
-        conf_prev = conf;
-        vfy_refs_free(&refs);
-        sim_ensemble_result_free(&res);
-        status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
-    }
-
-    if (status == SIM_OK) {
-        char comment[600], notes[2400], title[160], name[160];
-        vfy_run_comment(&solver, comment, sizeof comment);
-        snprintf(title, sizeof title, "%s: paper B %s (%s sizes)", c->name,
-                 paper->label ? paper->label : "Maxwell kernels, relaxation",
-                 o->size == VFY_PAPER ? "paper" : "quick");
-        snprintf(notes, sizeof notes,
-                 "%s; N = 16 n per row.\n\nErr = max over the %zu output times of |T(t) - "
-                 "eta1(t)|/T(t), with the centred temperature and T(t) from (B.15). Conf = max "
-                 "over the output times of c(t)/T(t), c = 3.2 sqrt(Var/N) the confidence "
-                 "half-width (the band is 2c thick). CF = previous row / this row. e_sys = max "
-                 "|E T_n - T|/T, the exact systematic error of the n-particle estimator "
-                 "(reference/background.h); z_T = max |eta1 - E T_n|/sigma and z_u = the same "
-                 "for u against the exact u(t) (= E u_n for every n), over all output times. "
-                 "events = candidate events (binary and background); fictitious_fraction = "
-                 "1 - accepted/candidates (0 for Maxwell kernels, Algorithm 1); cpu_s is "
-                 "process CPU time over all threads. Total wall time %.1f s.",
-                 comment, M, wall_total);
-        status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg, msglen);
-        if (status == SIM_OK) {
-            const char *T_names[] = {"T_exact"}, *u_names[] = {"uy_exact"};
-            const double *T_refs[] = {exact}, *u_refs[] = {buf[U_EXACT] + M};
-            snprintf(name, sizeof name, "%s-T", c->name);
-            int rc = vfy_write_curves(o, name, title, comment, t, M, 1, T_names, T_refs, rows, n,
-                                      buf[BAND_T], buf[BAND_T_CI], "T", 0.0, 1);
-            snprintf(name, sizeof name, "%s-uy", c->name);
-            if (rc == 0)
-                rc = vfy_write_curves(o, name, title, comment, t, M, 1, u_names, u_refs, rows, n,
-                                      buf[BAND_U], buf[BAND_U_CI], "uy", 0.0, 1);
-            if (rc != 0)
-                status = vfy_io_error(name, msg, msglen);
-        }
-    }
-    vfy_table_free(&table);
-    free_all(buf, NBUF);
-    return status;
 }
 
 /* Time average of mean[m] over the output times t[m] >= t_from. */

@@ -60,7 +60,7 @@ static const vfy_column grw_columns[] = {
      .quick_rows = {{"particles.n"}, {"64 256 1024"}, .sets = "particles.ensembles=2000"}, \
      .needs = grw_needs, .needs_why = VFY_NEEDS_MAXWELL, .paper_columns = PAPER,      \
      .metrics = grw_metrics, .checks = grw_checks, .columns = grw_columns,           \
-     .figure = {VFY_FIGURE_CURVES, "T_raw", {"T_exact"}, 2.0, 1},                      \
+     .figures = {{VFY_FIGURE_CURVES, "", "T_raw", {"T_exact"}, 2.0, 1, 0}},              \
      .title = "{case}: paper A {paper} reproduced ({size} sizes)", .notes = grw_notes}
 static const char grw_notes[] =
     "{comment}.\n\nEmax = max over the {outputs} output times of |T(t) - eta1(t)|/T(t), with "
@@ -196,7 +196,8 @@ const vfy_case_desc vfy_grw_ex5 = {
     .paper_rows = {{"particles.n"}, {"64 256 1024 4096"}},
     .quick_rows = {{"particles.n"}, {"64 256 1024"}, .sets = "particles.ensembles=300"},
     .metrics = ex5_metrics, .checks = ex5_checks, .columns = ex5_columns,
-    .figure = {VFY_FIGURE_CURVES, "T", {"T_maxwell_closure", "T_sonine_closure"}, 0.0, 0},
+    .figures = {{VFY_FIGURE_CURVES, "", "T", {"T_maxwell_closure", "T_sonine_closure"}, 0.0, 0,
+                 1}},
     .after_rows = ex5_extrapolate,
     .title = "{case}: paper A Ex 5, heated hard spheres ({size} sizes)",
     .notes = "{comment}.\n\nNo exact solution exists. T is the centred temperature; dev_* = "

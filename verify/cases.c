@@ -14,11 +14,9 @@
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
 extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4, vfy_grw_ex5;
 /* case_brs.c */
-sim_status vfy_case_brs_convergence(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                                    size_t);
 sim_status vfy_case_brs_steady(const vfy_case *, const vfy_options *, vfy_report *, char *,
                                size_t);
-extern const struct brs_paper_table vfy_brs_table1, vfy_brs_table2, vfy_brs_no_table;
+extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3;
 extern const struct brs_paper_steady vfy_brs_steady4, vfy_brs_steady5;
 /* case_ms.c (paper C) */
 sim_status vfy_case_ms_a2(const vfy_case *, const vfy_options *, vfy_report *, char *, size_t);
@@ -65,11 +63,11 @@ static const vfy_case cases[] = {
     {"vro-grw-ex3", "grw", "paper A Ex 3 observed through the exact conditional expectation "
      "over the pending Brownian increments: the variance reduction", 1, vfy_run_described, NULL, &vfy_vro_grw_ex3},
     {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",
-     1, vfy_case_brs_convergence, &vfy_brs_table1, NULL},
+     1, vfy_run_described, NULL, &vfy_brs_ex1},
     {"brs-ex2", "brs", "paper B Ex 2, Table 2: Maxwell kernels, drifting background", 1,
-     vfy_case_brs_convergence, &vfy_brs_table2, NULL},
+     vfy_run_described, NULL, &vfy_brs_ex2},
     {"brs-ex3", "brs", "paper B Ex 3: Maxwell kernels, light background (slow relaxation)", 0,
-     vfy_case_brs_convergence, &vfy_brs_no_table, NULL},
+     vfy_run_described, NULL, &vfy_brs_ex3},
     {"brs-ex4", "brs", "paper B Ex 4: hard spheres, K = 1/8: kinetic T* vs LE and Grad closures",
      1, vfy_case_brs_steady, &vfy_brs_steady4, NULL},
     {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,

@@ -94,6 +94,7 @@ sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const cha
 sim_status vfy_require_references(const sim_scene *scene, const char *const *names,
                                   size_t count, const char *why, char *msg, size_t msglen);
 #define VFY_NEEDS_MAXWELL "paper A's exact solution needs collisions.kernel = maxwell"
+#define VFY_NEEDS_BRS_MAXWELL "paper B's exact solution needs Maxwell kernels"
 
 /* Shared by the cases: build the engine for scene and run its ensembles,
  * with progress lines labelled `label`; with o->checkpoint_dir, save the

@@ -244,6 +244,26 @@ vfy_guard_result vfy_guard_at_most(const vfy_case_run *run, const vfy_row *row, 
     return lookup(run, row, g->a) <= g->x ? VFY_JUDGE : VFY_GUARD_SKIP;
 }
 
+vfy_guard_result vfy_guard_only_at_most(const vfy_case_run *run, const vfy_row *row,
+                                        const vfy_guard *g)
+{
+    return lookup(run, row, g->a) <= g->x ? VFY_JUDGE : VFY_OMIT;
+}
+
+vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,
+                                            const vfy_guard *g)
+{
+    return lookup(run, row, g->a) <= g->x ? VFY_GUARD_SKIP : VFY_OMIT;
+}
+
+vfy_guard_result vfy_guard_after_first(const vfy_case_run *run, const vfy_row *row,
+                                       const vfy_guard *g)
+{
+    (void)run;
+    (void)g;
+    return row->index > 0 ? VFY_JUDGE : VFY_OMIT;
+}
+
 vfy_guard_result vfy_guard_clean_pair(const vfy_case_run *run, const vfy_row *row,
                                       const vfy_guard *g)
 {
@@ -387,12 +407,13 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
 static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const char *suffix)
 {
     static const char *const names[] = {"N", "M", "cpu_s", "wall_s", "events", "ns_per_event",
-                                        "collisions", "violations"};
+                                        "collisions", "background", "violations"};
     double events = (double)res->counts.candidates;
     const double v[] = {(double)res->ensembles, (double)res->outputs, res->cpu_seconds,
                         res->wall_seconds, events,
                         events > 0 ? 1e9 * res->cpu_seconds / events : 0.0,
-                        (double)res->counts.collisions, (double)res->counts.violations};
+                        (double)res->counts.collisions, (double)res->counts.background,
+                        (double)res->counts.violations};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
         char name[48];
         snprintf(name, sizeof name, "%s%s", names[k], suffix);
@@ -487,7 +508,7 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
     }
     vfy_values_set(&row->values, "index", (double)row->index);
     vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
-    if (d->needs || d->figure.refs[0]) {
+    if (d->needs || d->figures[0].refs[0]) {
         sim_error err;
         if ((status = vfy_scene_references(&row->scene, &row->refs, &err)) != SIM_OK) {
             vfy_scene_format_error(&row->scene, &err, msg, msglen);
@@ -517,13 +538,11 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
 
 /* ------------------------------------------------------------ figure */
 
-static int write_figure(vfy_case_run *run, const char *title)
+static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char *title)
 {
-    const vfy_figure_spec *f = &run->d->figure;
-    if (f->kind == VFY_FIGURE_NONE || run->nrows == 0)
-        return 0;
     const vfy_row *last = &run->rows[run->nrows - 1];
-    size_t M = last->res.outputs, rows = run->nrows + (run->extra_mean != NULL), nref = 0;
+    const int extra = f->extrapolated && run->extra_mean != NULL;
+    size_t M = last->res.outputs, rows = run->nrows + (size_t)extra, nref = 0;
     double *buf = malloc((2 * rows + 4) * M * sizeof *buf);
     size_t *n = malloc(rows * sizeof *n);
     int rc = -1;
@@ -540,12 +559,14 @@ static int write_figure(vfy_case_run *run, const char *title)
             n[i] = run->rows[i].solver.particles.n;
             vfy_row_series(&run->rows[i], f->quantity, mean + i * M, ci + i * M);
         }
-        if (run->extra_mean != NULL) {   /* n = 0 marks the extrapolation */
+        if (extra) {   /* n = 0 marks the extrapolation */
             n[rows - 1] = 0;
             memcpy(mean + (rows - 1) * M, run->extra_mean, M * sizeof *mean);
             memcpy(ci + (rows - 1) * M, run->extra_ci, M * sizeof *ci);
         }
-        rc = vfy_write_curves(run->o, run->c->name, title, run->comment, last->res.t, M, nref,
+        char name[160];
+        snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
+        rc = vfy_write_curves(run->o, name, title, run->comment, last->res.t, M, nref,
                               names, refs, rows, n, mean, ci, f->quantity, f->x_from,
                               f->panel_per_row);
     }
@@ -581,8 +602,11 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     status = vfy_write_case_tables(run->o, run->c->name, &run->table, run->comment, title, notes,
                                    msg, msglen);
     free(notes);
-    if (status == SIM_OK && write_figure(run, title) != 0)
-        status = vfy_io_error(run->c->name, msg, msglen);
+    for (size_t k = 0; k < VFY_FIGURES_MAX && d->figures[k].kind != VFY_FIGURE_NONE
+                       && status == SIM_OK;
+         k++)
+        if (write_figure(run, &d->figures[k], title) != 0)
+            status = vfy_io_error(run->c->name, msg, msglen);
     return status;
 }
 

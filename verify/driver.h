@@ -15,7 +15,7 @@
  *     name, the value references it names (references.h), the result's
  *     steady averages by name with _ci ("a2", "a2_ci"), paper columns (a value printed by the paper for this row), the
  *     metrics and the values checks define, and the cost values cpu_s, wall_s,
- *     events, ns_per_event, collisions, violations;
+ *     events, ns_per_event, collisions, background, violations;
  *   - the case's: wall_total (all rows), outputs, rows, and what hooks set.
  * Series (one value per output time) are the result's observables by their
  * column names ("T", "T_raw", "ux", ...) and the scene's references by name
@@ -180,11 +180,14 @@ typedef enum vfy_figure_kind {
 
 typedef struct vfy_figure_spec {
     vfy_figure_kind kind;
+    const char *suffix;              /* the files are <case><suffix>.csv ... ("" or NULL) */
     const char *quantity;            /* the series drawn for every row */
     const char *refs[4];             /* reference series drawn as lines */
     double x_from;                   /* the t axis starts here */
     int panel_per_row;               /* one panel per row (the first four), or one plot */
+    int extrapolated;                /* draw the hook's n = infinity curve too */
 } vfy_figure_spec;
+#define VFY_FIGURES_MAX 3
 
 /* Settings derived from a row's scene (e.g. a thermostat's strength from
  * alpha), as "key=value;key=value" in buf: applied after the sweep and
@@ -218,7 +221,7 @@ typedef struct vfy_case_desc {
     const vfy_metric *metrics;          /* in order; terminated by a NULL name */
     const vfy_check_spec *checks;       /* in order; terminated by a NULL name */
     const vfy_column *columns;          /* terminated by a NULL header */
-    vfy_figure_spec figure;
+    vfy_figure_spec figures[VFY_FIGURES_MAX];  /* up to the first of kind NONE */
     const char *title, *notes;          /* templates */
     vfy_hook_fn after_rows;
 } vfy_case_desc;
@@ -272,6 +275,16 @@ vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, 
 
 /* Judged while value a <= x; else SKIP. */
 vfy_guard_result vfy_guard_at_most(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g);
+/* Judged while value a <= x; else omitted. */
+vfy_guard_result vfy_guard_only_at_most(const vfy_case_run *run, const vfy_row *row,
+                                        const vfy_guard *g);
+/* Reported, not judged (SKIP with the reason) while value a <= x; else
+ * omitted: a paper's number shown beside ours that cannot be judged. */
+vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,
+                                            const vfy_guard *g);
+/* Omitted on the first row (a ratio to the previous row). */
+vfy_guard_result vfy_guard_after_first(const vfy_case_run *run, const vfy_row *row,
+                                       const vfy_guard *g);
 /* Omitted on the first row; judged when value a exceeds x times value b on
  * this row and on the previous one ("clean": the error well above the
  * noise); else SKIP. */

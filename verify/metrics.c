@@ -24,9 +24,9 @@ double vfy_max_ratio_dev(const double *mean, const double *ref, size_t count)
     return worst;
 }
 
-double vfy_fictitious_fraction(double collisions, double events)
+double vfy_fictitious_fraction(double accepted, double events)
 {
-    return 1.0 - collisions / events;
+    return events > 0 ? 1.0 - accepted / events : 0.0;
 }
 
 void vfy_variance_ratio(const double *var_a, const double *var_b, size_t count, double *mean,
@@ -155,7 +155,8 @@ double vfy_metric_fictitious_fraction(const vfy_case_run *run, const vfy_row *ro
 {
     (void)run;
     (void)m;
-    return vfy_fictitious_fraction(vfy_values_get(&row->values, "collisions"),
+    return vfy_fictitious_fraction(vfy_values_get(&row->values, "collisions")
+                                       + vfy_values_get(&row->values, "background"),
                                    vfy_values_get(&row->values, "events"));
 }
 

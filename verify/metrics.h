@@ -18,8 +18,9 @@ double vfy_max_rel_err(const double *mean, const double *exact, size_t count);
  * closure. */
 double vfy_max_ratio_dev(const double *mean, const double *ref, size_t count);
 
-/* 1 - collisions / events: the fraction of fictitious (rejected) candidates. */
-double vfy_fictitious_fraction(double collisions, double events);
+/* 1 - accepted / events (0 without events): the fraction of fictitious
+ * (rejected) candidates. */
+double vfy_fictitious_fraction(double accepted, double events);
 
 /* Var_a[m] / Var_b[m] over m = 1 .. count-1 (t > 0): its mean (*mean) and
  * smallest (*min) -- a variance reduction factor. */
@@ -52,7 +53,8 @@ double vfy_metric_max_ratio_dev(const vfy_case_run *run, const vfy_row *row, con
 /* Series a's mean, and its confidence half-width, at the last output time. */
 double vfy_metric_final_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 double vfy_metric_final_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-/* vfy_fictitious_fraction of the row's counts. */
+/* vfy_fictitious_fraction of the row's counts (binary and background
+ * collisions accepted). */
 double vfy_metric_fictitious_fraction(const vfy_case_run *run, const vfy_row *row,
                                       const vfy_metric *m);
 /* vfy_variance_ratio of observable a between the row's first variant and

@@ -38,4 +38,22 @@
  * ratio is not led by noise. */
 #define VFY_TOL_GRW_CLEAN_RATIO 4.0
 
+/* ---------------------------------------------------------- paper B (brs) */
+
+/* Err within ±35% of paper B's Tables 1-2 (as paper A's Emax: one
+ * realisation of a maximum over noisy points). */
+#define VFY_TOL_BRS_PAPER_ERR_RTOL 0.35
+/* Conf within ±20% of Table 2's: Conf is a maximum of half-widths, whose
+ * own spread over runs is a few percent at N = 16 n. */
+#define VFY_TOL_BRS_PAPER_CONF_RTOL 0.20
+/* Rows compared with the paper: n <= 256 (its larger rows are noise-led). */
+#define VFY_TOL_BRS_PAPER_MAX_N 256
+/* Conf = O(1/sqrt(n N)): CF 4 when n and N grow by 4; [3.2, 5] as paper A's. */
+#define VFY_TOL_BRS_CONF_CF_LO 3.2
+#define VFY_TOL_BRS_CONF_CF_HI 5.0
+/* Err: CF 4 for the O(1/n) bias, blurred by noise of the same order (c/T is
+ * about Err/2 in these tables): [2.5, 6.4]; O(1/sqrt n) gives 2. */
+#define VFY_TOL_BRS_ERR_CF_LO 2.5
+#define VFY_TOL_BRS_ERR_CF_HI 6.4
+
 #endif
