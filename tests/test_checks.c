@@ -37,6 +37,28 @@ static void test_range_and_absolute(void **state)
     vfy_report_free(&r);
 }
 
+/* Paper B Ex 4 prints the kinetic T* = 0.953 (3 decimals).  At paper sizes
+ * (T* = 0.95344 ± 0.00040) the kinetic value passes and the LE closure's
+ * steady value 0.95571, 0.0027 away, must fail: the old band of ±0.004
+ * passed it. */
+static void test_printed(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_check_printed(&r, "kinetic", 0.95344, 0.00040, 0.953, 3), VFY_PASS);
+    assert_int_equal(vfy_check_printed(&r, "closure", 0.95571, 0.00040, 0.953, 3), VFY_FAIL);
+    assert_int_equal(vfy_check_absolute(&r, "old band", 0.95571, 0.953, 0.004), VFY_PASS);
+    /* a deterministic value: the rounding alone */
+    assert_int_equal(vfy_check_printed(&r, "LE", 0.95571, 0.0, 0.956, 3), VFY_PASS);
+    assert_int_equal(vfy_check_printed(&r, "LE off", 0.95545, 0.0, 0.956, 3), VFY_FAIL);
+    assert_int_equal(vfy_check_printed(&r, "nan", NAN, 0.0, 0.956, 3), VFY_FAIL);
+    assert_int_equal(r.failed, 3);
+    assert_string_equal(r.checks[1].detail, "0.95571 vs 0.953 printed (|diff| 0.0027, allowed "
+                                            "0.0009: rounding 0.0005 + ci 0.0004)");
+    vfy_report_free(&r);
+}
+
 /* z-scores: ci = 3.2 sigma; a mean 3 sigma off passes zmax = 4.5, 6 sigma
  * off fails; an exact point (ci = 0) must match exactly. */
 static void test_zscore(void **state)
@@ -81,6 +103,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_relative),
+        cmocka_unit_test(test_printed),
         cmocka_unit_test(test_range_and_absolute),
         cmocka_unit_test(test_zscore),
         cmocka_unit_test(test_skip_is_not_failure),

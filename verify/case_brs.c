@@ -32,8 +32,6 @@
 #include "scene_refs.h"
 #include "table.h"
 
-#define STEADY_ATOL 0.004    /* kinetic T* within 0.004 of the paper's */
-#define CLOSURE_ATOL 0.0005  /* closures' T* to the paper's three digits */
 #define BATCHES 32           /* independent batches per row of the steady cases */
 
 /* brs-ex1, brs-ex2, brs-ex3 (SPEC §4 Ex 1-3): Maxwell kernels, rows n = 4,
@@ -315,13 +313,13 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
     const double grad = ref_background_hs_T_steady(&p, REF_BACKGROUND_GRAD);
 
     char name[128];
-    vfy_check_absolute(r, vfy_name(name, sizeof name, "%s kinetic T* (n -> infinity) vs paper",
-                                   c->name),
-                       T_inf, paper->kinetic, STEADY_ATOL);
-    vfy_check_absolute(r, vfy_name(name, sizeof name, "%s LE closure T* vs paper", c->name), le,
-                       paper->le, CLOSURE_ATOL);
-    vfy_check_absolute(r, vfy_name(name, sizeof name, "%s Grad closure T* vs paper", c->name),
-                       grad, paper->grad, CLOSURE_ATOL);
+    vfy_check_printed(r, vfy_name(name, sizeof name, "%s kinetic T* (n -> infinity) vs paper",
+                                  c->name),
+                      T_inf, T_inf_ci, paper->kinetic, VFY_TOL_BRS_PRINTED_DIGITS);
+    vfy_check_printed(r, vfy_name(name, sizeof name, "%s LE closure T* vs paper", c->name), le,
+                      0.0, paper->le, VFY_TOL_BRS_PRINTED_DIGITS);
+    vfy_check_printed(r, vfy_name(name, sizeof name, "%s Grad closure T* vs paper", c->name),
+                      grad, 0.0, paper->grad, VFY_TOL_BRS_PRINTED_DIGITS);
     /* The closures have relaxed by t_end (so the DSMC average over the second
      * half is a steady value too, the closures relaxing on the same scale). */
     vfy_check_absolute(r, vfy_name(name, sizeof name, "%s Grad closure at t_end vs its T*",
@@ -344,7 +342,11 @@ sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_repo
              "batch).\n\nT_star = time average over t in [%g, %g] of the ensemble mean of the "
              "centred T; T_star_ci = t-quantile(0.9995, %d) x the standard error over the "
              "batches. Extrapolated to n = infinity (weighted least "
-             "squares in 1/n): kinetic T* = %.5f ± %.5f (paper %.3f). Closures' steady states "
+             "squares in 1/n): kinetic T* = %.5f ± %.5f (paper %.3f), judged within half a "
+             "unit of the paper's last digit (0.0005) plus its confidence half-width, so that "
+             "it separates the kinetic value from the closures' (0.003 apart for K = 1/8) "
+             "wherever the half-width is below 0.0025 (paper sizes; at quick sizes it is not, "
+             "and the check is correspondingly loose). Closures' steady states "
              "(GSL Brent root of dT/dt at u = u_B): local equilibrium (B.21) %.5f (paper "
              "%.3f), Grad (B.22) %.5f (paper %.3f). chi^2 of the O(1/n) fit %.2f. dev_uy_grad "
              "= max over t of |eta1 of u_y - u_y of (B.22)|. fictitious_fraction = 1 - "

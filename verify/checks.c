@@ -115,6 +115,15 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
                   worst, at, zmax, count ? mean[at] : 0.0, count ? exact[at] : 0.0);
 }
 
+vfy_verdict vfy_check_printed(vfy_report *r, const char *name, double value, double ci,
+                              double printed, int digits)
+{
+    double rounding = 0.5 * pow(10.0, -digits), dev = fabs(value - printed);
+    vfy_verdict v = dev <= rounding + ci ? VFY_PASS : VFY_FAIL;
+    return record(r, v, name, "%.6g vs %.*f printed (|diff| %.2g, allowed %.2g: rounding %.2g "
+                  "+ ci %.2g)", value, digits, printed, dev, rounding + ci, rounding, ci);
+}
+
 vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uint64_t expected)
 {
     vfy_verdict v = value == expected ? VFY_PASS : VFY_FAIL;

@@ -49,6 +49,12 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
                              const double *ci, const double *exact, size_t count, double zmax,
                              double *max_z);
 
+/* A number a paper prints rounded to `digits` decimals against our value
+ * with confidence half-width ci: |value - printed| <= 0.5 10^-digits + ci
+ * (0 for a deterministic value). */
+vfy_verdict vfy_check_printed(vfy_report *r, const char *name, double value, double ci,
+                              double printed, int digits);
+
 /* value == expected: counters such as majorant violations. */
 vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uint64_t expected);
 
