@@ -3,10 +3,15 @@
 foreach(threads 1 2)
   set(ENV{OMP_NUM_THREADS} ${threads})
   execute_process(COMMAND ${EXE} run ${SCENE} --set particles.n=64
-                          --set particles.ensembles=600 --quiet --out ${OUT}-${threads}.csv
-                  RESULT_VARIABLE rc)
+                          --set particles.ensembles=600 --out ${OUT}-${threads}.csv
+                  RESULT_VARIABLE rc ERROR_VARIABLE summary)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "gdsmc run with ${threads} threads exited ${rc}")
+  endif()
+  # the run's summary names the threads it used: else the comparison is vacuous
+  if(NOT summary MATCHES "wall on ${threads} threads?\n")
+    message(FATAL_ERROR "gdsmc run with OMP_NUM_THREADS=${threads} did not use ${threads} "
+                        "threads:\n${summary}")
   endif()
 endforeach()
 file(READ ${OUT}-1.csv one)

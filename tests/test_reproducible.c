@@ -49,6 +49,8 @@ static void test_same_seed_same_numbers_any_threads(void **state)
     sim_ensemble_result one, two;
     run_scene(sets, 4, 1, &one);
     run_scene(sets, 4, 2, &two);
+    assert_int_equal(one.threads, 1);
+    assert_int_equal(two.threads, 2);   /* else the comparison would be vacuous */
     size_t len = one.outputs * SIM_OBS_COUNT;
     assert_memory_equal(one.mean, two.mean, len * sizeof *one.mean);
     assert_memory_equal(one.var, two.var, len * sizeof *one.var);

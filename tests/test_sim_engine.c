@@ -232,6 +232,7 @@ static void test_thread_count_independence(void **state)
     omp_set_num_threads(2);
     run(&s, &b);
     assert_int_equal(a.threads, 1);
+    assert_int_equal(b.threads, 2);   /* else the comparison would be vacuous */
     assert_memory_equal(a.mean, b.mean, a.outputs * SIM_OBS_COUNT * sizeof(double));
     assert_memory_equal(a.ci, b.ci, a.outputs * SIM_OBS_COUNT * sizeof(double));
     assert_int_equal(a.counts.candidates, b.counts.candidates);

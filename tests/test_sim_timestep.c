@@ -418,6 +418,8 @@ static void test_thread_count_independence(void **state)
     omp_set_num_threads(2);
     run(&s, &b);
     size_t len = a.outputs * SIM_OBS_COUNT + a.nsteady;
+    assert_int_equal(a.threads, 1);
+    assert_int_equal(b.threads, 2);   /* else the comparison would be vacuous */
     assert_int_equal(a.nsteady, SIM_STEADY_BIN0 + 10);
     assert_memory_equal(a.mean, b.mean, len * sizeof(double));
     assert_memory_equal(a.ci, b.ci, len * sizeof(double));
