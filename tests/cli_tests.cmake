@@ -30,6 +30,8 @@ gdsmc_add_cli_test(cli_verify_gate_wrong_solver 1
 gdsmc_add_cli_test(cli_verify_gate_right_solver 0
                    "\nverify: [1-9][0-9]* passed, 0 failed, [0-9]+ skipped\n"
                    verify --suite quick --case grw-ex3 --out ${CMAKE_CURRENT_BINARY_DIR}/gate-right)
+set_tests_properties(cli_verify_gate_wrong_solver cli_verify_gate_right_solver
+                     PROPERTIES LABELS verification)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 # at t = 0: T_exact = 1, E T_n = 1 - 1/n = 63/64, E T_raw = 1
 gdsmc_add_cli_test(cli_reference_ex3 0 "\nt,T_exact,T_finite_n,T_raw_finite_n\n0,1,0\\.984375,1\n0\\.1,1\\.12042752"
@@ -90,7 +92,7 @@ gdsmc_add_cli_test(cli_outputs_too_many 2
 add_test(NAME cli_verify_resume
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCASE=grw-ex4 -DRC=0
                  -DOUT=${CMAKE_CURRENT_BINARY_DIR}/resume -P ${CMAKE_CURRENT_SOURCE_DIR}/run_resume.cmake)
-set_tests_properties(cli_verify_resume PROPERTIES TIMEOUT 300 LABELS unit)
+set_tests_properties(cli_verify_resume PROPERTIES TIMEOUT 300 LABELS regression)
 foreach(sig INT TERM)
   add_test(NAME cli_verify_sig${sig}
            COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DSIG=${sig}
