@@ -17,8 +17,8 @@
  * CF = difference at 2h / difference at h: about 2 for Euler, 4 for Strang.
  * Common random numbers across schemes are impossible (the schemes consume
  * random numbers differently), so a halving is judged only when both
- * differences stand CLEAN_RATIO times above their half-widths; otherwise it
- * is skipped with the reason.  Each row's CPU time, candidates and collisions
+ * differences stand VFY_TOL_SPLIT_CLEAN_RATIO times above their half-widths;
+ * otherwise it is skipped with the reason.  Each row's CPU time, candidates and collisions
  * give the cost; the notes compare what each scheme pays for a given error.
  */
 #include <math.h>
@@ -26,100 +26,14 @@
 #include <string.h>
 
 #include "case_report.h"
-#include "cases.h"
+#include "driver.h"
 #include "figure.h"
-#include "steady.h"
-#include "table.h"
-
-#define SPLIT_LEVELS_MAX 6
-#define CLEAN_RATIO 3.0       /* a difference counts when above 3 x its half-width */
-#define EULER_CF_LO 1.6
-#define EULER_CF_HI 2.5
-#define STRANG_CF_LO 3.2
-#define STRANG_CF_HI 5.0
-#define MIN_HALVINGS 3
-#define A2_ASYMPTOTIC 0.25    /* a2's CF is judged where |da2| <= 0.25 |a2| at the larger h */
+#include "tolerances.h"
 
 typedef struct split_row {
-    sim_splitting split;
-    double h;
-    double T, T_ci, a2, a2_ci;     /* time averages */
-    double dT, dT_ci, da2, da2_ci; /* minus the jump run's */
-    double dTmax, dTmax_noise;     /* max over t of |T(t) - T_jump(t)|, and of its ci */
-    double cpu, wall;
+    double h, dT, dT_ci, cpu;
     sim_counts counts;
 } split_row;
-
-/* Run the scene; fill the row's time averages and cost; keep T(t) in Tt. */
-static sim_status split_run(const sim_scene *s, const vfy_options *o, const char *label,
-                            split_row *row, double *Tt, double *Tt_ci, char *msg,
-                            size_t msglen)
-{
-    sim_ensemble_result res;
-    sim_status status = vfy_simulate(s, o, label, &res, msg, msglen);
-    if (status == SIM_OK) {
-        row->T = sim_result_steady_mean(&res, SIM_STEADY_T);
-        row->T_ci = sim_result_steady_ci(&res, SIM_STEADY_T);
-        row->a2 = sim_result_steady_mean(&res, SIM_STEADY_A2);
-        row->a2_ci = sim_result_steady_ci(&res, SIM_STEADY_A2);
-        vfy_result_column(&res, SIM_OBS_T, Tt, Tt_ci);
-        row->cpu = res.cpu_seconds;
-        row->wall = res.wall_seconds;
-        row->counts = res.counts;
-        if (o->progress)
-            fprintf(o->progress, "   %s: T = %.6f ± %.6f, a2 = %.5f ± %.5f (%.1f s)\n", label,
-                    row->T, row->T_ci, row->a2, row->a2_ci, res.wall_seconds);
-    }
-    sim_ensemble_result_free(&res);
-    return status;
-}
-
-/* Judge the halvings of one splitting: CF of |dT| (and of |da2| where it is
- * resolved) between consecutive rows.  Returns the number of judged
- * halvings of T. */
-static size_t split_judge(vfy_report *r, const char *case_name, const char *split_name,
-                          const split_row *rows, size_t count, double a2_ref, double lo,
-                          double hi, double *cf, double *cf_a2)
-{
-    size_t judged = 0;
-    char name[160], why[240];
-    for (size_t k = 0; k < count; k++) {
-        cf[k] = cf_a2[k] = NAN;
-        if (k == 0)
-            continue;
-        const split_row *p = &rows[k - 1], *q = &rows[k];
-        cf[k] = fabs(p->dT) / fabs(q->dT);
-        cf_a2[k] = fabs(p->da2) / fabs(q->da2);
-        vfy_name(name, sizeof name, "%s %s h=%g->%g CF of the T difference", case_name,
-                 split_name, p->h, q->h);
-        if (fabs(p->dT) > CLEAN_RATIO * p->dT_ci && fabs(q->dT) > CLEAN_RATIO * q->dT_ci) {
-            vfy_check_range(r, name, cf[k], lo, hi);
-            judged++;
-        } else {
-            snprintf(why, sizeof why, "difference %.3g ± %.3g at h = %g not %g times its "
-                     "half-width: CF %.3g not judged", fabs(q->dT), q->dT_ci, q->h,
-                     CLEAN_RATIO, cf[k]);
-            vfy_skip(r, name, why);
-        }
-        vfy_name(name, sizeof name, "%s %s h=%g->%g CF of the a2 difference", case_name,
-                 split_name, p->h, q->h);
-        if (fabs(p->da2) > A2_ASYMPTOTIC * fabs(a2_ref)) {
-            snprintf(why, sizeof why, "difference %.3g at h = %g is not small against a2 = "
-                     "%.3g itself (it saturates: a large kick makes f Maxwellian): CF %.3g "
-                     "not judged", fabs(p->da2), p->h, a2_ref, cf_a2[k]);
-            vfy_skip(r, name, why);
-        } else if (fabs(p->da2) > CLEAN_RATIO * p->da2_ci
-                   && fabs(q->da2) > CLEAN_RATIO * q->da2_ci)
-            vfy_check_range(r, name, cf_a2[k], lo, hi);
-        else {
-            snprintf(why, sizeof why, "difference %.3g ± %.3g at h = %g not %g times its "
-                     "half-width: CF %.3g not judged", fabs(q->da2), q->da2_ci, q->h,
-                     CLEAN_RATIO, cf_a2[k]);
-            vfy_skip(r, name, why);
-        }
-    }
-    return judged;
-}
 
 /* The time-step scheme's cost model: CPU seconds = alpha x candidates +
  * beta x normal variates (the collision stages and the white-noise flights),
@@ -167,7 +81,7 @@ static double split_cost_at(const split_cost *m, const split_row *rows, size_t c
 static double split_step_for(const split_row *rows, size_t count, double order, double eps)
 {
     for (size_t k = count; k-- > 0;)
-        if (fabs(rows[k].dT) > CLEAN_RATIO * rows[k].dT_ci)
+        if (fabs(rows[k].dT) > VFY_TOL_SPLIT_CLEAN_RATIO * rows[k].dT_ci)
             return rows[k].h * pow(eps / fabs(rows[k].dT), 1.0 / order);
     return NAN;
 }
@@ -212,209 +126,325 @@ static int split_figure(const vfy_options *o, const char *name, const char *comm
     return 0;
 }
 
-/* One row of the case's table; CF cells (NaN: not known yet, or the first
- * step) are empty. */
-static void split_table_row(vfy_table *t, const split_row *q, int is_jump, int strang,
-                            double cf, double cf_a2)
+
+/* ------------------------------------------------------------ the rows */
+
+/* Against the jump row (the first): value a minus the jump row's. */
+static double minus_jump(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    const double coll = (double)q->counts.collisions;
-    vfy_table_cell(t, "%s", is_jump ? "jump" : strang ? "strang" : "euler");
-    vfy_table_number(t, !is_jump, "%g", q->h);
-    vfy_table_cell(t, "%.6f", q->T);
-    vfy_table_cell(t, "%.6f", q->T_ci);
-    vfy_table_number(t, !is_jump, "%+.3e", q->dT);
-    vfy_table_number(t, !is_jump, "%.2e", q->dT_ci);
-    vfy_table_number(t, !is_jump && !isnan(cf), "%.2f", cf);
-    vfy_table_number(t, !is_jump, "%.3e", q->dTmax);
-    vfy_table_number(t, !is_jump, "%.2e", q->dTmax_noise);
-    vfy_table_cell(t, "%.5f", q->a2);
-    vfy_table_cell(t, "%.5f", q->a2_ci);
-    vfy_table_number(t, !is_jump, "%+.3e", q->da2);
-    vfy_table_number(t, !is_jump, "%.2e", q->da2_ci);
-    vfy_table_number(t, !is_jump && !isnan(cf_a2), "%.2f", cf_a2);
-    vfy_table_cell(t, "%.2f", q->cpu);
-    vfy_table_cell(t, "%.2f", q->wall);
-    vfy_table_cell(t, "%llu", (unsigned long long)q->counts.candidates);
-    vfy_table_cell(t, "%llu", (unsigned long long)q->counts.collisions);
-    vfy_table_cell(t, "%llu", (unsigned long long)q->counts.normals);
-    vfy_table_cell(t, "%.1f", coll > 0 ? 1e9 * q->cpu / coll : 0.0);
+    return row->index ? vfy_values_get(&row->values, m->a)
+                            - vfy_values_get(&run->rows[0].values, m->a)
+                      : NAN;
 }
 
-sim_status vfy_case_split(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
-                          size_t msglen)
+/* The half-width of that difference of independent runs, sqrt(c1^2 + c2^2). */
+static double hypot_jump(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    sim_scene scene, solver;
-    sim_status status = vfy_load_case_scene(c, o, &scene, &solver, msg, msglen);
-    if (status != SIM_OK)
-        return status;
-    if (!solver.steady.present || solver.scheme != SIM_SCHEME_TIMESTEP) {
+    return row->index ? hypot(vfy_values_get(&row->values, m->a),
+                              vfy_values_get(&run->rows[0].values, m->a))
+                      : NAN;
+}
+
+/* max over t > 0 of |T(t) - T_jump(t)| (x = 0), or of its half-width (x = 1). */
+static double max_diff_jump(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const size_t M = row->res.outputs;
+    double *buf = malloc(4 * M * sizeof *buf), worst = row->index ? 0.0 : NAN;
+    if (buf == NULL)
+        return NAN;
+    vfy_row_series(row, m->a, buf, buf + M);
+    vfy_row_series(&run->rows[0], m->a, buf + 2 * M, buf + 3 * M);
+    for (size_t t = 1; row->index && t < M; t++)
+        worst = fmax(worst, m->x ? hypot(buf[M + t], buf[3 * M + t])
+                                 : fabs(buf[t] - buf[2 * M + t]));
+    free(buf);
+    return worst;
+}
+
+/* |value a| */
+static double magnitude(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    return fabs(vfy_values_get(&row->values, m->a));
+}
+
+/* The previous row's value a, if it has the same splitting (else NAN). */
+static double previous_same(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const vfy_row *p = vfy_row_previous(run, row);
+    return p && row->index > 1 && strcmp(vfy_row_text(p, "scheme"), vfy_row_text(row, "scheme")) == 0
+               ? vfy_values_get(&p->values, m->a)
+               : NAN;
+}
+
+/* CF = |d| at 2h / |d| at h within one splitting. */
+static double cf_same(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    return previous_same(run, row, m) / vfy_values_get(&row->values, m->a);
+}
+
+/* CPU time per accepted collision, everything included. */
+static double ns_per_collision(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    double c = vfy_values_get(&row->values, "collisions");
+    return c > 0 ? 1e9 * vfy_values_get(&row->values, "cpu_s") / c : 0.0;
+}
+
+/* A halving is judged only where both differences stand CLEAN_RATIO times
+ * above their half-widths: value a (|d|) and its half-width b, this row's
+ * and the previous one's ("_prev"); omitted where there is no halving. */
+static int clean_halving(const vfy_row *row, const char *d, const char *ci)
+{
+    char prev_d[32], prev_ci[32];
+    snprintf(prev_d, sizeof prev_d, "%s_prev", d);
+    snprintf(prev_ci, sizeof prev_ci, "%s_prev", ci);
+    const vfy_values *v = &row->values;
+    return vfy_values_get(v, prev_d) > VFY_TOL_SPLIT_CLEAN_RATIO * vfy_values_get(v, prev_ci)
+           && vfy_values_get(v, d) > VFY_TOL_SPLIT_CLEAN_RATIO * vfy_values_get(v, ci);
+}
+
+static vfy_guard_result halving_clean(const vfy_case_run *run, const vfy_row *row,
+                                      const vfy_guard *g)
+{
+    (void)run;
+    if (isnan(vfy_values_get(&row->values, "h_prev")))
+        return VFY_OMIT;
+    return clean_halving(row, g->a, g->b) ? VFY_JUDGE : VFY_GUARD_SKIP;
+}
+
+/* a2's CF is judged only where its difference at the larger step is small
+ * against a2 itself (at larger h it saturates): the saturated halvings are
+ * skipped with one reason (x = 1), the others judged when clean (x = 0). */
+static int a2_saturated(const vfy_case_run *run, const vfy_row *row)
+{
+    return vfy_values_get(&row->values, "da2_abs_prev")
+           > VFY_TOL_SPLIT_A2_ASYMPTOTIC * fabs(vfy_values_get(&run->rows[0].values, "a2"));
+}
+
+static vfy_guard_result a2_halving(const vfy_case_run *run, const vfy_row *row,
+                                   const vfy_guard *g)
+{
+    if (isnan(vfy_values_get(&row->values, "h_prev")) || a2_saturated(run, row) != (g->x == 1))
+        return VFY_OMIT;
+    return g->x == 1 || !clean_halving(row, g->a, g->b) ? VFY_GUARD_SKIP : VFY_JUDGE;
+}
+
+/* CF within the splitting's order band: [1.6, 2.5] for Euler (first order),
+ * [3.2, 5] for Strang (second). */
+static vfy_verdict cf_in_band(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                              const vfy_check_spec *c)
+{
+    (void)run;
+    const int strang = strcmp(vfy_row_text(row, "scheme"), "strang") == 0;
+    return vfy_check_range(r, name, vfy_values_get(&row->values, c->value),
+                           strang ? VFY_TOL_SPLIT_STRANG_CF_LO : VFY_TOL_SPLIT_EULER_CF_LO,
+                           strang ? VFY_TOL_SPLIT_STRANG_CF_HI : VFY_TOL_SPLIT_EULER_CF_HI);
+}
+
+static double constant(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)row;
+    return m->x;
+}
+
+static double jump_value(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)row;
+    return vfy_values_get(&run->rows[0].values, m->a);
+}
+
+static const vfy_metric split_metrics[] = {
+    {"dT", minus_jump, "T", NULL, 0}, {"dT_ci", hypot_jump, "T_ci", NULL, 0},
+    {"da2", minus_jump, "a2", NULL, 0}, {"da2_ci", hypot_jump, "a2_ci", NULL, 0},
+    {"dTmax_t", max_diff_jump, "T", NULL, 0}, {"dTmax_noise", max_diff_jump, "T", NULL, 1},
+    {"dT_abs", magnitude, "dT", NULL, 0}, {"da2_abs", magnitude, "da2", NULL, 0},
+    {"dT_abs_prev", previous_same, "dT_abs", NULL, 0},
+    {"da2_abs_prev", previous_same, "da2_abs", NULL, 0},
+    {"dT_ci_prev", previous_same, "dT_ci", NULL, 0},
+    {"da2_ci_prev", previous_same, "da2_ci", NULL, 0}, {"h_prev", previous_same, "h", NULL, 0},
+    {"CF_T", cf_same, "dT_abs", NULL, 0}, {"CF_a2", cf_same, "da2_abs", NULL, 0},
+    {"ns_per_collision", ns_per_collision, NULL, NULL, 0}, {"a2_jump", jump_value, "a2", NULL, 0},
+    {"clean_ratio", constant, NULL, NULL, VFY_TOL_SPLIT_CLEAN_RATIO},
+    {NULL, NULL, NULL, NULL, 0}};
+
+static const vfy_check_spec split_checks[] = {
+    {.name = "{case} {label} majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = "{case} {scheme} h={h_prev}->{h} CF of the T difference", .rule = cf_in_band,
+     .value = "CF_T",
+     .guard = {halving_clean, "dT_abs", "dT_ci", 0,
+               "difference {dT_abs:%.3g} ± {dT_ci:%.3g} at h = {h} not {clean_ratio} times its "
+               "half-width: CF {CF_T:%.3g} not judged"}},
+    {.name = "{case} {scheme} h={h_prev}->{h} CF of the a2 difference",
+     .guard = {a2_halving, "da2_abs", "da2_ci", 1,
+               "difference {da2_abs_prev:%.3g} at h = {h_prev} is not small against a2 = "
+               "{a2_jump:%.3g} itself (it saturates: a large kick makes f Maxwellian): CF "
+               "{CF_a2:%.3g} not judged"}},
+    {.name = "{case} {scheme} h={h_prev}->{h} CF of the a2 difference", .rule = cf_in_band,
+     .value = "CF_a2",
+     .guard = {a2_halving, "da2_abs", "da2_ci", 0,
+               "difference {da2_abs:%.3g} ± {da2_ci:%.3g} at h = {h} not {clean_ratio} times "
+               "its half-width: CF {CF_a2:%.3g} not judged"}},
+    {.name = NULL}};
+
+static const vfy_column split_columns[] = {
+    {"scheme", NULL, "%s"}, {"h", NULL, "%g"}, {"T", NULL, "%.6f"}, {"T_ci", NULL, "%.6f"},
+    {"dT", NULL, "%+.3e"}, {"dT_ci", NULL, "%.2e"}, {"CF_T", NULL, "%.2f"},
+    {"dTmax_t", NULL, "%.3e"}, {"dTmax_noise", NULL, "%.2e"}, {"a2", NULL, "%.5f"},
+    {"a2_ci", NULL, "%.5f"}, {"da2", NULL, "%+.3e"}, {"da2_ci", NULL, "%.2e"},
+    {"CF_a2", NULL, "%.2f"}, {"cpu_s", NULL, "%.2f"}, {"wall_s", NULL, "%.2f"},
+    {"candidates", "events", "%.0f"}, {"collisions", NULL, "%.0f"}, {"normals", NULL, "%.0f"},
+    {"ns_per_collision", NULL, "%.1f"}, {NULL, NULL, NULL}};
+
+/* The jump row simulates the scene as the references see it (--set only: a
+ * wrong solver changes only the time-step rows) with the jump scheme. */
+static sim_status split_adjust(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
+{
+    if (!solver->steady.present || solver->scheme != SIM_SCHEME_TIMESTEP) {
         snprintf(msg, msglen, "%s: the splitting case needs [steady] and scheme = timestep",
-                 solver.file);
+                 solver->file);
         return SIM_EINVAL;
     }
-    const size_t levels = o->size == VFY_PAPER ? 5 : 3;
-    if (o->size == VFY_QUICK) {   /* CI: small, so the small steps are skipped as noise */
-        sim_scene *both[] = {&scene, &solver};
-        for (int i = 0; i < 2; i++) {
-            both[i]->particles.n = 200;
-            both[i]->particles.ensembles = 60;
-            both[i]->t_end = 16.0;
-            both[i]->outputs = 11;
+    if (strcmp(vfy_row_text(row, "scheme"), "jump") == 0) {
+        *solver = row->scene;
+        solver->scheme = SIM_SCHEME_JUMP;
+        solver->splitting = SIM_SPLIT_EULER;
+    }
+    return SIM_OK;
+}
+
+/* What a given accuracy costs (the notes and a progress line): for a target
+ * error eps of T̄ (relative to T̄), the step each splitting needs (from its
+ * error at its smallest resolved step and its order) and the CPU time at that
+ * step, beside the jump scheme, which has no splitting error at any cost. */
+#define SPLIT_COST_TEXT \
+    " {cost_alpha:%.1f} ns per candidate, {cost_beta:%.1f} ns per normal variate (least " \
+    "squares over the time-step rows); relative error 1e-02: Euler h = {he0:%.3g} ({ce0:%.0f} " \
+    "CPU s), Strang h = {hs0:%.3g} ({cs0:%.0f} CPU s), jump {jump_cpu:%.0f} CPU s; relative " \
+    "error 1e-03: Euler h = {he1:%.3g} ({ce1:%.0f} CPU s), Strang h = {hs1:%.3g} ({cs1:%.0f} " \
+    "CPU s), jump {jump_cpu:%.0f} CPU s; relative error 1e-04: Euler h = {he2:%.3g} ({ce2:%.0f} " \
+    "CPU s), Strang h = {hs2:%.3g} ({cs2:%.0f} CPU s), jump {jump_cpu:%.0f} CPU s"
+
+static void split_cost_values(vfy_case_run *run, const split_row *rows, size_t levels)
+{
+    static const double targets[] = {1e-2, 1e-3, 1e-4};
+    const split_cost model = split_cost_fit(rows, 2 * levels);
+    const sim_scene *s = &run->rows[run->nrows - 1].solver;
+    const double initial = 3.0 * (double)s->particles.n * (double)s->particles.ensembles;
+    const double T_jump = vfy_values_get(&run->rows[0].values, "T");
+    vfy_values *v = &run->values;
+    vfy_values_set(v, "cost_alpha", 1e9 * model.alpha);
+    vfy_values_set(v, "cost_beta", 1e9 * model.beta);
+    vfy_values_set(v, "jump_cpu", vfy_values_get(&run->rows[0].values, "cpu_s"));
+    for (size_t i = 0; i < 3; i++) {
+        const double eps = targets[i] * T_jump;
+        const double he = split_step_for(rows, levels, 1.0, eps);
+        const double hs = split_step_for(rows + levels, levels, 2.0, eps);
+        char name[8];
+        const double cells[4] = {he, split_cost_at(&model, rows, levels, he, initial), hs,
+                                 split_cost_at(&model, rows + levels, levels, hs, initial)};
+        for (int c = 0; c < 4; c++) {
+            snprintf(name, sizeof name, "%s%zu", (const char *[]){"he", "ce", "hs", "cs"}[c], i);
+            vfy_values_set(v, name, cells[c]);
         }
     }
-    const size_t M = solver.outputs;
-    const double h0 = solver.dt;
-    double *Tj = malloc(M * sizeof *Tj), *Tj_ci = malloc(M * sizeof *Tj_ci);
-    double *Tt = malloc(M * sizeof *Tt), *Tt_ci = malloc(M * sizeof *Tt_ci);
-    split_row jump = {0}, rows[2 * SPLIT_LEVELS_MAX];
-    memset(rows, 0, sizeof rows);
-    static const char *const cols[] = {
-        "scheme", "h", "T", "T_ci", "dT", "dT_ci", "CF_T", "dTmax_t", "dTmax_noise", "a2",
-        "a2_ci", "da2", "da2_ci", "CF_a2", "cpu_s", "wall_s", "candidates", "collisions",
-        "normals", "ns_per_collision"};
-    vfy_table table;
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    if (!Tj || !Tj_ci || !Tt || !Tt_ci) {
+}
+
+/* After the rows: how many halvings of T each splitting could judge, the
+ * cost of a given accuracy, the notes' values and the figure. */
+static sim_status split_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    const size_t levels = (run->nrows - 1) / 2;
+    split_row *rows = calloc(2 * levels + 1, sizeof *rows);
+    if (rows == NULL) {
         snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-        goto done;
+        return SIM_ENOMEM;
     }
-
-    char label[128], name[160];
-    sim_scene s = scene;
-    s.scheme = SIM_SCHEME_JUMP;
-    s.splitting = SIM_SPLIT_EULER;
-    snprintf(label, sizeof label, "%s jump", c->name);
-    if ((status = split_run(&s, o, label, &jump, Tj, Tj_ci, msg, msglen)) != SIM_OK)
-        goto done;
-    vfy_check_count(r, vfy_name(name, sizeof name, "%s jump majorant violations", c->name),
-                    jump.counts.violations, 0);
-    split_table_row(&table, &jump, 1, 0, NAN, NAN);   /* rows so far, CF at the end */
-    if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
-        goto done;
-
-    for (size_t sp = 0; sp < 2 && status == SIM_OK; sp++) {
-        for (size_t k = 0; k < levels && status == SIM_OK; k++) {
-            split_row *row = &rows[sp * levels + k];
-            s = solver;
-            s.splitting = sp ? SIM_SPLIT_STRANG : SIM_SPLIT_EULER;
-            s.dt = h0 / (double)(1u << k);
-            row->split = s.splitting;
-            row->h = s.dt;
-            snprintf(label, sizeof label, "%s %s h=%g", c->name, sp ? "strang" : "euler", s.dt);
-            if ((status = split_run(&s, o, label, row, Tt, Tt_ci, msg, msglen)) != SIM_OK)
-                break;
-            row->dT = row->T - jump.T;
-            row->dT_ci = hypot(row->T_ci, jump.T_ci);
-            row->da2 = row->a2 - jump.a2;
-            row->da2_ci = hypot(row->a2_ci, jump.a2_ci);
-            for (size_t m = 1; m < M; m++) {
-                row->dTmax = fmax(row->dTmax, fabs(Tt[m] - Tj[m]));
-                row->dTmax_noise = fmax(row->dTmax_noise, hypot(Tt_ci[m], Tj_ci[m]));
-            }
-            vfy_check_count(r, vfy_name(name, sizeof name, "%s %s majorant violations",
-                                        c->name, label + strlen(c->name) + 1),
-                            row->counts.violations, 0);
-            split_table_row(&table, row, 0, (int)sp, NAN, NAN);
-            status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
-        }
+    size_t judged[2] = {0, 0};
+    for (size_t k = 0; k < 2 * levels; k++) {
+        const vfy_row *q = &run->rows[1 + k];
+        rows[k] = (split_row){vfy_values_get(&q->values, "h"), vfy_values_get(&q->values, "dT"),
+                              vfy_values_get(&q->values, "dT_ci"),
+                              vfy_values_get(&q->values, "cpu_s"), q->res.counts};
+        judged[k >= levels] += !isnan(vfy_values_get(&q->values, "h_prev"))
+                               && clean_halving(q, "dT_abs", "dT_ci");
     }
-    if (status != SIM_OK)
-        goto done;
-
-    double cf[2][SPLIT_LEVELS_MAX], cf_a2[2][SPLIT_LEVELS_MAX];
-    size_t judged[2];
-    judged[0] = split_judge(r, c->name, "euler", rows, levels, jump.a2, EULER_CF_LO,
-                            EULER_CF_HI, cf[0], cf_a2[0]);
-    judged[1] = split_judge(r, c->name, "strang", rows + levels, levels, jump.a2, STRANG_CF_LO,
-                            STRANG_CF_HI, cf[1], cf_a2[1]);
     for (int sp = 0; sp < 2; sp++) {
-        vfy_name(name, sizeof name, "%s %s halvings judged (difference above %g x its "
-                 "half-width)", c->name, sp ? "strang" : "euler", CLEAN_RATIO);
-        if (o->size == VFY_PAPER)
-            vfy_check_range(r, name, (double)judged[sp], MIN_HALVINGS, INFINITY);
+        char name[160];
+        snprintf(name, sizeof name, "%s %s halvings judged (difference above %g x its "
+                 "half-width)", run->c->name, sp ? "strang" : "euler", VFY_TOL_SPLIT_CLEAN_RATIO);
+        if (run->o->size == VFY_PAPER)
+            vfy_check_range(r, name, (double)judged[sp], VFY_TOL_SPLIT_MIN_HALVINGS, INFINITY);
         else
             vfy_skip(r, name, "quick sizes: the statistical error hides the small steps");
     }
-
-    /* The table: the jump row, then each splitting's rows. */
-    vfy_table_free(&table);
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    split_table_row(&table, &jump, 1, 0, NAN, NAN);
-    for (size_t k = 0; k < 2 * levels; k++) {
-        const int sp = k >= levels, first = k % levels == 0;   /* no CF at the first step */
-        split_table_row(&table, &rows[k], 0, sp, first ? NAN : cf[sp][k % levels],
-                        first ? NAN : cf_a2[sp][k % levels]);
+    split_cost_values(run, rows, levels);
+    const sim_scene *s = &run->rows[run->nrows - 1].solver;
+    const double v[] = {(double)s->particles.n, (double)s->particles.ensembles, s->steady.from,
+                        s->t_end, VFY_TOL_SPLIT_EULER_CF_LO, VFY_TOL_SPLIT_EULER_CF_HI,
+                        VFY_TOL_SPLIT_STRANG_CF_LO, VFY_TOL_SPLIT_STRANG_CF_HI,
+                        VFY_TOL_SPLIT_CLEAN_RATIO};
+    static const char *const names[] = {"n", "N", "steady_from", "t_end", "euler_lo",
+                                        "euler_hi", "strang_lo", "strang_hi", "clean_ratio"};
+    for (size_t i = 0; i < sizeof names / sizeof *names; i++)
+        vfy_values_set(&run->values, names[i], v[i]);
+    if (run->o->progress) {
+        char cost[1400];
+        fprintf(run->o->progress, "   %s: cost of a splitting error of T̄ at N = %zu, n = %zu:%s\n",
+                run->c->name, s->particles.ensembles, s->particles.n,
+                vfy_expand(cost, sizeof cost, SPLIT_COST_TEXT, run, NULL));
     }
-
-    /* What a given accuracy costs: for a target error eps of T̄ (relative to
-     * T̄), the step each splitting needs (from its error at its smallest
-     * resolved step and its order) and the CPU time at that step (cpu = a +
-     * b/h fitted to its rows), beside the jump scheme, which has no
-     * splitting error at any cost. */
-    char cost[1400] = "", line[300];
-    static const double targets[] = {1e-2, 1e-3, 1e-4};
-    const split_cost model = split_cost_fit(rows, 2 * levels);
-    const double initial = 3.0 * (double)solver.particles.n * (double)solver.particles.ensembles;
-    snprintf(cost, sizeof cost, " %.1f ns per candidate, %.1f ns per normal variate (least "
-             "squares over the time-step rows);", 1e9 * model.alpha, 1e9 * model.beta);
-    for (size_t i = 0; i < 3; i++) {
-        const double eps = targets[i] * jump.T;
-        const double he = split_step_for(rows, levels, 1.0, eps);
-        const double hs = split_step_for(rows + levels, levels, 2.0, eps);
-        snprintf(line, sizeof line, "%s relative error %.0e: Euler h = %.3g (%.0f CPU s), "
-                 "Strang h = %.3g (%.0f CPU s), jump %.0f CPU s", i ? ";" : "", targets[i], he,
-                 split_cost_at(&model, rows, levels, he, initial), hs,
-                 split_cost_at(&model, rows + levels, levels, hs, initial), jump.cpu);
-        strncat(cost, line, sizeof cost - strlen(cost) - 1);
-    }
-    if (o->progress)
-        fprintf(o->progress, "   %s: cost of a splitting error of T̄ at N = %zu, n = %zu:%s\n",
-                c->name, solver.particles.ensembles, solver.particles.n, cost);
-
-    double wall = jump.wall;
-    for (size_t k = 0; k < 2 * levels; k++)
-        wall += rows[k].wall;
-    char comment[600], notes[4000], title[200];
-    vfy_run_comment(&solver, comment, sizeof comment);
-    snprintf(title, sizeof title, "%s: splitting error of the time-step scheme against the "
-             "exact jump scheme, paper A Ex 5's gas (%s sizes)", c->name,
-             o->size == VFY_PAPER ? "paper" : "quick");
-    snprintf(notes, sizeof notes,
-             "%s; n = %zu, N = %zu in every row.\n\nT, a2: each ensemble's time average over "
-             "the output times t in [%g, %g] (steady state), T_ci, a2_ci = 3.2 x the standard "
-             "error over the N ensembles. dT, da2 = time-step row minus the jump row, with "
-             "the half-width of a difference of independent runs, sqrt(c1^2 + c2^2). CF = "
-             "|d| at 2h / |d| at h, judged (Euler in [%g, %g], Strang in [%g, %g]) only "
-             "where both differences exceed %g times their half-widths, and for a2 only "
-             "where its difference at 2h is at most a quarter of a2 itself (at larger h "
-             "the Gaussian kicks of one step make f nearly Maxwellian and the difference "
-             "saturates at about -a2). dTmax_t = max over "
-             "the output times of |T(t) - T_jump(t)| (the transient included), "
-             "dTmax_noise its largest half-width. Strang merges the half flights of "
-             "adjacent steps (exact for white noise), so it costs what Euler costs. "
-             "ns_per_collision = CPU time per accepted collision, everything included "
-             "(the time-step rows pay about 4 candidates per jump-scheme candidate for the "
-             "contact rule, plus one Gaussian kick per particle and step; normals = "
-             "standard normal variates drawn).\n\nCost of a splitting error of T̄ at "
-             "these n and N (the step from each splitting's order and its smallest "
-             "resolved difference; the CPU time from a cost model fitted to the rows, "
-             "with the candidates of the smallest step and the flights scaled to the "
-             "step):%s. "
-             "Total wall time %.1f s.",
-             comment, solver.particles.n, solver.particles.ensembles, solver.steady.from,
-             solver.t_end, EULER_CF_LO, EULER_CF_HI, STRANG_CF_LO, STRANG_CF_HI, CLEAN_RATIO,
-             cost, wall);
-    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
-                                        msglen)) != SIM_OK)
-        goto done;
-    if (split_figure(o, c->name, comment, rows, levels) != 0)
-        status = vfy_io_error(c->name, msg, msglen);
-done:
-    vfy_table_free(&table);
-    free(Tj);
-    free(Tj_ci);
-    free(Tt);
-    free(Tt_ci);
+    sim_status status = SIM_OK;
+    if (split_figure(run->o, run->c->name, run->comment, rows, levels) != 0)
+        status = vfy_io_error(run->c->name, msg, msglen);
+    free(rows);
     return status;
 }
+
+#define SPLIT_ROW(SCHEME, H)                                                              \
+    SCHEME " h=" H ": $scheme=" SCHEME "; $h=" H "; scene.splitting=" SCHEME "; scene.dt=" H
+static const char *const paper_rows[] = {
+    "jump: $scheme=jump",       SPLIT_ROW("euler", "1.6"),  SPLIT_ROW("euler", "0.8"),
+    SPLIT_ROW("euler", "0.4"),  SPLIT_ROW("euler", "0.2"),  SPLIT_ROW("euler", "0.1"),
+    SPLIT_ROW("strang", "1.6"), SPLIT_ROW("strang", "0.8"), SPLIT_ROW("strang", "0.4"),
+    SPLIT_ROW("strang", "0.2"), SPLIT_ROW("strang", "0.1"), NULL};
+static const char *const quick_rows[] = {
+    "jump: $scheme=jump",       SPLIT_ROW("euler", "1.6"),  SPLIT_ROW("euler", "0.8"),
+    SPLIT_ROW("euler", "0.4"),  SPLIT_ROW("strang", "1.6"), SPLIT_ROW("strang", "0.8"),
+    SPLIT_ROW("strang", "0.4"), NULL};
+
+const vfy_case_desc vfy_split_ex5 = {
+    .paper_rows = {.rows = paper_rows},
+    /* CI: small, so the small steps are skipped as noise */
+    .quick_rows = {.rows = quick_rows,
+                   .sets = "particles.n=200;particles.ensembles=60;scene.t_end=16;"
+                           "scene.outputs=11"},
+    .label = "{case} {label}", .adjust = split_adjust, .metrics = split_metrics,
+    .checks = split_checks, .columns = split_columns,
+    .row_progress = "{case} {label}: T = {T:%.6f} ± {T_ci:%.6f}, a2 = {a2:%.5f} ± {a2_ci:%.5f} "
+                    "({wall_s:%.1f} s)",
+    .after_rows = split_after,
+    .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "
+             "paper A Ex 5's gas ({size} sizes)",
+    .notes = "{comment}; n = {n}, N = {N} in every row.\n\nT, a2: each ensemble's time average "
+             "over the output times t in [{steady_from:%g}, {t_end:%g}] (steady state), T_ci, "
+             "a2_ci = 3.2 x the standard error over the N ensembles. dT, da2 = time-step row "
+             "minus the jump row, with the half-width of a difference of independent runs, "
+             "sqrt(c1^2 + c2^2). CF = |d| at 2h / |d| at h, judged (Euler in [{euler_lo:%g}, "
+             "{euler_hi:%g}], Strang in [{strang_lo:%g}, {strang_hi:%g}]) only where both "
+             "differences exceed {clean_ratio:%g} times their half-widths, and for a2 only where "
+             "its difference at 2h is at most a quarter of a2 itself (at larger h the Gaussian "
+             "kicks of one step make f nearly Maxwellian and the difference saturates at about "
+             "-a2). dTmax_t = max over the output times of |T(t) - T_jump(t)| (the transient "
+             "included), dTmax_noise its largest half-width. Strang merges the half flights of "
+             "adjacent steps (exact for white noise), so it costs what Euler costs. "
+             "ns_per_collision = CPU time per accepted collision, everything included (the "
+             "time-step rows pay about 4 candidates per jump-scheme candidate for the contact "
+             "rule, plus one Gaussian kick per particle and step; normals = standard normal "
+             "variates drawn).\n\nCost of a splitting error of T̄ at these n and N (the step "
+             "from each splitting's order and its smallest resolved difference; the CPU time "
+             "from a cost model fitted to the rows, with the candidates of the smallest step "
+             "and the flights scaled to the step):" SPLIT_COST_TEXT ". Total wall time "
+             "{wall_total:%.1f} s."};

@@ -27,7 +27,7 @@ sim_status vfy_case_ms_tails(const vfy_case *, const vfy_options *, vfy_report *
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
-sim_status vfy_case_split(const vfy_case *, const vfy_options *, vfy_report *, char *, size_t);
+extern const vfy_case_desc vfy_split_ex5;
 extern const struct ms_case_data vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
     vfy_ms_table1, vfy_ms_tails;
 /* case_cost.c (SPEC §10: accuracy against CPU cost) */
@@ -83,7 +83,7 @@ static const vfy_case cases[] = {
     {"ms-tails", "ms", "paper C Figs. 3, 7: high-energy tails G(c), fitted A vs theory", 0,
      vfy_case_ms_tails, &vfy_ms_tails, NULL},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
-     " Euler and Strang", 1, vfy_case_split, NULL, NULL},
+     " Euler and Strang", 1, vfy_run_described, NULL, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
      " n x N, paper A Ex 3", 1, vfy_case_cost_grid, &vfy_cost_grw_ex3, NULL},
     {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"

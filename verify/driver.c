@@ -128,7 +128,7 @@ static const char *run_string(const vfy_case_run *run, const char *name)
 
 static const char *row_string(const vfy_row *row, const char *name)
 {
-    return row != NULL && strcmp(name, "label") == 0 ? row->label : NULL;
+    return row != NULL && strcmp(name, "label") == 0 ? row->label : vfy_row_text(row, name);
 }
 
 static double lookup(const vfy_case_run *run, const vfy_row *row, const char *name)
@@ -343,10 +343,38 @@ static const char *sweep_name(const vfy_sweep *s, size_t k)
 
 /* ------------------------------------------------------------ one row */
 
+/* A "$NAME=VALUE" setting (n characters at p): a value of the row, a number
+ * if VALUE is one, else a text. */
+static void row_setting(vfy_row *row, const char *p, size_t n)
+{
+    char name[24], value[32], *end;
+    size_t eq = strcspn(p, "=");
+    if (eq >= n)
+        return;
+    snprintf(name, sizeof name, "%.*s", (int)(eq - 1), p + 1);
+    snprintf(value, sizeof value, "%.*s", (int)(n - eq - 1), p + eq + 1);
+    double v = strtod(value, &end);
+    if (end != value && *end == '\0')
+        vfy_values_set(&row->values, name, v);
+    else if (row->ntexts < 4) {
+        snprintf(row->text_names[row->ntexts], sizeof row->text_names[0], "%s", name);
+        snprintf(row->texts[row->ntexts++], sizeof row->texts[0], "%s", value);
+    }
+}
+
+const char *vfy_row_text(const vfy_row *row, const char *name)
+{
+    for (size_t i = 0; row != NULL && i < row->ntexts; i++)
+        if (strcmp(row->text_names[i], name) == 0)
+            return row->texts[i];
+    return NULL;
+}
+
 /* Up to `max` settings of "SET;SET;..." into storage and sets; a "scene=STEM"
- * setting goes to stem instead.  Returns the new count. */
+ * setting goes to stem instead, a "$NAME=VALUE" one to the row.  Returns the
+ * new count. */
 static size_t split_sets(const char *list, char (*storage)[160], const char **sets,
-                         size_t count, size_t max, char *stem, size_t stemlen)
+                         size_t count, size_t max, char *stem, size_t stemlen, vfy_row *row)
 {
     for (const char *p = list; p && *p && count < max;) {
         while (isspace((unsigned char)*p))
@@ -354,6 +382,8 @@ static size_t split_sets(const char *list, char (*storage)[160], const char **se
         size_t n = strcspn(p, ";");
         if (n > 0 && strncmp(p, "scene=", 6) == 0)
             snprintf(stem, stemlen, "%.*s", (int)(n - 6), p + 6);
+        else if (n > 0 && p[0] == '$')
+            row_setting(row, p, n);
         else if (n > 0) {
             snprintf(storage[count], sizeof storage[count], "%.*s", (int)n, p);
             sets[count] = storage[count];
@@ -373,13 +403,13 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     char storage[MAX][160], stem[128];
     const char *sets[MAX];
     snprintf(stem, sizeof stem, "%s", run->d->scene ? run->d->scene : run->c->name);
-    size_t nsets = split_sets(s->sets, storage, sets, 0, MAX, stem, sizeof stem);
+    size_t nsets = split_sets(s->sets, storage, sets, 0, MAX, stem, sizeof stem, row);
     if (s->rows != NULL) {
         const char *text = s->rows[row->index], *colon = strchr(text, ':');
         size_t n = colon ? (size_t)(colon - text) : 0;
         snprintf(row->label, sizeof row->label, "%.*s", (int)n, text);
         nsets = split_sets(colon ? colon + 1 : text, storage, sets, nsets, MAX, stem,
-                           sizeof stem);
+                           sizeof stem, row);
     }
     for (size_t k = 0; k < VFY_SWEEP_KEYS && s->keys[k] && nsets < MAX; k++) {
         char value[64];
@@ -389,16 +419,18 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
         nsets++;
         vfy_values_set(&row->values, sweep_name(s, k), strtod(value, NULL));
     }
-    nsets = split_sets(extra, storage, sets, nsets, MAX, stem, sizeof stem);
+    nsets = split_sets(extra, storage, sets, nsets, MAX, stem, sizeof stem, row);
     sim_status status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene,
                                             &row->solver, msg, msglen);
     char derived[512];
     if (status == SIM_OK && run->d->derive
         && run->d->derive(&row->scene, derived, sizeof derived)[0]) {
-        nsets = split_sets(derived, storage, sets, nsets, MAX, stem, sizeof stem);
+        nsets = split_sets(derived, storage, sets, nsets, MAX, stem, sizeof stem, row);
         status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene, &row->solver, msg,
                                      msglen);
     }
+    if (status == SIM_OK && run->d->adjust)
+        status = run->d->adjust(row, &row->solver, msg, msglen);
     return status;
 }
 
@@ -407,13 +439,13 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
 static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const char *suffix)
 {
     static const char *const names[] = {"N", "M", "cpu_s", "wall_s", "events", "ns_per_event",
-                                        "collisions", "background", "violations"};
+                                        "collisions", "background", "violations", "normals"};
     double events = (double)res->counts.candidates;
     const double v[] = {(double)res->ensembles, (double)res->outputs, res->cpu_seconds,
                         res->wall_seconds, events,
                         events > 0 ? 1e9 * res->cpu_seconds / events : 0.0,
                         (double)res->counts.collisions, (double)res->counts.background,
-                        (double)res->counts.violations};
+                        (double)res->counts.violations, (double)res->counts.normals};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
         char name[48];
         snprintf(name, sizeof name, "%s%s", names[k], suffix);
@@ -484,8 +516,14 @@ static int row_cells(vfy_case_run *run, const vfy_row *row)
 {
     int rc = 0;
     for (const vfy_column *col = run->d->columns; col->header; col++) {
-        double v = lookup(run, row, col->value ? col->value : col->header);
-        rc |= vfy_table_number(&run->table, !isnan(v), col->format, v);
+        const char *name = col->value ? col->value : col->header;
+        if (strcmp(col->format, "%s") == 0) {
+            const char *text = vfy_row_text(row, name);
+            rc |= vfy_table_cell(&run->table, "%s", text ? text : "");
+        } else {
+            double v = lookup(run, row, name);
+            rc |= vfy_table_number(&run->table, !isnan(v), col->format, v);
+        }
     }
     return rc;
 }

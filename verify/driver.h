@@ -15,7 +15,7 @@
  *     name, the value references it names (references.h), the result's
  *     steady averages by name with _ci ("a2", "a2_ci"), paper columns (a value printed by the paper for this row), the
  *     metrics and the values checks define, and the cost values cpu_s, wall_s,
- *     events, ns_per_event, collisions, background, violations;
+ *     events, ns_per_event, collisions, background, violations, normals;
  *   - the case's: wall_total (all rows), outputs, rows, and what hooks set.
  * Series (one value per output time) are the result's observables by their
  * column names ("T", "T_raw", "ux", ...) and the scene's references by name
@@ -64,6 +64,8 @@ typedef struct vfy_row {
     const vfy_case_run *run;    /* the run it belongs to */
     size_t index;
     char label[96];             /* {label}: an explicit row's label, or "" */
+    size_t ntexts;              /* text values a sweep gave ("$scheme=euler") */
+    char text_names[4][24], texts[4][32];
     sim_scene scene;            /* what the references describe */
     sim_scene solver;           /* what was simulated (--solver-set added) */
     vfy_refs refs;              /* the scene's references (empty if the case names none) */
@@ -81,6 +83,9 @@ int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *c
 /* The result of the variant named `variant` (NULL or "": the first). */
 const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row *row,
                                           const char *variant);
+
+/* The row's text value `name` ("$name=..." in its sweep), or NULL. */
+const char *vfy_row_text(const vfy_row *row, const char *name);
 
 /* The row before this one, or NULL for the first. */
 const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
@@ -129,7 +134,8 @@ struct vfy_check_spec {
 };
 
 /* A table column: header, the value it prints (NULL: the header's name) and
- * its printf format for a double; a NaN or missing value is an empty cell. */
+ * its printf format for a double; a NaN or missing value is an empty cell.
+ * Format "%s" prints the row's text value of that name. */
 typedef struct vfy_column {
     const char *header, *value, *format;
 } vfy_column;
@@ -157,7 +163,9 @@ typedef struct vfy_paper_column {
  * ("particles.ensembles=2000;scene.t_end=4").  Instead of keys, `rows` may
  * list the rows explicitly, each "LABEL: SET;SET;..." ({label} in
  * templates); in sets and rows, "scene=STEM" takes the row from scene file
- * STEM instead of the description's. */
+ * STEM instead of the description's, and "$NAME=VALUE" gives the row a value
+ * NAME that is no scene key (a number, or else a text for templates and
+ * "%s" columns, at most 4 a row). */
 #define VFY_SWEEP_KEYS 4
 typedef struct vfy_sweep {
     const char *keys[VFY_SWEEP_KEYS];
@@ -195,6 +203,12 @@ typedef struct vfy_figure_spec {
  * fixed.  Returns buf ("" for none). */
 typedef const char *(*vfy_derive_fn)(const sim_scene *scene, char *buf, size_t len);
 
+/* Change a row's solver scene after it was loaded, for what no setting can
+ * say (e.g. simulate the reference scene with another scheme).  Returns
+ * SIM_OK or an error with msg. */
+typedef sim_status (*vfy_adjust_fn)(const vfy_row *row, sim_scene *solver, char *msg,
+                                    size_t msglen);
+
 /* After the rows: cross-row analysis.  May record checks, set case values
  * (run->values) for the notes, and write its own files.  Returns SIM_OK or
  * an error with msg. */
@@ -214,6 +228,7 @@ typedef struct vfy_case_desc {
                                            values as "cpu_s@NAME" ... */
     const char *row_progress;           /* printed after each row (a template), or NULL */
     vfy_derive_fn derive;               /* derived settings, or NULL */
+    vfy_adjust_fn adjust;               /* a row's solver scene changed, or NULL */
     const char *const *values;          /* value references (references.h) every row
                                            takes at its scene (NULL-terminated) */
     int no_simulation;                  /* rows evaluate references only */

@@ -61,4 +61,22 @@
  * (half-width 0.0004) the closure's value fails as the kinetic one. */
 #define VFY_TOL_BRS_PRINTED_DIGITS 3
 
+/* ---------------------------------------------------------- splitting (split-ex5) */
+
+/* A difference time-step minus jump counts only above 3 times its
+ * half-width: a CF of two noise-led differences is meaningless. */
+#define VFY_TOL_SPLIT_CLEAN_RATIO 3.0
+/* CF of the splitting error when h halves: 2 for Euler (first order), 4 for
+ * Strang (second); the bands hold the measured 2.11-2.27 (Euler) and
+ * 3.75-4.58 (Strang) at quick sizes and refuse the other order. */
+#define VFY_TOL_SPLIT_EULER_CF_LO 1.6
+#define VFY_TOL_SPLIT_EULER_CF_HI 2.5
+#define VFY_TOL_SPLIT_STRANG_CF_LO 3.2
+#define VFY_TOL_SPLIT_STRANG_CF_HI 5.0
+/* At paper sizes each splitting must resolve at least 3 halvings. */
+#define VFY_TOL_SPLIT_MIN_HALVINGS 3
+/* a2's CF is judged only where |da2| <= 0.25 |a2| at the larger step (beyond,
+ * one step's Gaussian kicks make f nearly Maxwellian and da2 saturates). */
+#define VFY_TOL_SPLIT_A2_ASYMPTOTIC 0.25
+
 #endif
