@@ -6,6 +6,7 @@
 #include "test_verify_util.h"
 
 #include <gsl/gsl_cdf.h>
+#include <unistd.h>
 
 #include "driver.h"
 #include "metrics.h"
@@ -47,6 +48,7 @@ static void test_pure_metrics(void **state)
     const double ux[2] = {0.0, 3.0}, uy[2] = {1.0, 4.0}, uz[2] = {0.0, 0.0};
     assert_close(vfy_max_norm3(ux, uy, uz, 2), 5.0, 1e-15, 0);
     assert_close(vfy_fictitious_fraction(25.0, 100.0), 0.75, 1e-15, 0);
+    assert_close(vfy_fictitious_fraction(0.0, 0.0), 0.0, 0, 0);   /* no events */
     /* the first point (t = 0) is not counted: its variances are equal or 0 */
     const double va[4] = {1.0, 2.0, 3.0, 4.0}, vb[4] = {0.0, 1.0, 1.0, 4.0};
     double mean_ratio, min_ratio;
@@ -274,6 +276,61 @@ static void test_end_to_end(void **state)
     assert_non_null(strstr(table, "\n16,300,"));
 }
 
+/* Explicit rows with text values, two variants of each row, an adjust hook
+ * and a figure with a suffix. */
+static sim_status rows_adjust(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
+{
+    (void)msg;
+    (void)msglen;
+    if (strcmp(vfy_row_text(row, "kind"), "large") == 0)
+        solver->particles.ensembles = 50;
+    return SIM_OK;
+}
+static const char *const rows_rows[] = {"small: $kind=tiny; $h=0.5; particles.n=8",
+                                        "big: $kind=large; particles.n=32", NULL};
+static const char *const rows_variants[] = {"a: scene.seed=1", "b: scene.seed=2", NULL};
+static const vfy_check_spec rows_checks[] = {
+    {.name = "{case} {label} {kind} b", .rule = vfy_rule_zscore, .value = "T_raw@b",
+     .expected = "T_raw_finite_n", .from = 1, .tol = 4.5, .out = "z_b"},
+    {.name = NULL}};
+static const vfy_column rows_columns[] = {
+    {"kind", NULL, "%s"}, {"h", NULL, "%g"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"},
+    {"N_b", "N@b", "%.0f"}, {"absent", NULL, "%s"}, {NULL, NULL, NULL}};
+static const vfy_case_desc rows_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {.rows = rows_rows, .sets = "particles.ensembles=200;scene.outputs=11"},
+    .needs = e2e_needs, .label = "{case} {label}", .variants = rows_variants,
+    .adjust = rows_adjust, .checks = rows_checks, .columns = rows_columns,
+    .figures = {{VFY_FIGURE_CURVES, "-x", "T_raw@b", {"T_exact"}, 0.0, 0, 0}},
+    .title = "{case}", .notes = "notes"};
+static const vfy_case rows_case = {"driver-rows", "test", "", 0, vfy_run_described, NULL,
+                                   &rows_desc};
+
+static void test_rows_variants_adjust(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], path[600], table[2048];
+    assert_int_equal(vfy_run_described(&rows_case, &o, &r, msg, sizeof msg), SIM_OK);
+    assert_int_equal(r.count, 2);
+    assert_int_equal(r.failed, 0);
+    assert_string_equal(r.checks[0].name, "driver-rows small tiny b");
+    vfy_report_free(&r);
+    snprintf(path, sizeof path, "%s/driver-rows.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t got = fread(table, 1, sizeof table - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    /* texts print as text, a missing one and the big row's h as empty cells;
+     * the adjust hook gave the big row's solver 50 ensembles, both variants */
+    assert_non_null(strstr(table, "\nkind,h,n,N,N_b,absent\ntiny,0.5,8,200,200,\nlarge,,32,50,50,\n"));
+    snprintf(path, sizeof path, "%s/driver-rows-x-curves.csv", out_dir);
+    assert_int_equal(access(path, R_OK), 0);
+}
+
 /* The registry names every series vfy_scene_references gives a shipped
  * scene (so the two cannot drift apart), and value references evaluate at
  * a scene's restitution. */
@@ -318,7 +375,7 @@ int main(void)
         cmocka_unit_test(test_extrapolation), cmocka_unit_test(test_student_t),
         cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
-        cmocka_unit_test(test_reference_registry),
+        cmocka_unit_test(test_reference_registry), cmocka_unit_test(test_rows_variants_adjust),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }
