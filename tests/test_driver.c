@@ -217,7 +217,7 @@ static const vfy_column e2e_columns[] = {
     {NULL, NULL, NULL}};
 static const vfy_case_desc e2e_desc = {
     .scene = "grw-ex3",
-    .quick_rows = {{"particles.n"}, {"16 64"},
+    .quick_rows = {.keys = {"particles.n"}, .values = {"16 64"},
                    .sets = "particles.ensembles=400;scene.outputs=21"},
     .needs = e2e_needs, .needs_why = "Maxwell molecules", .metrics = e2e_metrics,
     .checks = e2e_checks, .columns = e2e_columns, .title = "{case}",

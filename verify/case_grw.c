@@ -56,8 +56,10 @@ static const vfy_column grw_columns[] = {
     VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
 #define GRW_TABLE(LABEL, PAPER)                                                         \
     {.paper = LABEL,                                                                  \
-     .paper_rows = {{"particles.n"}, {"64 256 1024 4096 16384"}},                     \
-     .quick_rows = {{"particles.n"}, {"64 256 1024"}, .sets = "particles.ensembles=2000"}, \
+     .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096 16384"}},   \
+     .quick_rows = {.keys = {"particles.n"},                                          \
+                    .values = {"64 256 1024"},                                        \
+                    .sets = "particles.ensembles=2000"},                              \
      .needs = grw_needs, .needs_why = VFY_NEEDS_MAXWELL, .paper_columns = PAPER,      \
      .metrics = grw_metrics, .checks = grw_checks, .columns = grw_columns,           \
      .figures = {{VFY_FIGURE_CURVES, "", "T_raw", {"T_exact"}, 2.0, 1, 0}},              \
@@ -193,8 +195,10 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
 }
 
 const vfy_case_desc vfy_grw_ex5 = {
-    .paper_rows = {{"particles.n"}, {"64 256 1024 4096"}},
-    .quick_rows = {{"particles.n"}, {"64 256 1024"}, .sets = "particles.ensembles=300"},
+    .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096"}},
+    .quick_rows = {.keys = {"particles.n"},
+                   .values = {"64 256 1024"},
+                   .sets = "particles.ensembles=300"},
     .metrics = ex5_metrics, .checks = ex5_checks, .columns = ex5_columns,
     .figures = {{VFY_FIGURE_CURVES, "", "T", {"T_maxwell_closure", "T_sonine_closure"}, 0.0, 0,
                  1}},

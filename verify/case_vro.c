@@ -70,8 +70,10 @@ static sim_status vro_smallest(vfy_case_run *run, vfy_report *r, char *msg, size
 
 const vfy_case_desc vfy_vro_grw_ex3 = {
     .scene = "grw-ex3",
-    .paper_rows = {{"particles.n"}, {"64 256 1024"}},
-    .quick_rows = {{"particles.n"}, {"64 256"}, .sets = "particles.ensembles=2000"},
+    .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024"}},
+    .quick_rows = {.keys = {"particles.n"},
+                   .values = {"64 256"},
+                   .sets = "particles.ensembles=2000"},
     .needs = vro_needs, .needs_why = VFY_NEEDS_MAXWELL, .variants = vro_variants,
     .metrics = vro_metrics, .checks = vro_checks, .columns = vro_columns,
     .row_progress = "{case} n={n}: variance reduction T_raw {var_ratio_T_raw:%.3f} (min "
