@@ -156,6 +156,75 @@ static void test_templates(void **state)
     assert_string_equal(buf, "12.3 s, 12.345, nan, {x}");
     vfy_expand(buf, 8, "{case} and more", &run, NULL);   /* truncated, terminated */
     assert_string_equal(buf, "test-ca");
+    /* text at one size only (quick here); a hook's case text */
+    vfy_expand(buf, sizeof buf, "a{at_quick: b (x: 1)}{at_paper: c} {sizes}.", &run, NULL);
+    assert_string_equal(buf, "a b (x: 1) nan.");
+    assert_int_equal(vfy_run_set_text(&run, "sizes", "n = 4"), 0);
+    assert_int_equal(vfy_run_set_text(&run, "sizes", "n = 5"), 0);   /* replaced */
+    assert_int_equal(run.ntexts, 1);
+    vfy_expand(buf, sizeof buf, "{sizes}", &run, NULL);
+    assert_string_equal(buf, "n = 5");
+    const vfy_options paper = {.size = VFY_PAPER};
+    run.o = &paper;
+    vfy_expand(buf, sizeof buf, "a{at_quick: b}{at_paper: c}", &run, NULL);
+    assert_string_equal(buf, "a c");
+    free_run(&run);
+}
+
+/* Paper C's tail fit recovers A and K of f = K exp(-A c^1.5) exactly, and
+ * moves with a wrong tail; the arithmetic adapters do what they say. */
+static void test_tail_fit_and_adapters(void **state)
+{
+    (void)state;
+    enum { BINS = 40 };
+    double c[BINS], f[BINS], ci[BINS], A, sd, K;
+    for (size_t k = 0; k < BINS; k++) {
+        c[k] = 0.1 * ((double)k + 0.5);
+        f[k] = 1.3 * exp(-1.99 * pow(c[k], 1.5));
+        ci[k] = 0.1 * f[k];
+    }
+    size_t used = vfy_fit_tail(c, f, ci, BINS, 1.5, 3.0, 3.2, &A, &sd, &K);
+    assert_int_equal(used, 10);   /* c = 3.05 ... 3.95 */
+    assert_close(A, 1.99, 1e-9, 0);
+    assert_close(K, 1.3, 1e-9, 0);
+    f[BINS - 1] *= 10.0;   /* an overpopulated last shell pulls A down */
+    vfy_fit_tail(c, f, ci, BINS, 1.5, 3.0, 3.2, &A, &sd, &K);
+    assert_true(A < 1.9);
+    ci[BINS - 1] = f[BINS - 1];   /* too noisy: left out of the fit */
+    assert_int_equal(vfy_fit_tail(c, f, ci, BINS, 1.5, 3.0, 3.2, &A, &sd, &K), 9);
+    assert_close(A, 1.99, 1e-9, 0);
+    assert_int_equal(vfy_fit_tail(c, f, ci, BINS, 1.5, 3.9, 3.2, &A, &sd, &K), 0);
+    assert_true(isnan(A));   /* fewer than 3 shells */
+
+    vfy_case_run run;
+    vfy_row rows[2];
+    fake_run(&run, rows);
+    vfy_row *row = &rows[1];
+    vfy_values_set(&row->values, "mu2", 2.0);
+    vfy_values_set(&row->values, "mu2_0", 1.5);
+    vfy_values_set(&row->values, "mu2_1", 0.25);
+    vfy_values_set(&row->values, "mu2_ci", 0.05);
+    const vfy_metric ratio = {"r", vfy_metric_sonine_ratio, "mu2", NULL, 0},
+                     ratio_ci = {"r_ci", vfy_metric_sonine_ratio, "mu2", NULL, 1},
+                     sum = {"s", vfy_metric_sum, "mu2", "mu2_ci", 2},
+                     pdiff = {"p", vfy_metric_percent_diff, "mu2", "mu2_0", 0},
+                     pof = {"q", vfy_metric_percent_of, "mu2_ci", "mu2", 0},
+                     max = {"m", vfy_metric_max_of, "mu2_ci", "mu2", 0.003},
+                     absw = {"a", vfy_metric_abs_widened, "mu2_1", "mu2_ci", 0};
+    assert_close(ratio.fn(&run, row, &ratio), 2.0, 1e-15, 0);
+    assert_close(ratio_ci.fn(&run, row, &ratio_ci), 0.2, 1e-15, 0);
+    assert_close(sum.fn(&run, row, &sum), 2.1, 1e-15, 0);
+    assert_close(pdiff.fn(&run, row, &pdiff), 100.0 / 3.0, 1e-12, 0);
+    assert_close(pof.fn(&run, row, &pof), 2.5, 1e-15, 0);
+    assert_close(max.fn(&run, row, &max), 0.05, 0, 0);
+    assert_close(absw.fn(&run, row, &absw), 0.3, 1e-15, 0);   /* quick: widened */
+    vfy_values_set(&row->values, "mu2_1", 0.0);   /* the elastic limit: no ratio */
+    assert_true(isnan(ratio.fn(&run, row, &ratio)));
+    snprintf(row->text_names[0], sizeof row->text_names[0], "relation");
+    snprintf(row->texts[0], sizeof row->texts[0], "mu2");
+    row->ntexts = 1;
+    const vfy_metric named = {"n", vfy_metric_named_by_text, "relation", "_ci", 0};
+    assert_close(named.fn(&run, row, &named), 0.05, 0, 0);
     free_run(&run);
 }
 
@@ -195,7 +264,33 @@ static void test_rules_and_guards(void **state)
     assert_int_equal(at_most.fn(&run, &rows[1], &at_most), VFY_JUDGE);
     vfy_values_set(&rows[1].values, "n", 16384);
     assert_int_equal(at_most.fn(&run, &rows[1], &at_most), VFY_GUARD_SKIP);
-    assert_int_equal(r.failed, 5);
+    /* the absolute rule's tolerance: tol + rtol |expected| + plus + plus_quick */
+    vfy_values_set(&rows[1].values, "a", 1.0);
+    vfy_values_set(&rows[1].values, "ci", 0.01);
+    vfy_check_spec widened = {.rule = vfy_rule_absolute, .value = "a", .x = 1.1, .tol = 0.05,
+                              .rtol = 0.04};
+    assert_int_equal(widened.rule(&r, "w", &run, &rows[1], &widened), VFY_FAIL);   /* 0.094 */
+    widened.plus = "ci";
+    assert_int_equal(widened.rule(&r, "w", &run, &rows[1], &widened), VFY_PASS);   /* 0.104 */
+    widened.plus = NULL;
+    widened.plus_quick = "ci";   /* the same at quick sizes only */
+    assert_int_equal(widened.rule(&r, "w", &run, &rows[1], &widened), VFY_PASS);
+    const vfy_options paper = {.size = VFY_PAPER};
+    run.o = &paper;
+    assert_int_equal(widened.rule(&r, "w", &run, &rows[1], &widened), VFY_FAIL);
+    run.o = &test_options;
+    const vfy_guard at_least = {vfy_guard_at_least, "n", NULL, 20000, "small n"},
+                    only_at_least = {vfy_guard_only_at_least, "n", NULL, 20000, NULL},
+                    unless = {vfy_guard_unless, "unjudged", NULL, 0, "not judged"};
+    assert_int_equal(at_least.fn(&run, &rows[1], &at_least), VFY_GUARD_SKIP);
+    assert_int_equal(only_at_least.fn(&run, &rows[1], &only_at_least), VFY_OMIT);
+    vfy_values_set(&rows[1].values, "n", 20000);
+    assert_int_equal(at_least.fn(&run, &rows[1], &at_least), VFY_JUDGE);
+    assert_int_equal(only_at_least.fn(&run, &rows[1], &only_at_least), VFY_JUDGE);
+    assert_int_equal(unless.fn(&run, &rows[1], &unless), VFY_JUDGE);   /* absent */
+    vfy_values_set(&rows[1].values, "unjudged", 1);
+    assert_int_equal(unless.fn(&run, &rows[1], &unless), VFY_GUARD_SKIP);
+    assert_int_equal(r.failed, 7);
     vfy_report_free(&r);
     free_run(&run);
 }
@@ -301,7 +396,8 @@ static const vfy_case_desc rows_desc = {
     .quick_rows = {.rows = rows_rows, .sets = "particles.ensembles=200;scene.outputs=11"},
     .needs = e2e_needs, .label = "{case} {label}", .variants = rows_variants,
     .adjust = rows_adjust, .checks = rows_checks, .columns = rows_columns,
-    .figures = {{VFY_FIGURE_CURVES, "-x", "T_raw@b", {"T_exact"}, 0.0, 0, 0}},
+    .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
+                 .refs = {"T_exact"}}},
     .title = "{case}", .notes = "notes"};
 static const vfy_case rows_case = {"driver-rows", "test", "", 0, vfy_run_described, NULL,
                                    &rows_desc};
@@ -376,6 +472,7 @@ int main(void)
         cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
         cmocka_unit_test(test_reference_registry), cmocka_unit_test(test_rows_variants_adjust),
+        cmocka_unit_test(test_tail_fit_and_adapters),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -111,8 +111,10 @@ static const char conv_notes[] =
                     .values = {"4 16 64", "64 256 1024"}},                               \
      .needs = conv_needs, .needs_why = VFY_NEEDS_BRS_MAXWELL, .paper_columns = PAPER,    \
      .metrics = conv_metrics, .checks = CHECKS, .columns = conv_columns,                 \
-     .figures = {{VFY_FIGURE_CURVES, "-T", "T", {"T_exact"}, 0.0, 1, 0},                   \
-                 {VFY_FIGURE_CURVES, "-uy", "uy", {"uy_exact"}, 0.0, 1, 0}},               \
+     .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T",               \
+                  .refs = {"T_exact"}, .panel_per_row = 1},                                 \
+                 {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy",             \
+                  .refs = {"uy_exact"}, .panel_per_row = 1}},                               \
      .title = "{case}: paper B {paper} ({size} sizes)", .notes = conv_notes}
 /* SPEC §4 Ex 1 (paper B Table 1) and Ex 2 (Table 2): rows n = 4 ... 1024. */
 static const vfy_paper_column brs_table1[] = {

@@ -62,7 +62,8 @@ static const vfy_column grw_columns[] = {
                     .sets = "particles.ensembles=2000"},                              \
      .needs = grw_needs, .needs_why = VFY_NEEDS_MAXWELL, .paper_columns = PAPER,      \
      .metrics = grw_metrics, .checks = grw_checks, .columns = grw_columns,           \
-     .figures = {{VFY_FIGURE_CURVES, "", "T_raw", {"T_exact"}, 2.0, 1, 0}},              \
+     .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = {"T_exact"},  \
+                  .x_from = 2.0, .panel_per_row = 1}},                                \
      .title = "{case}: paper A {paper} reproduced ({size} sizes)", .notes = grw_notes}
 static const char grw_notes[] =
     "{comment}.\n\nEmax = max over the {outputs} output times of |T(t) - eta1(t)|/T(t), with "
@@ -200,8 +201,8 @@ const vfy_case_desc vfy_grw_ex5 = {
                    .values = {"64 256 1024"},
                    .sets = "particles.ensembles=300"},
     .metrics = ex5_metrics, .checks = ex5_checks, .columns = ex5_columns,
-    .figures = {{VFY_FIGURE_CURVES, "", "T", {"T_maxwell_closure", "T_sonine_closure"}, 0.0, 0,
-                 1}},
+    .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T",
+                 .refs = {"T_maxwell_closure", "T_sonine_closure"}, .extrapolated = 1}},
     .after_rows = ex5_extrapolate,
     .title = "{case}: paper A Ex 5, heated hard spheres ({size} sizes)",
     .notes = "{comment}.\n\nNo exact solution exists. T is the centred temperature; dev_* = "

@@ -19,17 +19,12 @@ sim_status vfy_case_brs_steady(const vfy_case *, const vfy_options *, vfy_report
 extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3;
 extern const struct brs_paper_steady vfy_brs_steady4, vfy_brs_steady5;
 /* case_ms.c (paper C) */
-sim_status vfy_case_ms_a2(const vfy_case *, const vfy_options *, vfy_report *, char *, size_t);
-sim_status vfy_case_ms_table1(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                              size_t);
-sim_status vfy_case_ms_tails(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                             size_t);
+extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
+    vfy_ms_table1, vfy_ms_tails;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
 extern const vfy_case_desc vfy_split_ex5;
-extern const struct ms_case_data vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
-    vfy_ms_table1, vfy_ms_tails;
 /* case_cost.c (SPEC §10: accuracy against CPU cost) */
 sim_status vfy_case_cost_grid(const vfy_case *, const vfy_options *, vfy_report *, char *,
                               size_t);
@@ -73,15 +68,15 @@ static const vfy_case cases[] = {
     {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,
      vfy_case_brs_steady, &vfy_brs_steady5, NULL},
     {"ms-a2-white-noise", "ms", "paper C Fig. 1: steady a2 vs alpha, white noise, vs (C.10)", 1,
-     vfy_case_ms_a2, &vfy_ms_white_noise, NULL},
+     vfy_run_described, NULL, &vfy_ms_white_noise},
     {"ms-a2-gaussian", "ms", "paper C Figs. 4, 6: steady a2, a3 vs alpha, Gaussian (HCS)", 1,
-     vfy_case_ms_a2, &vfy_ms_gaussian, NULL},
+     vfy_run_described, NULL, &vfy_ms_gaussian},
     {"ms-a2-non-gaussian", "ms", "paper C Fig. 8: steady a2 vs alpha, non-Gaussian, vs (C.76)",
-     1, vfy_case_ms_a2, &vfy_ms_non_gaussian, NULL},
+     1, vfy_run_described, NULL, &vfy_ms_non_gaussian},
     {"ms-table1", "ms", "paper C Table 1: mu4 direct vs through the exact steady relations", 1,
-     vfy_case_ms_table1, &vfy_ms_table1, NULL},
+     vfy_run_described, NULL, &vfy_ms_table1},
     {"ms-tails", "ms", "paper C Figs. 3, 7: high-energy tails G(c), fitted A vs theory", 0,
-     vfy_case_ms_tails, &vfy_ms_tails, NULL},
+     vfy_run_described, NULL, &vfy_ms_tails},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, vfy_run_described, NULL, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "case_report.h"
+#include "figure.h"
 #include "observe.h"
 #include "references.h"
 #include "scene_ini.h"
@@ -123,12 +124,32 @@ static const char *run_string(const vfy_case_run *run, const char *name)
         return run->d->paper ? run->d->paper : "";
     if (strcmp(name, "comment") == 0)
         return run->comment;
+    for (size_t i = 0; i < run->ntexts; i++)
+        if (strcmp(run->text_names[i], name) == 0)
+            return run->texts[i];
     return NULL;
+}
+
+int vfy_run_set_text(vfy_case_run *run, const char *name, const char *text)
+{
+    size_t i = 0;
+    while (i < run->ntexts && strcmp(run->text_names[i], name) != 0)
+        i++;
+    if (i == sizeof run->texts / sizeof *run->texts)
+        return -1;
+    snprintf(run->text_names[i], sizeof run->text_names[i], "%s", name);
+    snprintf(run->texts[i], sizeof run->texts[i], "%s", text);
+    run->ntexts += i == run->ntexts;
+    return 0;
 }
 
 static const char *row_string(const vfy_row *row, const char *name)
 {
-    return row != NULL && strcmp(name, "label") == 0 ? row->label : vfy_row_text(row, name);
+    if (row != NULL && strcmp(name, "label") == 0)
+        return row->label;
+    if (row != NULL && strcmp(name, "scene") == 0)
+        return row->stem;
+    return vfy_row_text(row, name);
 }
 
 static double lookup(const vfy_case_run *run, const vfy_row *row, const char *name)
@@ -149,6 +170,15 @@ const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_r
             p += p[0] == '{' && p[1] == '{';   /* "{{" is one brace */
             buf[used++] = *p++;
             buf[used] = '\0';
+            continue;
+        }
+        int at_quick = strncmp(p + 1, "at_quick:", 9) == 0;
+        if (at_quick || strncmp(p + 1, "at_paper:", 9) == 0) {   /* text at one size */
+            if (at_quick == (run->o->size == VFY_QUICK)) {
+                int w = snprintf(buf + used, len - used, "%.*s", (int)(close - p - 10), p + 10);
+                used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
+            }
+            p = close + 1;
             continue;
         }
         char name[64], fmt[16] = "";
@@ -208,7 +238,15 @@ vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, v
 vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                               const vfy_check_spec *c)
 {
-    return compare(r, name, run, row, c, vfy_check_absolute);
+    const double expected = expected_of(run, row, c);
+    double allowed = c->tol;
+    if (c->rtol != 0.0)
+        allowed += c->rtol * fabs(expected);
+    if (c->plus != NULL)
+        allowed += lookup(run, row, c->plus);
+    if (c->plus_quick != NULL && run->o->size == VFY_QUICK)
+        allowed += lookup(run, row, c->plus_quick);
+    return vfy_check_absolute(r, name, lookup(run, row, c->value), expected, allowed);
 }
 
 vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
@@ -248,6 +286,22 @@ vfy_guard_result vfy_guard_only_at_most(const vfy_case_run *run, const vfy_row *
                                         const vfy_guard *g)
 {
     return lookup(run, row, g->a) <= g->x ? VFY_JUDGE : VFY_OMIT;
+}
+
+vfy_guard_result vfy_guard_at_least(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g)
+{
+    return lookup(run, row, g->a) >= g->x ? VFY_JUDGE : VFY_GUARD_SKIP;
+}
+
+vfy_guard_result vfy_guard_only_at_least(const vfy_case_run *run, const vfy_row *row,
+                                         const vfy_guard *g)
+{
+    return lookup(run, row, g->a) >= g->x ? VFY_JUDGE : VFY_OMIT;
+}
+
+vfy_guard_result vfy_guard_unless(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g)
+{
+    return lookup(run, row, g->a) > 0.0 ? VFY_GUARD_SKIP : VFY_JUDGE;
 }
 
 vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,
@@ -400,7 +454,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
                              const char *extra, char *msg, size_t msglen)
 {
     enum { MAX = VFY_SWEEP_KEYS + 32 };
-    char storage[MAX][160], stem[128];
+    char storage[MAX][160], stem[sizeof row->stem];
     const char *sets[MAX];
     snprintf(stem, sizeof stem, "%s", run->d->scene ? run->d->scene : run->c->name);
     size_t nsets = split_sets(s->sets, storage, sets, 0, MAX, stem, sizeof stem, row);
@@ -420,6 +474,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
         vfy_values_set(&row->values, sweep_name(s, k), strtod(value, NULL));
     }
     nsets = split_sets(extra, storage, sets, nsets, MAX, stem, sizeof stem, row);
+    snprintf(row->stem, sizeof row->stem, "%s", stem);
     sim_status status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene,
                                             &row->solver, msg, msglen);
     char derived[512];
@@ -546,7 +601,7 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
     }
     vfy_values_set(&row->values, "index", (double)row->index);
     vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
-    if (d->needs || d->figures[0].refs[0]) {
+    if (d->needs || (d->figures[0].kind == VFY_FIGURE_CURVES && d->figures[0].refs[0])) {
         sim_error err;
         if ((status = vfy_scene_references(&row->scene, &row->refs, &err)) != SIM_OK) {
             vfy_scene_format_error(&row->scene, &err, msg, msglen);
@@ -576,8 +631,74 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
 
 /* ------------------------------------------------------------ figure */
 
+/* "LABEL=name" or "name": the label into label, returns the name. */
+static const char *label_and_name(const char *spec, char *label, size_t len)
+{
+    const char *eq = strchr(spec, '=');
+    snprintf(label, len, "%.*s", (int)(eq ? (size_t)(eq - spec) : strlen(spec)), spec);
+    return eq ? eq + 1 : spec;
+}
+
+/* VFY_FIGURE_POINTS (driver.h). */
+static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
+{
+    enum { FINE = 81 };
+    size_t nseries = 0, ncurves = 0, np = 0;
+    while (nseries < 4 && f->series[nseries])
+        nseries++;
+    while (ncurves < 4 && f->refs[ncurves])
+        ncurves++;
+    double *buf = malloc(((1 + 2 * nseries) * run->nrows + (1 + ncurves) * FINE) * sizeof *buf);
+    if (buf == NULL)
+        return -1;
+    double *x = buf, *y = x + run->nrows, *ci = y + nseries * run->nrows;
+    double *xfine = ci + nseries * run->nrows, *yfine = xfine + FINE;
+    char labels[8][64], cinames[4][48];
+    const char *slabels[4], *clabels[4];
+    const double *ys[4], *cis[4], *yfs[4];
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        int finite = 1;
+        for (size_t j = 0; j < nseries; j++) {
+            const char *name = label_and_name(f->series[j], labels[j], sizeof labels[j]);
+            snprintf(cinames[j], sizeof cinames[j], "%s_ci", name);
+            y[j * run->nrows + np] = lookup(run, row, name);
+            ci[j * run->nrows + np] = lookup(run, row, cinames[j]);
+            finite &= isfinite(y[j * run->nrows + np]);
+        }
+        x[np] = lookup(run, row, f->x);
+        np += (size_t)finite;
+    }
+    sim_scene at = run->rows[run->nrows - 1].scene;
+    for (size_t k = 0; k < FINE; k++) {
+        xfine[k] = f->x_lo + (f->x_hi - f->x_lo) * (double)k / (FINE - 1);
+        at.collisions.restitution = xfine[k];
+        for (size_t j = 0; j < ncurves; j++)
+            yfine[j * FINE + k] = vfy_reference_value(
+                label_and_name(f->refs[j], labels[4 + j], sizeof labels[4 + j]), &at);
+    }
+    for (size_t j = 0; j < 4; j++) {
+        slabels[j] = labels[j];
+        clabels[j] = labels[4 + j];
+        ys[j] = y + j * run->nrows;
+        cis[j] = ci + j * run->nrows;
+        yfs[j] = yfine + j * FINE;
+    }
+    char name[160], title[256];
+    snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
+    vfy_expand(title, sizeof title, f->title, run, NULL);
+    const vfy_points points = {name, title, f->xlabel, f->ylabel, 0, np, x, nseries, slabels,
+                               ys, cis, ncurves ? FINE : 0, xfine, ncurves, clabels, yfs,
+                               run->comment};
+    int rc = np > 0 ? vfy_write_points(run->o, &points) : 0;
+    free(buf);
+    return rc;
+}
+
 static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char *title)
 {
+    if (f->kind == VFY_FIGURE_POINTS)
+        return write_points(run, f);
     const vfy_row *last = &run->rows[run->nrows - 1];
     const int extra = f->extrapolated && run->extra_mean != NULL;
     size_t M = last->res.outputs, rows = run->nrows + (size_t)extra, nref = 0;

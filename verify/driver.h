@@ -25,7 +25,11 @@
  * templates: "{name}" expands to a value (an integer prints as one, anything
  * else with %g) or "{name:%.3g}" with a printf format; the strings {case},
  * {size} ("quick" or "paper"), {paper} (the description's paper label) and
- * {comment} (the provenance line) are always there, and {label} in a row.  "{{" is a brace.
+ * {comment} (the provenance line) are always there, and {label} and
+ * {scene} (the stem of its scene file) in a row;
+ * "{at_quick:TEXT}" is TEXT at quick sizes and nothing at paper sizes,
+ * "{at_paper:TEXT}" the converse; a hook's case texts (vfy_run_set_text)
+ * by name.  "{{" is a brace.
  */
 #ifndef GDSMC_VFY_DRIVER_H
 #define GDSMC_VFY_DRIVER_H
@@ -64,6 +68,7 @@ typedef struct vfy_row {
     const vfy_case_run *run;    /* the run it belongs to */
     size_t index;
     char label[96];             /* {label}: an explicit row's label, or "" */
+    char stem[64];              /* {scene}: the stem of the row's scene file */
     size_t ntexts;              /* text values a sweep gave ("$scheme=euler") */
     char text_names[4][24], texts[4][32];
     sim_scene scene;            /* what the references describe */
@@ -128,6 +133,9 @@ struct vfy_check_spec {
     const char *expected;      /* the value (or series) it is judged against, or NULL */
     double x;                  /* the expected constant when expected is NULL */
     double tol, lo, hi;        /* as the rule documents */
+    double rtol;               /* vfy_rule_absolute: tol + rtol |expected| ... */
+    const char *plus;          /* ... + this value ... */
+    const char *plus_quick;    /* ... + this value at quick sizes (its half-width, say) */
     size_t from;               /* series rules: the first output judged */
     const char *out;           /* a value the rule defines (e.g. its max |z|), or NULL */
     vfy_guard guard;
@@ -184,16 +192,29 @@ typedef enum vfy_figure_kind {
     VFY_FIGURE_NONE,
     VFY_FIGURE_CURVES,   /* a series against t per row, with its confidence band,
                             beside reference lines */
+    VFY_FIGURE_POINTS,   /* values against a row value (one point a row), with
+                            error bars, beside value references as lines */
 } vfy_figure_kind;
 
 typedef struct vfy_figure_spec {
     vfy_figure_kind kind;
     const char *suffix;              /* the files are <case><suffix>.csv ... ("" or NULL) */
+    /* CURVES */
     const char *quantity;            /* the series drawn for every row */
-    const char *refs[4];             /* reference series drawn as lines */
+    const char *refs[4];             /* reference series drawn as lines (POINTS: value
+                                        references, "LABEL=name" or "name") */
     double x_from;                   /* the t axis starts here */
     int panel_per_row;               /* one panel per row (the first four), or one plot */
     int extrapolated;                /* draw the hook's n = infinity curve too */
+    /* POINTS: x is a row value; each series a value with its "_ci" ("LABEL=name"
+       or "name"); a row where one of them is not finite is left out.  The
+       references are drawn on 81 points of [x_lo, x_hi], each at a copy of the
+       last row's scene whose restitution coefficient is x (every value
+       reference is a function of it, references.h). */
+    const char *x;
+    const char *series[4];
+    double x_lo, x_hi;
+    const char *title, *xlabel, *ylabel;   /* title: a template */
 } vfy_figure_spec;
 #define VFY_FIGURES_MAX 3
 
@@ -250,12 +271,18 @@ struct vfy_case_run {
     vfy_row *rows;
     size_t nrows;
     vfy_values values;     /* the case's values (wall_total, hooks') */
+    size_t ntexts;         /* the case's texts a hook set (vfy_run_set_text) */
+    char text_names[4][24], texts[4][512];
     vfy_table table;
     char comment[800];     /* provenance of the last row (vfy_run_comment) */
     double *extra_mean, *extra_ci;  /* set by a hook (malloc'd, M each): one more
                                        curve in the figure, the n = infinity
                                        extrapolation */
 };
+
+/* Set the case's text `name` (at most 4 a case) for templates; returns 0,
+ * or -1 when there is no room. */
+int vfy_run_set_text(vfy_case_run *run, const char *name, const char *text);
 
 /* Run a described case (the vfy_case_fn of every description). */
 sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
@@ -274,7 +301,8 @@ vfy_verdict vfy_rule_relative(vfy_report *r, const char *name, vfy_case_run *run
 /* lo <= value <= hi (vfy_check_range). */
 vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                            const vfy_check_spec *c);
-/* |value - expected| <= tol (vfy_check_absolute). */
+/* |value - expected| <= tol + rtol |expected| + plus + (quick sizes only)
+ * plus_quick (vfy_check_absolute; the terms not given are left out). */
 vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                               const vfy_check_spec *c);
 /* value == expected (or x), integers (vfy_check_count). */
@@ -293,6 +321,14 @@ vfy_guard_result vfy_guard_at_most(const vfy_case_run *run, const vfy_row *row, 
 /* Judged while value a <= x; else omitted. */
 vfy_guard_result vfy_guard_only_at_most(const vfy_case_run *run, const vfy_row *row,
                                         const vfy_guard *g);
+/* Judged while value a >= x; else SKIP. */
+vfy_guard_result vfy_guard_at_least(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g);
+/* Judged while value a >= x; else omitted. */
+vfy_guard_result vfy_guard_only_at_least(const vfy_case_run *run, const vfy_row *row,
+                                         const vfy_guard *g);
+/* Judged unless value a is positive (a row marked "$a=1"); then SKIP. */
+vfy_guard_result vfy_guard_unless(const vfy_case_run *run, const vfy_row *row,
+                                  const vfy_guard *g);
 /* Reported, not judged (SKIP with the reason) while value a <= x; else
  * omitted: a paper's number shown beside ours that cannot be judged. */
 vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,

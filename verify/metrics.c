@@ -3,6 +3,7 @@
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -77,6 +78,35 @@ void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
 }
 
 double vfy_student_t(double p, double dof) { return gsl_cdf_tdist_Pinv(p, dof); }
+
+size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t bins, double b,
+                    double c_lo, double lambda, double *A, double *A_sd, double *K)
+{
+    double *x = malloc(3 * (bins ? bins : 1) * sizeof *x);
+    size_t m = 0;
+    *A = *A_sd = *K = NAN;
+    if (x == NULL)
+        return 0;
+    double *y = x + bins, *w = y + bins;
+    for (size_t k = 0; k < bins; k++) {
+        if (c[k] < c_lo || !(f[k] > 0.0) || !(ci[k] < 0.5 * f[k]))
+            continue;
+        double sigma = ci[k] / lambda / f[k];   /* of ln f */
+        x[m] = pow(c[k], b);
+        y[m] = log(f[k]);
+        w[m] = 1.0 / (sigma * sigma);
+        m++;
+    }
+    if (m >= 3) {
+        double c0, c1, cov00, cov01, cov11, chi2;
+        gsl_fit_wlinear(x, 1, w, 1, y, 1, m, &c0, &c1, &cov00, &cov01, &cov11, &chi2);
+        *A = -c1;
+        *A_sd = sqrt(cov11);
+        *K = exp(c0);
+    }
+    free(x);
+    return m;
+}
 
 /* ------------------------------------------------------------ adapters */
 
@@ -199,4 +229,72 @@ double vfy_metric_ratio_previous(const vfy_case_run *run, const vfy_row *row, co
     const vfy_row *prev = vfy_row_previous(run, row);
     return prev ? vfy_values_get(&prev->values, m->a) / vfy_values_get(&row->values, m->a)
                 : NAN;
+}
+
+/* Row value `name` (the row's own, else the case's). */
+static double value_of(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    return vfy_values_has(&row->values, name) ? vfy_values_get(&row->values, name)
+                                                : vfy_values_get(&run->values, name);
+}
+
+double vfy_metric_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    return value_of(run, row, m->a) + m->x * value_of(run, row, m->b);
+}
+
+double vfy_metric_percent_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const double b = value_of(run, row, m->b);
+    return 100.0 * (value_of(run, row, m->a) - b) / b;
+}
+
+double vfy_metric_percent_of(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    return 100.0 * value_of(run, row, m->a) / value_of(run, row, m->b);
+}
+
+double vfy_metric_max_of(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    return fmax(value_of(run, row, m->a), m->x * value_of(run, row, m->b));
+}
+
+double vfy_metric_abs_widened(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const double v = fabs(value_of(run, row, m->a));
+    return run->o->size == VFY_QUICK ? v + value_of(run, row, m->b) : v;
+}
+
+double vfy_metric_sonine_ratio(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    char name[48];
+    snprintf(name, sizeof name, "%s_1", m->a);
+    const double first = value_of(run, row, name);
+    snprintf(name, sizeof name, m->x != 0 ? "%s_ci" : "%s_0", m->a);
+    const double v = m->x != 0 ? value_of(run, row, name) / first
+                               : (value_of(run, row, m->a) - value_of(run, row, name)) / first;
+    return isfinite(v) ? v : NAN;
+}
+
+double vfy_metric_named_by_text(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const char *text = vfy_row_text(row, m->a);
+    char name[64];
+    snprintf(name, sizeof name, "%s%s", text ? text : "", m->b ? m->b : "");
+    return text ? value_of(run, row, name) : NAN;
+}
+
+double vfy_metric_heating_strength(const vfy_case_run *run, const vfy_row *row,
+                                   const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    return row->solver.heating.strength;
+}
+
+double vfy_metric_time_step(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    return vfy_scene_step(&row->solver);
 }

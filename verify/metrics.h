@@ -42,6 +42,13 @@ void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
 /* Student's t quantile: P(T <= q) = p for dof degrees of freedom (GSL). */
 double vfy_student_t(double p, double dof);
 
+/* Weighted least squares of ln f = ln K - A c^b over the bins k with
+ * c[k] >= c_lo, f[k] > 0 and ci[k] < f[k]/2 (ci = lambda standard errors):
+ * a high-energy tail f ~ K exp(-A c^b) (paper C §4).  Sets A, its standard
+ * error and K (NAN with fewer than 3 bins); returns the number of bins used. */
+size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t bins, double b,
+                    double c_lo, double lambda, double *A, double *A_sd, double *K);
+
 /* ------------------------------------------------- adapters (vfy_metric_fn) */
 
 /* vfy_max_rel_err of series a against series b. */
@@ -66,5 +73,30 @@ double vfy_metric_max_velocity(const vfy_case_run *run, const vfy_row *row, cons
 /* Value a of the previous row over value a of this one (a convergence
  * factor); NAN on the first row. */
 double vfy_metric_ratio_previous(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+
+/* Arithmetic on the row's values a and b (the row's own, else the case's). */
+/* a + x b */
+double vfy_metric_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+double vfy_metric_percent_diff(const vfy_case_run *run, const vfy_row *row,
+                               const vfy_metric *m);   /* 100 (a - b)/b */
+double vfy_metric_percent_of(const vfy_case_run *run, const vfy_row *row,
+                             const vfy_metric *m);     /* 100 a/b */
+/* max(a, x b) */
+double vfy_metric_max_of(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+double vfy_metric_abs_widened(const vfy_case_run *run, const vfy_row *row,
+                              const vfy_metric *m);    /* |a|, plus b at quick sizes */
+/* Paper C's ratio of a collisional moment to its first Sonine terms:
+ * (a - a_0)/a_1, or a_ci/a_1 with x = 1 (a = "mu2": the values mu2, mu2_0,
+ * mu2_1); NAN where it is not finite (a_1 = 0 in the elastic limit). */
+double vfy_metric_sonine_ratio(const vfy_case_run *run, const vfy_row *row,
+                               const vfy_metric *m);
+/* The value named by the row's text a, followed by b ("$relation=mu4_white",
+ * b = "_ci": the value mu4_white_ci). */
+double vfy_metric_named_by_text(const vfy_case_run *run, const vfy_row *row,
+                                const vfy_metric *m);
+/* The solver scene's thermostat strength and time step. */
+double vfy_metric_heating_strength(const vfy_case_run *run, const vfy_row *row,
+                                   const vfy_metric *m);
+double vfy_metric_time_step(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 
 #endif

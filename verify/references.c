@@ -89,3 +89,17 @@ double vfy_reference_value(const char *name, const sim_scene *s)
     const vfy_reference *r = vfy_reference_find(name);
     return r && r->kind == VFY_REF_VALUE ? r->value(s) : NAN;
 }
+
+double vfy_reference_tail_A(const sim_scene *s, double mu2)
+{
+    if (!s->heating.present)
+        return NAN;
+    switch (s->heating.type) {
+    case SIM_HEATING_WHITE_NOISE:
+        return ref_sonine_tail_A_white_noise_mu2(mu2, 3.0);
+    case SIM_HEATING_GAUSSIAN:
+        return ref_sonine_tail_A_gaussian_mu2(mu2, 3.0);
+    default:
+        return NAN;
+    }
+}

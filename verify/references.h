@@ -33,4 +33,9 @@ const vfy_reference *vfy_reference_find(const char *name);
  * reference or it does not apply. */
 double vfy_reference_value(const char *name, const sim_scene *s);
 
+/* Paper C Eqs. (36), (42): the high-energy tail amplitude A of the scene's
+ * thermostat (white noise: f ~ exp(-A c^1.5); Gaussian: f ~ exp(-A c)) with
+ * the given mu2 (a simulated one, as the paper does); NAN for the others. */
+double vfy_reference_tail_A(const sim_scene *s, double mu2);
+
 #endif
