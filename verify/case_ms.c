@@ -42,17 +42,7 @@
 #include "metrics.h"
 #include "references.h"
 #include "steady.h"
-
-#define A2_WHITE_TOL 0.006     /* |a2 - (C.10)| for the white-noise thermostat */
-#define A2_NG_RTOL 0.25        /* non-Gaussian a2 within 25% of (C.76) */
-#define MU4_GAP_RTOL 0.002     /* direct and indirect mu4 within 0.2% */
-#define MU4_PAPER_RTOL 0.003   /* ... and each within max(ci, 0.3%) of Table 1 */
-#define A_FIT_RTOL 0.05        /* tails: the fitted A (c >= 3) within 5% of the theory */
-#define K_RTOL 0.20            /* the plateau K within 20% of the paper's reading */
-#define RATIO4_RTOL 0.35       /* f/phi at c = 4 within 35% of the paper's reading */
-#define A3_SMALL 0.01          /* Gaussian |a3| "small" for alpha >= 0.6 (paper C §4.2) */
-#define A3_LARGE 0.03          /* ... and "increasing rapidly" below: |a3| >= 0.03 at <= 0.3 */
-#define TAIL_MIN_BINS 5        /* a tail fit needs this many shells */
+#include "tolerances.h"
 
 /* Quick sizes (CI): n = 2500, N = 16, relaxation to t = 8 (16 mean free
  * times), then 21 samples a mean free time apart, 4000 pairs per sample. */
@@ -174,7 +164,7 @@ static const vfy_metric ng_metrics[] = {A2_METRICS,
 static const vfy_check_spec white_checks[] = {
     A2_CHECKS_COMMON,
     {.name = "{case} alpha={alpha:%.2f} a2 vs (C.10)", .rule = vfy_rule_absolute, .value = "a2",
-     .expected = "a2_C10", .tol = A2_WHITE_TOL, .plus_quick = "a2_ci", .guard = INELASTIC},
+     .expected = "a2_C10", .tol = VFY_TOL_MS_A2_WHITE, .plus_quick = "a2_ci", .guard = INELASTIC},
     {.name = NULL}};
 /* Paper C §4.2: (C.40) is the better estimate for alpha < 0.5 only. */
 static vfy_guard_result gaussian_a2_guard(const vfy_case_run *run, const vfy_row *row,
@@ -201,10 +191,10 @@ static const vfy_check_spec gaussian_checks[] = {
     /* Paper C Figure 6: the Gaussian thermostat's a3 "remains small for
      * alpha >= 0.6, but for larger dissipation |a3| increases rapidly". */
     {.name = "{case} alpha={alpha:%.2f} |a3| small", .rule = vfy_rule_absolute, .value = "a3",
-     .tol = A3_SMALL, .plus_quick = "a3_ci",
+     .tol = VFY_TOL_MS_A3_SMALL, .plus_quick = "a3_ci",
      .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.6 - 1e-12, NULL}},
     {.name = "{case} alpha={alpha:%.2f} |a3| large: |a3|{at_quick: + ci}",
-     .rule = vfy_rule_range, .value = "a3_large", .lo = A3_LARGE, .hi = INFINITY,
+     .rule = vfy_rule_range, .value = "a3_large", .lo = VFY_TOL_MS_A3_LARGE, .hi = INFINITY,
      .guard = {vfy_guard_only_at_most, "alpha", NULL, 0.3 + 1e-12, NULL}},
     {.name = NULL}};
 static const vfy_check_spec ng_checks[] = {
@@ -212,7 +202,7 @@ static const vfy_check_spec ng_checks[] = {
     {.name = "{case} alpha={alpha:%.2f} a2 < 0: a2 + ci", .rule = vfy_rule_range,
      .value = "a2_upper", .lo = -INFINITY, .hi = 0.0, .guard = INELASTIC},
     {.name = "{case} alpha={alpha:%.2f} a2 vs (C.76) within 25%", .rule = vfy_rule_absolute,
-     .value = "a2", .expected = "a2_C76", .rtol = A2_NG_RTOL, .plus_quick = "a2_ci",
+     .value = "a2", .expected = "a2_C76", .rtol = VFY_TOL_MS_A2_NG_RTOL, .plus_quick = "a2_ci",
      .guard = INELASTIC},
     {.name = NULL}};
 
@@ -315,9 +305,10 @@ static const vfy_metric table1_metrics[] = {
     {"gap_ci_percent", vfy_metric_percent_of, "pair_ci", "mu4_indirect", 0},
     {"direct_paper_percent", vfy_metric_percent_diff, "mu4", "mu4_direct_paper", 0},
     {"indirect_paper_percent", vfy_metric_percent_diff, "mu4_indirect", "mu4_indirect_paper", 0},
-    {"direct_paper_tol", vfy_metric_max_of, "mu4_ci", "mu4_direct_paper", MU4_PAPER_RTOL},
+    {"direct_paper_tol", vfy_metric_max_of, "mu4_ci", "mu4_direct_paper",
+     VFY_TOL_MS_MU4_PAPER_RTOL},
     {"indirect_paper_tol", vfy_metric_max_of, "mu4_indirect_ci", "mu4_indirect_paper",
-     MU4_PAPER_RTOL},
+     VFY_TOL_MS_MU4_PAPER_RTOL},
     {NULL, NULL, NULL, NULL, 0}};
 #define T1_NAME "{case} alpha={alpha:%.1f} {thermostat} "
 #define T1_UNJUDGED(V, P)                                                               \
@@ -326,7 +317,8 @@ static const vfy_metric table1_metrics[] = {
 static const vfy_check_spec table1_checks[] = {
     {.name = T1_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
     {.name = T1_NAME "mu4 direct vs indirect (0.2%)", .rule = vfy_rule_absolute,
-     .value = "mu4", .expected = "mu4_indirect", .rtol = MU4_GAP_RTOL, .plus_quick = "pair_ci"},
+     .value = "mu4", .expected = "mu4_indirect", .rtol = VFY_TOL_MS_MU4_GAP_RTOL,
+     .plus_quick = "pair_ci"},
     {.name = T1_NAME "mu4 direct vs paper C Table 1", .rule = vfy_rule_absolute,
      .value = "mu4", .expected = "mu4_direct_paper", .plus = "direct_paper_tol",
      .plus_quick = "mu4_ci",
@@ -521,20 +513,21 @@ static const vfy_metric tails_metrics[] = {
     {NULL, NULL, NULL, NULL, 0}};
 #define TAIL_NAME "{case} {thermostat} alpha={alpha:%.1f} "
 #define TAIL_FIT_GUARD                                                                 \
-    {vfy_guard_at_least, "fit_bins_c3", NULL, TAIL_MIN_BINS,                           \
+    {vfy_guard_at_least, "fit_bins_c3", NULL, VFY_TOL_MS_TAIL_MIN_BINS,                \
      "fewer than 5 tail shells with a relative half-width below 0.5"}
 static const vfy_check_spec tails_checks[] = {
     {.name = TAIL_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
     {.name = TAIL_NAME "A (Eq. {eq} with the simulated mu2) vs paper",
-     .rule = vfy_rule_relative, .value = "A_theory", .expected = "A_paper", .tol = 0.01},
+     .rule = vfy_rule_relative, .value = "A_theory", .expected = "A_paper",
+     .tol = VFY_TOL_MS_TAIL_A_PAPER_RTOL},
     {.name = TAIL_NAME "fitted A (c >= 3) vs theory", .rule = vfy_rule_absolute,
-     .value = "A_fit_c3", .expected = "A_theory", .rtol = A_FIT_RTOL,
+     .value = "A_fit_c3", .expected = "A_theory", .rtol = VFY_TOL_MS_TAIL_A_FIT_RTOL,
      .plus_quick = "A_fit_c3_ci", .guard = TAIL_FIT_GUARD},
     {.name = TAIL_NAME "plateau K of G(c), c >= 3, vs paper", .rule = vfy_rule_absolute,
-     .value = "K", .expected = "K_paper", .rtol = K_RTOL, .plus_quick = "K_ci",
+     .value = "K", .expected = "K_paper", .rtol = VFY_TOL_MS_TAIL_K_RTOL, .plus_quick = "K_ci",
      .guard = TAIL_FIT_GUARD},
     {.name = TAIL_NAME "f/phi at c = 4 vs paper", .rule = vfy_rule_relative,
-     .value = "f_over_phi_c4", .expected = "ratio4_paper", .tol = RATIO4_RTOL,
+     .value = "f_over_phi_c4", .expected = "ratio4_paper", .tol = VFY_TOL_MS_TAIL_RATIO4_RTOL,
      .guard = {vfy_guard_at_least, "f_over_phi_c4_ok", NULL, 1,
                "the shells at c = 4 hold too few particles at these sizes"}},
     {.name = NULL}};

@@ -298,3 +298,9 @@ double vfy_metric_time_step(const vfy_case_run *run, const vfy_row *row, const v
     (void)m;
     return vfy_scene_step(&row->solver);
 }
+
+double vfy_metric_student_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const double N = value_of(run, row, "N");
+    return value_of(run, row, m->a) * vfy_student_t(VFY_STUDENT_P, N - 1.0) / SIM_LAMBDA_P;
+}

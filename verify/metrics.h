@@ -41,6 +41,9 @@ void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
 
 /* Student's t quantile: P(T <= q) = p for dof degrees of freedom (GSL). */
 double vfy_student_t(double p, double dof);
+/* The one-sided probability of a confidence half-width: the engine's
+ * SIM_LAMBDA_P = 3.2 standard errors is the normal quantile at about it. */
+#define VFY_STUDENT_P 0.9995
 
 /* Weighted least squares of ln f = ln K - A c^b over the bins k with
  * c[k] >= c_lo, f[k] > 0 and ci[k] < f[k]/2 (ci = lambda standard errors):
@@ -94,6 +97,11 @@ double vfy_metric_sonine_ratio(const vfy_case_run *run, const vfy_row *row,
  * b = "_ci": the value mu4_white_ci). */
 double vfy_metric_named_by_text(const vfy_case_run *run, const vfy_row *row,
                                 const vfy_metric *m);
+/* Confidence half-width a (SIM_LAMBDA_P standard errors over the row's N
+ * ensembles) with Student's t quantile for N - 1 degrees of freedom instead
+ * of the normal one: a x t(VFY_STUDENT_P, N - 1) / SIM_LAMBDA_P (4.07/3.2
+ * for N = 16). */
+double vfy_metric_student_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 /* The solver scene's thermostat strength and time step. */
 double vfy_metric_heating_strength(const vfy_case_run *run, const vfy_row *row,
                                    const vfy_metric *m);
