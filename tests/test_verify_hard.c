@@ -250,7 +250,12 @@ static void test_check_ode(void **state)
     assert_int_equal(vfy_hard_check_ode(&r, "ode", &run), VFY_FAIL);
     run.msg = NULL;
     assert_int_equal(vfy_hard_check_ode(&r, "ode", &run), VFY_FAIL);
-    assert_int_equal(r.failed, 8);
+    /* where the solver must succeed (BDF on hard-stiff), a clean failure fails */
+    run.msg = "CVODE failed at t = 0.0001: CV_TOO_MUCH_WORK";
+    run.must_succeed = 1;
+    assert_int_equal(vfy_hard_check_ode(&r, "ode", &run), VFY_FAIL);
+    assert_non_null(strstr(r.checks[r.count - 1].detail, "must succeed"));
+    assert_int_equal(r.failed, 9);
     vfy_report_free(&r);
 }
 

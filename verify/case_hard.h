@@ -104,12 +104,13 @@ typedef struct vfy_hard_ode {
     double T_steady;        /* the steady state found independently (GSL Brent), or NaN */
     double rtol;            /* allowed relative deviation from T_exact and from T_steady at
                                the last output time */
+    int must_succeed;       /* a failure, even a clean one, fails */
 } vfy_hard_ode;
 
 /* "<name>": CVODE succeeded with every value finite, T positive, T within
  * rtol of T_exact at every time and of T_steady at the last; or it failed
  * with a message (non-empty and naming CVODE or the bad argument): a clean
- * failure, which passes and says so.  Success with garbage (NaN, T <= 0, a
+ * failure, which passes and says so unless run->must_succeed.  Success with garbage (NaN, T <= 0, a
  * result off the closed form or the steady state) and a failure without a
  * message fail. */
 vfy_verdict vfy_hard_check_ode(vfy_report *r, const char *name, const vfy_hard_ode *run);
