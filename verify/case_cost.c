@@ -169,7 +169,8 @@ vfy_verdict vfy_cost_check_chi2(vfy_report *r, const char *name, double chi2, si
 static const char *grid_comment(const sim_scene *s, char *buf, size_t len)
 {
     snprintf(buf, len, "gdsmc %s verify: scene %s, seed %llu, %zu outputs on [0, %g]",
-             GDSMC_VERSION, s->file, (unsigned long long)s->seed, s->outputs, s->t_end);
+             GDSMC_VERSION, vfy_display_path(s->file), (unsigned long long)s->seed, s->outputs,
+             s->t_end);
     return buf;
 }
 

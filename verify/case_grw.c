@@ -208,8 +208,8 @@ const vfy_case_desc vfy_grw_ex5 = {
     .notes = "{comment}.\n\nNo exact solution exists. T is the centred temperature; dev_* = "
              "max over the output times of |eta1/T_closure - 1|; T_end at t = {t_end:%g} with "
              "its confidence half-width. The extrapolation to n = infinity (weighted least "
-             "squares in 1/n at every output time, reports/{case}-extrapolated.csv) gives "
-             "T_inf = {T_inf:%.5f} ± {T_inf_ci:%.5f} at t = {t_end:%g}: minus the Maxwellian "
+             "squares in 1/n at every output time, {case}-extrapolated.csv beside this table) "
+             "gives T_inf = {T_inf:%.5f} ± {T_inf_ci:%.5f} at t = {t_end:%g}: minus the Maxwellian "
              "closure {diff_maxwell:%+.5f}, minus the first-Sonine closure (a2 from C.10) "
              "{diff_sonine:%+.5f}. Largest chi^2 of the O(1/n) fit over the output times: "
              "{chi2_max:%.2f} ({rows} rows). Total wall time {wall_total:%.1f} s."};

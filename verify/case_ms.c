@@ -108,9 +108,8 @@ static sim_status ms_require(const vfy_row *row, sim_scene *s, char *msg, size_t
     return SIM_EINVAL;
 }
 
-/* After the rows: the sizes line of the notes ({sizes}), the provenance and
- * N with its Student's t quantile ({N}, {N_dof}, {t_quantile}), all of the
- * first row. */
+/* After the rows: the sizes line of the notes ({sizes}) and N with its
+ * Student's t quantile ({N}, {N_dof}, {t_quantile}), of the first row. */
 static sim_status ms_sizes(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
     (void)r;
@@ -121,7 +120,6 @@ static sim_status ms_sizes(vfy_case_run *run, vfy_report *r, char *msg, size_t m
              s->particles.n, s->particles.ensembles, vfy_scene_step(s),
              s->splitting == SIM_SPLIT_STRANG ? "Strang splitting" : "Euler splitting",
              s->steady.from, s->t_end, sim_scene_output_time(s, 1), s->steady.pairs);
-    vfy_run_comment(s, run->comment, sizeof run->comment);
     const double N = (double)s->particles.ensembles;
     if (vfy_run_set_text(run, "sizes", sizes) != 0 || vfy_values_set(&run->values, "N", N) != 0
         || vfy_values_set(&run->values, "N_dof", N - 1.0) != 0

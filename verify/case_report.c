@@ -64,10 +64,16 @@ sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene 
     return status;
 }
 
+const char *vfy_display_path(const char *path)
+{
+    const size_t n = strlen(GDSMC_SOURCE_DIR);
+    return strncmp(path, GDSMC_SOURCE_DIR, n) == 0 && path[n] == '/' ? path + n + 1 : path;
+}
+
 const char *vfy_run_comment(const sim_scene *s, char *buf, size_t len)
 {
     snprintf(buf, len, "gdsmc %s verify: scene %s, seed %llu, N = %zu ensembles, %zu outputs on "
-             "[0, %g]", GDSMC_VERSION, s->file, (unsigned long long)s->seed,
+             "[0, %g]", GDSMC_VERSION, vfy_display_path(s->file), (unsigned long long)s->seed,
              s->particles.ensembles, s->outputs, s->t_end);
     return buf;
 }

@@ -30,6 +30,11 @@ void vfy_cost_cells(vfy_table *table, double cpu_seconds, double wall_seconds,
 /* "gdsmc VERSION verify: scene FILE, seed S, N = ..., M outputs on [0, t_end]". */
 const char *vfy_run_comment(const sim_scene *s, char *buf, size_t len);
 
+/* A scene file's path as provenance shows it: relative to the source tree
+ * when it lies in it (so that reports do not name the machine that ran
+ * them), else as given. */
+const char *vfy_display_path(const char *path);
+
 /* A case's table as out_dir/<name>.csv (comment first) and out_dir/<name>.md
  * (title, notes); SIM_EIO with "PATH: cannot write: ..." on failure. */
 sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const vfy_table *table,

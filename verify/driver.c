@@ -734,6 +734,68 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
     return rc;
 }
 
+/* ------------------------------------------------------------ provenance */
+
+typedef void (*row_field_fn)(const vfy_row *row, char *buf, size_t len);
+
+static void field_scene(const vfy_row *row, char *buf, size_t len)
+{
+    snprintf(buf, len, "%s", vfy_display_path(row->solver.file));
+}
+static void field_seed(const vfy_row *row, char *buf, size_t len)
+{
+    snprintf(buf, len, "%llu", (unsigned long long)row->solver.seed);
+}
+static void field_n(const vfy_row *row, char *buf, size_t len)
+{
+    snprintf(buf, len, "%zu", row->solver.particles.n);
+}
+static void field_ensembles(const vfy_row *row, char *buf, size_t len)
+{
+    snprintf(buf, len, "%zu", row->solver.particles.ensembles);
+}
+static void field_outputs(const vfy_row *row, char *buf, size_t len)
+{
+    snprintf(buf, len, "%zu outputs on [0, %g]", row->solver.outputs, row->solver.t_end);
+}
+
+/* Append "LABEL v" when every row has the same value, else "LABEL v1, v2,
+ * ... (by row)", each followed by unit. */
+static void append_field(const vfy_case_run *run, char *buf, size_t len, const char *label,
+                         row_field_fn field, const char *unit)
+{
+    char first[256], v[256];
+    field(&run->rows[0], first, sizeof first);
+    int same = 1;
+    for (size_t i = 1; i < run->nrows && same; i++) {
+        field(&run->rows[i], v, sizeof v);
+        same = strcmp(v, first) == 0;
+    }
+    size_t used = strlen(buf);
+    used += (size_t)snprintf(buf + used, used < len ? len - used : 0, "%s%s", label, first);
+    for (size_t i = 1; i < run->nrows && !same && used < len; i++) {
+        field(&run->rows[i], v, sizeof v);
+        used += (size_t)snprintf(buf + used, len - used, ", %s", v);
+    }
+    if (used < len)
+        snprintf(buf + used, len - used, "%s%s", unit, same ? "" : " (by row)");
+}
+
+/* The provenance line of the tables and figures ({comment}): each row's own
+ * scene file, seed, n, N and output times, said once where the rows share
+ * them. */
+static void run_provenance(vfy_case_run *run)
+{
+    char *buf = run->comment;
+    const size_t len = sizeof run->comment;
+    snprintf(buf, len, "gdsmc %s verify: ", GDSMC_VERSION);
+    append_field(run, buf, len, "scene ", field_scene, "");
+    append_field(run, buf, len, ", seed ", field_seed, "");
+    append_field(run, buf, len, ", n = ", field_n, "");
+    append_field(run, buf, len, ", N = ", field_ensembles, " ensembles");
+    append_field(run, buf, len, ", ", field_outputs, "");
+}
+
 /* ------------------------------------------------------------ the case */
 
 static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
@@ -746,7 +808,7 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     vfy_values_set(&run->values, "wall_total", wall);
     vfy_values_set(&run->values, "rows", (double)run->nrows);
     vfy_values_set(&run->values, "outputs", (double)last->res.outputs);
-    vfy_run_comment(&last->solver, run->comment, sizeof run->comment);
+    run_provenance(run);
     sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
     if (status != SIM_OK)
         return status;

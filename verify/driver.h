@@ -274,7 +274,8 @@ struct vfy_case_run {
     size_t ntexts;         /* the case's texts a hook set (vfy_run_set_text) */
     char text_names[4][24], texts[4][512];
     vfy_table table;
-    char comment[800];     /* provenance of the last row (vfy_run_comment) */
+    char comment[2048];    /* provenance: the version, and each row's scene file, seed,
+                              n, N and outputs (once where all rows share them) */
     double *extra_mean, *extra_ci;  /* set by a hook (malloc'd, M each): one more
                                        curve in the figure, the n = infinity
                                        extrapolation */
