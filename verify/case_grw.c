@@ -116,40 +116,22 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
                                         "chi2"};
     const size_t rows = run->nrows, M = run->rows[0].res.outputs;
     const double *t = run->rows[0].res.t;
-    double *buf = malloc(((2 * rows + 2) * M + 2 * rows) * sizeof *buf);
-    size_t *n = malloc(rows * sizeof *n);
-    run->extra_mean = malloc(M * sizeof *run->extra_mean);
-    run->extra_ci = malloc(M * sizeof *run->extra_ci);
-    if (!buf || !n || !run->extra_mean || !run->extra_ci) {
+    double *buf = malloc(3 * M * sizeof *buf);
+    if (buf == NULL || vfy_run_extrapolate(run, "T", buf + 2 * M) != 0) {
         free(buf);
-        free(n);
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
-    double *mean = buf, *sigma = buf + rows * M, *maxw = buf + 2 * rows * M, *son = maxw + M;
-    double *mm = son + M, *ss = mm + rows;   /* one output time's rows */
+    double *maxw = buf, *son = buf + M, *chi2 = buf + 2 * M;
     vfy_row_series(&run->rows[0], "T_maxwell_closure", maxw, NULL);
     vfy_row_series(&run->rows[0], "T_sonine_closure", son, NULL);
-    for (size_t i = 0; i < rows; i++) {   /* row-major per output time below */
-        n[i] = run->rows[i].solver.particles.n;
-        double *ci = sigma + i * M;
-        vfy_row_series(&run->rows[i], "T", mean + i * M, ci);
-        for (size_t m = 0; m < M; m++)
-            ci[m] /= SIM_LAMBDA_P;
-    }
     vfy_table xtable;
     vfy_table_init(&xtable, sizeof xcols / sizeof *xcols, xcols);
     double chi2_max = 0.0;
     for (size_t m = 0; m < M; m++) {
-        double *T = run->extra_mean, *Tci = run->extra_ci, sd, chi2;
-        for (size_t i = 0; i < rows; i++) {
-            mm[i] = mean[i * M + m];
-            ss[i] = sigma[i * M + m];
-        }
-        vfy_extrapolate_inverse_n(rows, n, mm, ss, &T[m], &sd, &chi2);
-        Tci[m] = SIM_LAMBDA_P * sd;
+        const double *T = run->extra_mean, *Tci = run->extra_ci;
         if (m > 0)
-            chi2_max = fmax(chi2_max, chi2);
+            chi2_max = fmax(chi2_max, chi2[m]);
         vfy_table_cell(&xtable, "%.4g", t[m]);
         vfy_table_cell(&xtable, "%.6f", T[m]);
         vfy_table_cell(&xtable, "%.6f", Tci[m]);
@@ -157,7 +139,7 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
         vfy_table_cell(&xtable, "%.6f", son[m]);
         vfy_table_cell(&xtable, "%+.6f", T[m] - maxw[m]);
         vfy_table_cell(&xtable, "%+.6f", T[m] - son[m]);
-        vfy_table_cell(&xtable, "%.2f", chi2);
+        vfy_table_cell(&xtable, "%.2f", chi2[m]);
     }
     const double T_inf = run->extra_mean[M - 1], ci_end = run->extra_ci[M - 1];
     vfy_values_set(&run->values, "t_end", t[M - 1]);
@@ -191,7 +173,6 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
         status = vfy_io_error(path, msg, msglen);
     vfy_table_free(&xtable);
     free(buf);
-    free(n);
     return status;
 }
 

@@ -7,6 +7,7 @@
 
 #include "case_report.h"
 #include "figure.h"
+#include "metrics.h"
 #include "observe.h"
 #include "references.h"
 #include "scene_ini.h"
@@ -83,10 +84,53 @@ const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row
     return k < 0 ? NULL : k == 0 ? &row->res : &row->more[k - 1];
 }
 
+size_t vfy_variant_count(const vfy_case_desc *d)
+{
+    size_t count = 0;
+    while (d->variants && d->variants[count])
+        count++;
+    return count ? count : 1;
+}
+
+/* "NAME@*": the mean over the variants of observable NAME. */
+static int variants_mean(const vfy_row *row, const char *name, size_t len, double *mean,
+                         double *ci)
+{
+    const size_t B = vfy_variant_count(row->run->d), M = row->res.outputs;
+    char one[64];
+    double *m1 = malloc(2 * M * sizeof *m1);
+    if (m1 == NULL)
+        return -1;
+    memset(mean, 0, M * sizeof *mean);
+    if (ci != NULL)
+        memset(ci, 0, M * sizeof *ci);
+    int rc = 0;
+    for (size_t k = 0; k < B && rc == 0; k++) {
+        const char *v = row->run->d->variants ? row->run->d->variants[k] : "";
+        snprintf(one, sizeof one, "%.*s%s%.*s", (int)len, name, k ? "@" : "",
+                 k ? (int)strcspn(v, ":") : 0, v);
+        rc = vfy_row_series(row, one, m1, m1 + M);
+        for (size_t m = 0; m < M && rc == 0; m++) {
+            mean[m] += m1[m];
+            if (ci != NULL)
+                ci[m] += m1[M + m] * m1[M + m];
+        }
+    }
+    for (size_t m = 0; m < M; m++) {
+        mean[m] /= (double)B;
+        if (ci != NULL)
+            ci[m] = sqrt(ci[m]) / (double)B;
+    }
+    free(m1);
+    return rc;
+}
+
 int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *ci)
 {
     const char *at = strchr(name, '@');
     size_t len = at ? (size_t)(at - name) : strlen(name);
+    if (at != NULL && strcmp(at, "@*") == 0)
+        return variants_mean(row, name, len, mean, ci);
     const sim_ensemble_result *res = &row->res;
     if (at != NULL) {
         res = vfy_row_result(row->run, row, at + 1);
@@ -273,6 +317,14 @@ vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, 
         vfy_values_set(&row->values, c->out, z);
     free(buf);
     return v;
+}
+
+vfy_verdict vfy_rule_printed(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                             const vfy_check_spec *c)
+{
+    return vfy_check_printed(r, name, lookup(run, row, c->value),
+                             c->plus ? lookup(run, row, c->plus) : 0.0,
+                             expected_of(run, row, c), (int)c->tol);
 }
 
 /* ------------------------------------------------------------ guards */
@@ -552,10 +604,12 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
     return status;
 }
 
-static void row_checks(vfy_case_run *run, vfy_row *row, vfy_report *r)
+/* The checks of a row, or of the case (row NULL: no guards). */
+static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *checks,
+                       vfy_report *r)
 {
-    for (const vfy_check_spec *c = run->d->checks; c && c->name; c++) {
-        vfy_guard_result g = c->guard.fn ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
+    for (const vfy_check_spec *c = checks; c && c->name; c++) {
+        vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
         if (g == VFY_OMIT)
             continue;
         char name[160], why[320];
@@ -616,7 +670,7 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
         vfy_values_set(&row->values, p->name, row->index < p->count ? p->v[row->index] : NAN);
     for (const vfy_metric *m = d->metrics; m && m->name; m++)
         vfy_values_set(&row->values, m->name, m->fn(run, row, m));
-    row_checks(run, row, r);
+    run_checks(run, row, d->checks, r);
     if (row_cells(run, row) != 0) {
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
@@ -796,14 +850,52 @@ static void run_provenance(vfy_case_run *run)
     append_field(run, buf, len, ", ", field_outputs, "");
 }
 
+/* ------------------------------------------------------------ extrapolation */
+
+int vfy_run_extrapolate(vfy_case_run *run, const char *quantity, double *chi2)
+{
+    const size_t rows = run->nrows, M = run->rows[0].res.outputs;
+    double *buf = malloc((2 * rows * M + 2 * rows) * sizeof *buf);
+    size_t *n = malloc(rows * sizeof *n);
+    free(run->extra_mean);
+    free(run->extra_ci);
+    run->extra_mean = malloc(M * sizeof *run->extra_mean);
+    run->extra_ci = malloc(M * sizeof *run->extra_ci);
+    int rc = buf && n && run->extra_mean && run->extra_ci ? 0 : -1;
+    double *mean = buf, *sigma = buf ? buf + rows * M : NULL;
+    for (size_t i = 0; i < rows && rc == 0; i++) {
+        n[i] = run->rows[i].solver.particles.n;
+        rc = vfy_row_series(&run->rows[i], quantity, mean + i * M, sigma + i * M);
+        for (size_t m = 0; m < M; m++)
+            sigma[i * M + m] /= SIM_LAMBDA_P;
+    }
+    for (size_t m = 0; m < M && rc == 0; m++) {
+        double *mm = sigma + rows * M, *ss = mm + rows, sd, x2;
+        for (size_t i = 0; i < rows; i++) {
+            mm[i] = mean[i * M + m];
+            ss[i] = sigma[i * M + m];
+        }
+        vfy_extrapolate_inverse_n(rows, n, mm, ss, &run->extra_mean[m], &sd, &x2);
+        run->extra_ci[m] = SIM_LAMBDA_P * sd;
+        if (chi2 != NULL)
+            chi2[m] = x2;
+    }
+    free(buf);
+    free(n);
+    return rc;
+}
+
 /* ------------------------------------------------------------ the case */
 
 static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
     const vfy_case_desc *d = run->d;
     double wall = 0.0;
-    for (size_t i = 0; i < run->nrows; i++)
+    for (size_t i = 0; i < run->nrows; i++) {
         wall += run->rows[i].res.wall_seconds;
+        for (size_t k = 0; run->rows[i].more && k + 1 < vfy_variant_count(d); k++)
+            wall += run->rows[i].more[k].wall_seconds;
+    }
     const vfy_row *last = &run->rows[run->nrows - 1];
     vfy_values_set(&run->values, "wall_total", wall);
     vfy_values_set(&run->values, "rows", (double)run->nrows);
@@ -812,6 +904,7 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
     if (status != SIM_OK)
         return status;
+    run_checks(run, NULL, d->case_checks, r);
     size_t notes_len = strlen(d->notes) + 4096;
     char title[256], *notes = malloc(notes_len);
     if (notes == NULL) {

@@ -81,8 +81,10 @@ typedef struct vfy_row {
 
 /* The series `name` of a row (an observable of the result, or a reference):
  * mean[m] and ci[m] (ci may be NULL; a reference has ci = 0) for the
- * row's M outputs; "NAME@VARIANT" is the observable of a variant's result.
- * Returns 0, or -1 when the row has no such series. */
+ * row's M outputs; "NAME@VARIANT" is the observable of a variant's result,
+ * "NAME@*" its mean over all the variants (independent batches: ci =
+ * sqrt(sum of ci^2) / variants).  Returns 0, or -1 when the row has no such
+ * series. */
 int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *ci);
 
 /* The result of the variant named `variant` (NULL or "": the first). */
@@ -256,6 +258,8 @@ typedef struct vfy_case_desc {
     const vfy_paper_column *paper_columns;  /* terminated by a NULL name */
     const vfy_metric *metrics;          /* in order; terminated by a NULL name */
     const vfy_check_spec *checks;       /* in order; terminated by a NULL name */
+    const vfy_check_spec *case_checks;  /* on the case's values, after after_rows (no
+                                           row, no guard) */
     const vfy_column *columns;          /* terminated by a NULL header */
     vfy_figure_spec figures[VFY_FIGURES_MAX];  /* up to the first of kind NONE */
     const char *title, *notes;          /* templates */
@@ -284,6 +288,15 @@ struct vfy_case_run {
 /* Set the case's text `name` (at most 4 a case) for templates; returns 0,
  * or -1 when there is no room. */
 int vfy_run_set_text(vfy_case_run *run, const char *name, const char *text);
+
+/* The O(1/n) extrapolation of series `quantity` at every output time
+ * (vfy_extrapolate_inverse_n over the rows, sigma = ci / 3.2): sets
+ * run->extra_mean and run->extra_ci (the figure's n = infinity curve), and
+ * chi2[m] when chi2 is not NULL.  Returns 0, or -1 when out of memory. */
+int vfy_run_extrapolate(vfy_case_run *run, const char *quantity, double *chi2);
+
+/* The number of variants of the description (1 without). */
+size_t vfy_variant_count(const vfy_case_desc *d);
 
 /* Run a described case (the vfy_case_fn of every description). */
 sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
@@ -314,6 +327,11 @@ vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, v
  * checks that name it on this row. */
 vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                             const vfy_check_spec *c);
+
+/* value within half a unit of the last of `tol` printed decimals of expected
+ * (or x), plus value `plus` (its half-width) when given (vfy_check_printed). */
+vfy_verdict vfy_rule_printed(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                             const vfy_check_spec *c);
 
 /* ------------------------------------------------------------ guards */
 
