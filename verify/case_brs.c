@@ -17,22 +17,15 @@
  * compared with the paper's kinetic value, beside both closures' steady
  * states (GSL root finding) and their CVODE trajectories.
  */
-#include <gsl/gsl_cdf.h>
-#include <gsl/gsl_statistics_double.h>
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "case_report.h"
 #include "cases.h"
 #include "driver.h"
 #include "metrics.h"
 #include "tolerances.h"
-#include "scene_ini.h"
-#include "scene_refs.h"
-#include "table.h"
-
-#define BATCHES 32           /* independent batches per row of the steady cases */
 
 /* brs-ex1, brs-ex2, brs-ex3 (SPEC §4 Ex 1-3): Maxwell kernels, rows n = 4,
  * 16, 64, ... with N = 16 n. */
@@ -134,246 +127,163 @@ const vfy_case_desc vfy_brs_ex2 = BRS_CONVERGENCE("Table 2", brs_table2, table2_
 const vfy_case_desc vfy_brs_ex3 =
     BRS_CONVERGENCE("Maxwell kernels, relaxation", NULL, no_table_checks);
 
-struct brs_paper_steady {
-    double kinetic, le, grad;   /* steady temperatures printed by the paper */
-};
+/* brs-ex4, brs-ex5 (SPEC §4 Ex 4, 5): hard spheres.  Rows with n N fixed
+ * (2^21 at paper sizes, 2^14 at quick), so each row costs about the same;
+ * each row runs in 32 independent batches (the variants, seeds scene
+ * seed + 1000 (row + 1) + batch): the spread of the batches' time averages
+ * gives T*'s confidence interval, which a time average of correlated
+ * per-time intervals cannot. */
+static const char *const steady_batches[] = {
+    "b1: $batch=0", "b2: $batch=1", "b3: $batch=2", "b4: $batch=3",
+    "b5: $batch=4", "b6: $batch=5", "b7: $batch=6", "b8: $batch=7",
+    "b9: $batch=8", "b10: $batch=9", "b11: $batch=10", "b12: $batch=11",
+    "b13: $batch=12", "b14: $batch=13", "b15: $batch=14", "b16: $batch=15",
+    "b17: $batch=16", "b18: $batch=17", "b19: $batch=18", "b20: $batch=19",
+    "b21: $batch=20", "b22: $batch=21", "b23: $batch=22", "b24: $batch=23",
+    "b25: $batch=24", "b26: $batch=25", "b27: $batch=26", "b28: $batch=27",
+    "b29: $batch=28", "b30: $batch=29", "b31: $batch=30", "b32: $batch=31",
+    NULL};
 
-/* SPEC §4 Ex 4 (K = 1/8) and Ex 5 (K = 1). */
-const struct brs_paper_steady vfy_brs_steady4 = {0.953, 0.956, 0.956};
-const struct brs_paper_steady vfy_brs_steady5 = {0.732, 0.743, 0.757};
-
-/* Free the buffers of a case; NULL entries are fine. */
-static void free_all(double **bufs, size_t count)
+/* Each batch its own seed (vfy_adjust_fn). */
+static sim_status batch_seed(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
 {
-    for (size_t i = 0; i < count; i++)
-        free(bufs[i]);
+    (void)msg;
+    (void)msglen;
+    const double batch = vfy_values_get(&row->values, "batch");
+    if (!isnan(batch))
+        solver->seed = row->scene.seed + 1000 * (row->index + 1) + (uint64_t)batch;
+    return SIM_OK;
 }
 
-static int alloc_all(double **bufs, const size_t *sizes, size_t count)
-{
-    int ok = 1;
-    for (size_t i = 0; i < count; i++) {
-        bufs[i] = malloc(sizes[i] * sizeof(double));
-        ok &= bufs[i] != NULL;
-    }
-    return ok;
-}
+static const char *const steady_needs[] = {"T_le", "T_grad", "uy_le", "uy_grad", NULL};
+static const char *const steady_values[] = {"T_star_le", "T_star_grad", NULL};
+/* T* = the batches' mean of the time average over the second half; the
+ * costs and counts summed over the batches. */
+static const vfy_metric steady_metrics[] = {
+    {"T_star", vfy_metric_batch_mean, "T", NULL, 0.5},
+    {"T_star_sd", vfy_metric_batch_se, "T", NULL, 0.5},
+    {"T_star_ci", vfy_metric_batch_t_ci, "T_star_sd", NULL, 0},
+    {"dev_uy_grad", vfy_metric_max_abs_diff, "uy@*", "uy_grad", 0},
+    {"N", vfy_metric_variants_sum, "N", NULL, 0},
+    {"violations", vfy_metric_variants_sum, "violations", NULL, 0},
+    {"collisions", vfy_metric_variants_sum, "collisions", NULL, 0},
+    {"background", vfy_metric_variants_sum, "background", NULL, 0},
+    {"events", vfy_metric_variants_sum, "events", NULL, 0},
+    {"cpu_s", vfy_metric_variants_sum, "cpu_s", NULL, 0},
+    {"wall_s", vfy_metric_variants_sum, "wall_s", NULL, 0},
+    {"ns_per_event", vfy_metric_per, "cpu_s", "events", 1e9},
+    {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+static const vfy_check_spec steady_checks[] = {
+    {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = NULL}};
+static const vfy_column steady_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"T_star", NULL, "%.5f"},
+    {"T_star_ci", NULL, "%.5f"}, {"dev_uy_grad", NULL, "%.4f"},
+    {"fictitious_fraction", NULL, "%.3f"}, {"violations", NULL, "%.0f"},
+    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
 
-/* Time average of mean[m] over the output times t[m] >= t_from. */
-static double time_average(const double *t, const double *mean, size_t M, double t_from)
+/* n -> infinity: of T* (its value, half-width and the fit's chi^2), and of
+ * T(t) at every output time for the figure; the closures' steady states and
+ * the Grad closure at t_end for the case checks. */
+static sim_status steady_extrapolate(vfy_case_run *run, vfy_report *r, char *msg,
+                                     size_t msglen)
 {
-    double s = 0.0;
-    size_t count = 0;
-    for (size_t m = 0; m < M; m++) {
-        if (t[m] >= t_from) {
-            s += mean[m];
-            count++;
-        }
-    }
-    return s / (double)count;
-}
-
-sim_status vfy_case_brs_steady(const vfy_case *c, const vfy_options *o, vfy_report *r,
-                               char *msg, size_t msglen)
-{
-    const struct brs_paper_steady *paper = c->data;
-    sim_scene scene, solver;
-    sim_status status = vfy_load_case_scene(c, o, &scene, &solver, msg, msglen);
-    if (status != SIM_OK)
-        return status;
-    /* Rows with n N fixed, so each row costs about the same. */
-    const size_t rows = 3, M = scene.outputs;
-    const size_t nN = o->size == VFY_PAPER ? (size_t)1 << 21 : (size_t)1 << 14;
-    size_t n[VFY_ROWS_MAX + 1];
-    for (size_t i = 0; i < rows; i++)
-        n[i] = (o->size == VFY_PAPER ? (size_t)64 : (size_t)16) << (2 * i);
-    const double t_from = 0.5 * scene.t_end;
-
-    static const char *const cols[] = {
-        "n", "N", "T_star", "T_star_ci", "dev_uy_grad", "fictitious_fraction", "violations",
-        VFY_COST_COLUMNS};
-    vfy_table table;
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    enum { T_GRID, T_LE, T_GRAD, UY_LE, UY_GRAD, BATCH_T, BAND_T, BAND_T_CI, BAND_U, BAND_U_CI,
-           NBUF };
-    double *buf[NBUF] = {0};
-    const size_t sizes[NBUF] = {M, M, M, M, M, M, (rows + 1) * M, (rows + 1) * M, rows * M,
-                                rows * M};
-    vfy_refs refs = {0};
-    sim_error err;
-    if (!alloc_all(buf, sizes, NBUF)) {
+    (void)r;
+    const size_t rows = run->nrows, M = run->rows[0].res.outputs;
+    double *buf = malloc((3 * rows + M) * sizeof *buf);
+    size_t *n = malloc(rows * sizeof *n);
+    if (buf == NULL || n == NULL || vfy_run_extrapolate(run, "T@*", NULL) != 0) {
+        free(buf);
+        free(n);
         snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-        goto done;
+        return SIM_ENOMEM;
     }
-    double *t = buf[T_GRID];
-    if ((status = vfy_scene_references(&scene, &refs, &err)) != SIM_OK) {
-        vfy_scene_format_error(&scene, &err, msg, msglen);
-        goto done;
-    }
-    if (!vfy_refs_column(&refs, "T_le", buf[T_LE])) {
-        snprintf(msg, msglen, "%s: the scene has no hard-sphere closures (allowed "
-                 "collisions.kernel = hard-spheres and background.kernel = hard-spheres)",
-                 scene.file);
-        status = SIM_EINVAL;
-        goto done;
-    }
-    vfy_refs_column(&refs, "T_grad", buf[T_GRAD]);
-    vfy_refs_column(&refs, "uy_le", buf[UY_LE]);
-    vfy_refs_column(&refs, "uy_grad", buf[UY_GRAD]);
-
-    /* Each row runs in BATCHES independent batches (seeds scene seed + 1000 (i+1)
-     * + b): the spread of the batches' time averages gives T*'s confidence
-     * interval, which a time average of correlated per-time intervals cannot. */
-    double T_star[VFY_ROWS_MAX], T_star_sd[VFY_ROWS_MAX], T_star_ci[VFY_ROWS_MAX];
-    double wall_total = 0.0;
-    const double t_quantile = gsl_cdf_tdist_Pinv(0.9995, BATCHES - 1);
+    double *T_star = buf, *sd = buf + rows, *grad = buf + 3 * rows, T_inf, T_sd, chi2;
     for (size_t i = 0; i < rows; i++) {
-        double *T_sum = buf[BAND_T] + i * M, *T_ci2 = buf[BAND_T_CI] + i * M;
-        double *u_sum = buf[BAND_U] + i * M, *u_ci2 = buf[BAND_U_CI] + i * M;
-        memset(T_sum, 0, M * sizeof *T_sum);
-        memset(T_ci2, 0, M * sizeof *T_ci2);
-        memset(u_sum, 0, M * sizeof *u_sum);
-        memset(u_ci2, 0, M * sizeof *u_ci2);
-        double batch[BATCHES], cpu = 0.0, wall = 0.0;
-        sim_counts counts = {0};
-        solver.particles.n = n[i];
-        solver.particles.ensembles = nN / n[i] / BATCHES;
-        for (size_t b = 0; b < BATCHES; b++) {
-            char label[96];
-            snprintf(label, sizeof label, "%s n=%zu batch %zu/%d", c->name, n[i], b + 1, BATCHES);
-            solver.seed = scene.seed + 1000 * (i + 1) + b;
-            sim_ensemble_result res;
-            if ((status = vfy_simulate(&solver, o, label, &res, msg, msglen)) != SIM_OK) {
-                sim_ensemble_result_free(&res);
-                goto done;
-            }
-            memcpy(t, res.t, M * sizeof *t);
-            for (size_t m = 0; m < M; m++) {
-                double ci_T = sim_result_ci(&res, m, SIM_OBS_T);
-                double ci_u = sim_result_ci(&res, m, SIM_OBS_UY);
-                buf[BATCH_T][m] = sim_result_mean(&res, m, SIM_OBS_T);
-                T_sum[m] += buf[BATCH_T][m];
-                T_ci2[m] += ci_T * ci_T;
-                u_sum[m] += sim_result_mean(&res, m, SIM_OBS_UY);
-                u_ci2[m] += ci_u * ci_u;
-            }
-            batch[b] = time_average(t, buf[BATCH_T], M, t_from);
-            sim_counts_add(&counts, &res.counts);
-            cpu += res.cpu_seconds;
-            wall += res.wall_seconds;
-            sim_ensemble_result_free(&res);
-        }
-        /* the mean of the batches, and its half-width from theirs */
-        for (size_t m = 0; m < M; m++) {
-            T_sum[m] /= BATCHES;
-            T_ci2[m] = sqrt(T_ci2[m]) / BATCHES;
-            u_sum[m] /= BATCHES;
-            u_ci2[m] = sqrt(u_ci2[m]) / BATCHES;
-        }
-        T_star[i] = gsl_stats_mean(batch, 1, BATCHES);
-        T_star_sd[i] = gsl_stats_sd_m(batch, 1, BATCHES, T_star[i]) / sqrt((double)BATCHES);
-        T_star_ci[i] = t_quantile * T_star_sd[i];
-
-        double dev_u = 0.0;
-        for (size_t m = 0; m < M; m++)
-            dev_u = fmax(dev_u, fabs(u_sum[m] - buf[UY_GRAD][m]));
-        char name[128];
-        vfy_check_count(r, vfy_name(name, sizeof name, "%s n=%zu majorant violations", c->name,
-                                    n[i]),
-                        counts.violations, 0);
-        double events = (double)counts.candidates;
-        double accepted = (double)(counts.collisions + counts.background);
-        vfy_table_cell(&table, "%zu", n[i]);
-        vfy_table_cell(&table, "%zu", BATCHES * solver.particles.ensembles);
-        vfy_table_cell(&table, "%.5f", T_star[i]);
-        vfy_table_cell(&table, "%.5f", T_star_ci[i]);
-        vfy_table_cell(&table, "%.4f", dev_u);
-        vfy_table_cell(&table, "%.3f", 1.0 - accepted / events);
-        vfy_table_cell(&table, "%llu", (unsigned long long)counts.violations);
-        vfy_cost_cells(&table, cpu, wall, events);
-        wall_total += wall;
-        if ((status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen)) != SIM_OK)
-            goto done;
+        n[i] = run->rows[i].solver.particles.n;
+        T_star[i] = vfy_values_get(&run->rows[i].values, "T_star");
+        sd[i] = vfy_values_get(&run->rows[i].values, "T_star_sd");
     }
-
-    /* n -> infinity: of T*, and of T(t) at every output time for the figure. */
-    double T_inf, sd, chi2;
-    vfy_extrapolate_inverse_n(rows, n, T_star, T_star_sd, &T_inf, &sd, &chi2);
-    const double T_inf_ci = SIM_LAMBDA_P * sd;
-    for (size_t m = 0; m < M; m++) {
-        double mm[VFY_ROWS_MAX], ss[VFY_ROWS_MAX], s_m, x2;
-        for (size_t i = 0; i < rows; i++) {
-            mm[i] = buf[BAND_T][i * M + m];
-            ss[i] = buf[BAND_T_CI][i * M + m] / SIM_LAMBDA_P;
-        }
-        vfy_extrapolate_inverse_n(rows, n, mm, ss, &buf[BAND_T][rows * M + m], &s_m, &x2);
-        buf[BAND_T_CI][rows * M + m] = SIM_LAMBDA_P * s_m;
+    vfy_extrapolate_inverse_n(rows, n, T_star, sd, &T_inf, &T_sd, &chi2);
+    const vfy_row *first = &run->rows[0];
+    vfy_row_series(first, "T_grad", grad, NULL);
+    const double t_end = first->solver.t_end;
+    vfy_values_set(&run->values, "T_inf", T_inf);
+    vfy_values_set(&run->values, "T_inf_ci", SIM_LAMBDA_P * T_sd);
+    vfy_values_set(&run->values, "chi2", chi2);
+    vfy_values_set(&run->values, "T_grad_end", grad[M - 1]);
+    vfy_values_set(&run->values, "T_star_le", vfy_values_get(&first->values, "T_star_le"));
+    vfy_values_set(&run->values, "T_star_grad", vfy_values_get(&first->values, "T_star_grad"));
+    vfy_values_set(&run->values, "nN", (double)n[0] * vfy_values_get(&first->values, "N"));
+    vfy_values_set(&run->values, "t_from", 0.5 * t_end);
+    vfy_values_set(&run->values, "t_end", t_end);
+    if (run->o->progress) {
+        char line[256];
+        fprintf(run->o->progress, "   %s\n",
+                vfy_expand(line, sizeof line, "{case}: kinetic T* = {T_inf:%.5f} ± "
+                           "{T_inf_ci:%.5f}; closures LE {T_star_le:%.5f}, Grad "
+                           "{T_star_grad:%.5f}", run, NULL));
     }
-    const ref_background_params p = vfy_background_params(&scene);
-    const double le = ref_background_hs_T_steady(&p, REF_BACKGROUND_LE);
-    const double grad = ref_background_hs_T_steady(&p, REF_BACKGROUND_GRAD);
-
-    char name[128];
-    vfy_check_printed(r, vfy_name(name, sizeof name, "%s kinetic T* (n -> infinity) vs paper",
-                                  c->name),
-                      T_inf, T_inf_ci, paper->kinetic, VFY_TOL_BRS_PRINTED_DIGITS);
-    vfy_check_printed(r, vfy_name(name, sizeof name, "%s LE closure T* vs paper", c->name), le,
-                      0.0, paper->le, VFY_TOL_BRS_PRINTED_DIGITS);
-    vfy_check_printed(r, vfy_name(name, sizeof name, "%s Grad closure T* vs paper", c->name),
-                      grad, 0.0, paper->grad, VFY_TOL_BRS_PRINTED_DIGITS);
-    /* The closures have relaxed by t_end (so the DSMC average over the second
-     * half is a steady value too, the closures relaxing on the same scale). */
-    vfy_check_absolute(r, vfy_name(name, sizeof name, "%s Grad closure at t_end vs its T*",
-                                   c->name),
-                       buf[T_GRAD][M - 1], grad, 1e-6);
-    /* The O(1/n) model describes the rows: chi^2 with 1 degree of freedom
-     * below its 0.999 quantile. */
-    vfy_check_range(r, vfy_name(name, sizeof name, "%s O(1/n) fit of T* chi^2", c->name), chi2,
-                    0.0, 10.8);
-    if (o->progress)
-        fprintf(o->progress, "   %s: kinetic T* = %.5f ± %.5f (paper %.3f); closures LE %.5f, "
-                "Grad %.5f\n", c->name, T_inf, T_inf_ci, paper->kinetic, le, grad);
-
-    char comment[600], notes[2400], title[160];
-    vfy_run_comment(&solver, comment, sizeof comment);
-    snprintf(title, sizeof title, "%s: paper B, hard spheres, steady temperature (%s sizes)",
-             c->name, o->size == VFY_PAPER ? "paper" : "quick");
-    snprintf(notes, sizeof notes,
-             "%s; n N = %zu per row in %d independent batches (seeds seed + 1000 row + "
-             "batch).\n\nT_star = time average over t in [%g, %g] of the ensemble mean of the "
-             "centred T; T_star_ci = t-quantile(0.9995, %d) x the standard error over the "
-             "batches. Extrapolated to n = infinity (weighted least "
-             "squares in 1/n): kinetic T* = %.5f ± %.5f (paper %.3f), judged within half a "
-             "unit of the paper's last digit (0.0005) plus its confidence half-width, so that "
-             "it separates the kinetic value from the closures' (0.003 apart for K = 1/8) "
-             "wherever the half-width is below 0.0025 (paper sizes; at quick sizes it is not, "
-             "and the check is correspondingly loose). Closures' steady states "
-             "(GSL Brent root of dT/dt at u = u_B): local equilibrium (B.21) %.5f (paper "
-             "%.3f), Grad (B.22) %.5f (paper %.3f). chi^2 of the O(1/n) fit %.2f. dev_uy_grad "
-             "= max over t of |eta1 of u_y - u_y of (B.22)|. fictitious_fraction = 1 - "
-             "accepted/candidate events (binary and background). Total wall time %.1f s.",
-             comment, nN, BATCHES, t_from, scene.t_end, BATCHES - 1, T_inf, T_inf_ci,
-             paper->kinetic, le, paper->le,
-             grad, paper->grad, chi2, wall_total);
-    if ((status = vfy_write_case_tables(o, c->name, &table, comment, title, notes, msg,
-                                        msglen)) != SIM_OK)
-        goto done;
-    n[rows] = 0;   /* the extrapolated curve */
-    const char *T_names[] = {"T_le", "T_grad"}, *u_names[] = {"uy_le", "uy_grad"};
-    const double *T_refs[] = {buf[T_LE], buf[T_GRAD]}, *u_refs[] = {buf[UY_LE], buf[UY_GRAD]};
-    snprintf(name, sizeof name, "%s-T", c->name);
-    int rc = vfy_write_curves(o, name, title, comment, t, M, 2, T_names, T_refs, rows + 1, n,
-                              buf[BAND_T], buf[BAND_T_CI], "T", 0.0, 0);
-    snprintf(name, sizeof name, "%s-uy", c->name);
-    if (rc == 0)
-        rc = vfy_write_curves(o, name, title, comment, t, M, 2, u_names, u_refs, rows, n, buf[BAND_U],
-                              buf[BAND_U_CI], "uy", 0.0, 0);
-    if (rc != 0)
-        status = vfy_io_error(name, msg, msglen);
-done:
-    vfy_refs_free(&refs);
-    vfy_table_free(&table);
-    free_all(buf, NBUF);
-    return status;
+    free(buf);
+    free(n);
+    return SIM_OK;
 }
+
+/* The checks on the extrapolation, against the T* paper B prints (KINETIC,
+ * LE, GRAD) to VFY_TOL_BRS_PRINTED_DIGITS decimals. */
+#define STEADY_CASE_CHECKS(KINETIC, LE, GRAD)                                          \
+    {{.name = "{case} kinetic T* (n -> infinity) vs paper", .rule = vfy_rule_printed,     \
+      .value = "T_inf", .plus = "T_inf_ci", .x = KINETIC, .tol = VFY_TOL_BRS_PRINTED_DIGITS}, \
+     {.name = "{case} LE closure T* vs paper", .rule = vfy_rule_printed,                 \
+      .value = "T_star_le", .x = LE, .tol = VFY_TOL_BRS_PRINTED_DIGITS},                  \
+     {.name = "{case} Grad closure T* vs paper", .rule = vfy_rule_printed,               \
+      .value = "T_star_grad", .x = GRAD, .tol = VFY_TOL_BRS_PRINTED_DIGITS},              \
+     /* the closures have relaxed by t_end (so the DSMC average over the second \
+      * half is a steady value too, the closures relaxing on the same scale) */ \
+     {.name = "{case} Grad closure at t_end vs its T*", .rule = vfy_rule_absolute,       \
+      .value = "T_grad_end", .expected = "T_star_grad", .tol = 1e-6},                    \
+     /* the O(1/n) model describes the rows: chi^2 with 1 degree of freedom     \
+      * below its 0.999 quantile */                                              \
+     {.name = "{case} O(1/n) fit of T* chi^2", .rule = vfy_rule_range, .value = "chi2",  \
+      .lo = 0.0, .hi = 10.8},                                                            \
+     {.name = NULL}}
+static const vfy_check_spec steady4_checks[] = STEADY_CASE_CHECKS(0.953, 0.956, 0.956);
+static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 0.757);
+
+#define STEADY_NOTES(KINETIC, LE, GRAD)                                                \
+    "{comment}; n N = {nN} per row in 32 independent batches (seeds seed + 1000 row + "   \
+    "batch).\n\nT_star = time average over t in [{t_from:%g}, {t_end:%g}] of the ensemble " \
+    "mean of the centred T; T_star_ci = t-quantile(0.9995, 31) x the standard error over " \
+    "the batches. Extrapolated to n = infinity (weighted least squares in 1/n): kinetic "  \
+    "T* = {T_inf:%.5f} ± {T_inf_ci:%.5f} (paper " KINETIC "), judged within half a unit of " \
+    "the paper's last digit (0.0005) plus its confidence half-width, so that it "          \
+    "separates the kinetic value from the closures' (0.003 apart for K = 1/8) wherever "   \
+    "the half-width is below 0.0025 (paper sizes; at quick sizes it is not, and the check " \
+    "is correspondingly loose). Closures' steady states (GSL Brent root of dT/dt at u = "  \
+    "u_B): local equilibrium (B.21) {T_star_le:%.5f} (paper " LE "), Grad (B.22) "          \
+    "{T_star_grad:%.5f} (paper " GRAD "). chi^2 of the O(1/n) fit {chi2:%.2f}. "           \
+    "dev_uy_grad = max over t of |eta1 of u_y - u_y of (B.22)|. fictitious_fraction = 1 - " \
+    "accepted/candidate events (binary and background). Total wall time "                 \
+    "{wall_total:%.1f} s."
+#define BRS_STEADY(CHECKS, NOTES)                                                      \
+    {.paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
+                    .values = {"64 256 1024", "1024 256 64"}},                           \
+     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
+                    .values = {"16 64 256", "32 8 2"}},                                  \
+     .label = "{case} n={n} batch", .variants = steady_batches, .adjust = batch_seed,    \
+     .needs = steady_needs,                                                              \
+     .needs_why = "paper B's closures need collisions.kernel = hard-spheres and "        \
+                  "background.kernel = hard-spheres",                                    \
+     .values = steady_values, .metrics = steady_metrics, .checks = steady_checks,        \
+     .columns = steady_columns, .after_rows = steady_extrapolate, .case_checks = CHECKS, \
+     .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T@*",          \
+                  .refs = {"T_le", "T_grad"}, .extrapolated = 1},                        \
+                 {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy@*",        \
+                  .refs = {"uy_le", "uy_grad"}}},                                        \
+     .title = "{case}: paper B, hard spheres, steady temperature ({size} sizes)",       \
+     .notes = NOTES}
+const vfy_case_desc vfy_brs_ex4 =
+    BRS_STEADY(steady4_checks, STEADY_NOTES("0.953", "0.956", "0.956"));
+const vfy_case_desc vfy_brs_ex5 =
+    BRS_STEADY(steady5_checks, STEADY_NOTES("0.732", "0.743", "0.757"));

@@ -14,10 +14,7 @@
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
 extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4, vfy_grw_ex5;
 /* case_brs.c */
-sim_status vfy_case_brs_steady(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                               size_t);
-extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3;
-extern const struct brs_paper_steady vfy_brs_steady4, vfy_brs_steady5;
+extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3, vfy_brs_ex4, vfy_brs_ex5;
 /* case_ms.c (paper C) */
 extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
     vfy_ms_table1, vfy_ms_tails;
@@ -64,9 +61,9 @@ static const vfy_case cases[] = {
     {"brs-ex3", "brs", "paper B Ex 3: Maxwell kernels, light background (slow relaxation)", 0,
      vfy_run_described, NULL, &vfy_brs_ex3},
     {"brs-ex4", "brs", "paper B Ex 4: hard spheres, K = 1/8: kinetic T* vs LE and Grad closures",
-     1, vfy_case_brs_steady, &vfy_brs_steady4, NULL},
+     1, vfy_run_described, NULL, &vfy_brs_ex4},
     {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,
-     vfy_case_brs_steady, &vfy_brs_steady5, NULL},
+     vfy_run_described, NULL, &vfy_brs_ex5},
     {"ms-a2-white-noise", "ms", "paper C Fig. 1: steady a2 vs alpha, white noise, vs (C.10)", 1,
      vfy_run_described, NULL, &vfy_ms_white_noise},
     {"ms-a2-gaussian", "ms", "paper C Figs. 4, 6: steady a2, a3 vs alpha, Gaussian (HCS)", 1,

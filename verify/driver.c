@@ -777,10 +777,13 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
             memcpy(mean + (rows - 1) * M, run->extra_mean, M * sizeof *mean);
             memcpy(ci + (rows - 1) * M, run->extra_ci, M * sizeof *ci);
         }
-        char name[160];
+        char name[160], quantity[64];   /* "T@*" is drawn as T */
         snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
+        snprintf(quantity, sizeof quantity, "%.*s",
+                 (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
+                 f->quantity);
         rc = vfy_write_curves(run->o, name, title, run->comment, last->res.t, M, nref,
-                              names, refs, rows, n, mean, ci, f->quantity, f->x_from,
+                              names, refs, rows, n, mean, ci, quantity, f->x_from,
                               f->panel_per_row);
     }
     free(buf);

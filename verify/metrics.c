@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
+#include <gsl/gsl_statistics_double.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,6 +79,27 @@ void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
 }
 
 double vfy_student_t(double p, double dof) { return gsl_cdf_tdist_Pinv(p, dof); }
+
+double vfy_time_average(const double *t, const double *mean, size_t count, double t_from)
+{
+    double s = 0.0;
+    size_t used = 0;
+    for (size_t m = 0; m < count; m++) {
+        if (t[m] >= t_from) {
+            s += mean[m];
+            used++;
+        }
+    }
+    return used ? s / (double)used : NAN;
+}
+
+double vfy_max_abs_diff(const double *a, const double *b, size_t count)
+{
+    double worst = 0.0;
+    for (size_t m = 0; m < count; m++)
+        worst = fmax(worst, fabs(a[m] - b[m]));
+    return worst;
+}
 
 size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t bins, double b,
                     double c_lo, double lambda, double *A, double *A_sd, double *K)
@@ -303,4 +325,79 @@ double vfy_metric_student_ci(const vfy_case_run *run, const vfy_row *row, const 
 {
     const double N = value_of(run, row, "N");
     return value_of(run, row, m->a) * vfy_student_t(VFY_STUDENT_P, N - 1.0) / SIM_LAMBDA_P;
+}
+
+/* name of variant k of the row's case: "a" (k = 0) or "a@VARIANT". */
+static const char *variant_name(const vfy_case_run *run, const char *a, size_t k, char *buf,
+                                size_t len)
+{
+    const char *v = run->d->variants ? run->d->variants[k] : "";
+    snprintf(buf, len, "%s%s%.*s", a, k ? "@" : "", k ? (int)strcspn(v, ":") : 0, v);
+    return buf;
+}
+
+double vfy_metric_variants_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    double sum = 0.0;
+    char name[64];
+    for (size_t k = 0; k < vfy_variant_count(run->d); k++)
+        sum += value_of(run, row, variant_name(run, m->a, k, name, sizeof name));
+    return sum;
+}
+
+/* The time averages of series a over t >= x t_end, one per variant, into
+ * avg (B of them); returns B, or 0 when out of memory or a series is
+ * missing. */
+static size_t batch_averages(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m,
+                             double *avg)
+{
+    const size_t B = vfy_variant_count(run->d), M = row->res.outputs;
+    double *mean = malloc(M * sizeof *mean);
+    char name[64];
+    size_t k = 0;
+    for (; mean != NULL && k < B; k++) {
+        if (vfy_row_series(row, variant_name(run, m->a, k, name, sizeof name), mean, NULL) != 0)
+            break;
+        avg[k] = vfy_time_average(row->res.t, mean, M, m->x * row->solver.t_end);
+    }
+    free(mean);
+    return k == B ? B : 0;
+}
+
+double vfy_metric_batch_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    double *avg = malloc(vfy_variant_count(run->d) * sizeof *avg), v = NAN;
+    size_t B = avg ? batch_averages(run, row, m, avg) : 0;
+    if (B > 0)
+        v = gsl_stats_mean(avg, 1, B);
+    free(avg);
+    return v;
+}
+
+double vfy_metric_batch_se(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    double *avg = malloc(vfy_variant_count(run->d) * sizeof *avg), v = NAN;
+    size_t B = avg ? batch_averages(run, row, m, avg) : 0;
+    if (B > 1)
+        v = gsl_stats_sd_m(avg, 1, B, gsl_stats_mean(avg, 1, B)) / sqrt((double)B);
+    free(avg);
+    return v;
+}
+
+double vfy_metric_batch_t_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const double B = (double)vfy_variant_count(run->d);
+    return vfy_student_t(VFY_STUDENT_P, B - 1.0) * value_of(run, row, m->a);
+}
+
+double vfy_metric_max_abs_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    return series_pair(row, m, vfy_max_abs_diff, 0);
+}
+
+double vfy_metric_per(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const double b = value_of(run, row, m->b);
+    return b > 0 ? m->x * value_of(run, row, m->a) / b : 0.0;
 }

@@ -45,6 +45,13 @@ double vfy_student_t(double p, double dof);
  * SIM_LAMBDA_P = 3.2 standard errors is the normal quantile at about it. */
 #define VFY_STUDENT_P 0.9995
 
+/* The mean of mean[m] over the output times t[m] >= t_from (a steady
+ * value's time average); NAN when there is none. */
+double vfy_time_average(const double *t, const double *mean, size_t count, double t_from);
+
+/* max_m |a[m] - b[m]|. */
+double vfy_max_abs_diff(const double *a, const double *b, size_t count);
+
 /* Weighted least squares of ln f = ln K - A c^b over the bins k with
  * c[k] >= c_lo, f[k] > 0 and ci[k] < f[k]/2 (ci = lambda standard errors):
  * a high-energy tail f ~ K exp(-A c^b) (paper C §4).  Sets A, its standard
@@ -102,6 +109,20 @@ double vfy_metric_named_by_text(const vfy_case_run *run, const vfy_row *row,
  * of the normal one: a x t(VFY_STUDENT_P, N - 1) / SIM_LAMBDA_P (4.07/3.2
  * for N = 16). */
 double vfy_metric_student_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* Over the row's variants run as independent batches (driver.h): the sum of
+ * value a over them (costs and counts); the mean of the batches' time
+ * averages of series a over t >= x t_end, and its standard error (the
+ * spread of the batches over sqrt(batches)); a standard error a as a
+ * confidence half-width, with Student's t for batches - 1 degrees of
+ * freedom. */
+double vfy_metric_variants_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+double vfy_metric_batch_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+double vfy_metric_batch_se(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+double vfy_metric_batch_t_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* vfy_max_abs_diff of series a against series b. */
+double vfy_metric_max_abs_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* x a / b, 0 where b <= 0 (ns_per_event = 1e9 cpu_s / events). */
+double vfy_metric_per(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 /* The solver scene's thermostat strength and time step. */
 double vfy_metric_heating_strength(const vfy_case_run *run, const vfy_row *row,
                                    const vfy_metric *m);

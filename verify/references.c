@@ -3,6 +3,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "background.h"
+#include "scene_refs.h"
 #include "sonine.h"
 
 /* Paper C's estimates in d = 3 at the scene's restitution coefficient. */
@@ -24,6 +26,19 @@ SONINE(mu4_1)
 SONINE(tail_A_white_noise)
 SONINE(tail_A_gaussian)
 #undef SONINE
+
+/* Paper B's hard-sphere closures' steady temperature (GSL Brent root of
+ * dT/dt at u = u_B), for hard spheres in a hard-sphere background. */
+static double hs_steady(const sim_scene *s, ref_background_closure closure)
+{
+    if (!s->background.present || s->background.kernel != SIM_KERNEL_HARD_SPHERES
+        || !s->collisions.present || s->collisions.kernel != SIM_KERNEL_HARD_SPHERES)
+        return NAN;
+    const ref_background_params p = vfy_background_params(s);
+    return ref_background_hs_T_steady(&p, closure);
+}
+static double T_star_le_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_LE); }
+static double T_star_grad_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_GRAD); }
 
 static const vfy_reference registry[] = {
     /* series, in groups (one name each): scene_refs.h decides which apply */
@@ -57,6 +72,10 @@ static const vfy_reference registry[] = {
      tail_A_white_noise_at},
     {"A_gaussian", VFY_REF_VALUE, "paper C: Gaussian-thermostat tail amplitude",
      tail_A_gaussian_at},
+    /* values of paper B's hard-sphere scenes */
+    {"T_star_le", VFY_REF_VALUE, "paper B (B.21): steady T of the local-equilibrium closure",
+     T_star_le_at},
+    {"T_star_grad", VFY_REF_VALUE, "paper B (B.22): steady T of the Grad closure", T_star_grad_at},
 };
 
 size_t vfy_reference_count(void) { return sizeof registry / sizeof *registry; }
