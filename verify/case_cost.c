@@ -70,10 +70,9 @@
 #define PRED_N_MAX ((size_t)1 << 24)
 #define PRED_H_HALVINGS 12
 #define GRID_MAX 64            /* grid points of one case */
+#define VFY_COST_TARGETS_TITLE "Cheapest grid point per target, and the model's prediction"
 #define AXIS_MAX 8             /* values of n or N on one axis */
 
-static const double targets[] = {1e-2, 1e-3, 1e-4};
-#define NTARGETS (sizeof targets / sizeof *targets)
 
 /* ------------------------------------------------------------ shared pieces */
 
@@ -216,111 +215,6 @@ static void target_cells(vfy_table *t, int present, const char *scheme, size_t n
         vfy_table_number(t, present && h > 0.0, "%g", h);
     vfy_table_number(t, present, "%.2e", err);
     vfy_table_number(t, present, "%.3g", cpu);
-}
-
-/* One curve of the work-precision figure: points first..first+count-1 of
- * the arrays, in the order given by idx. */
-typedef struct cost_series {
-    char title[96];
-    size_t idx[GRID_MAX];
-    size_t count;
-} cost_series;
-
-/* The model's cheapest point per target (a prediction), for the figure. */
-typedef struct cost_prediction {
-    size_t count;
-    double cpu[NTARGETS], err[NTARGETS];
-    char label[NTARGETS][48];
-} cost_prediction;
-
-/* out_dir/<name>-points.csv (one gnuplot index block per series: cpu_s,
- * Err, Err_model, label; then the predictions) and out_dir/<name>.gp: Err
- * against CPU seconds, log-log, each series with its model dotted, the
- * targets as grey lines, the predicted cheapest points as open circles;
- * rendered to <name>.png when gnuplot is installed.  Returns 0 or -1. */
-static int write_figure(const vfy_options *o, const char *name, const char *title,
-                        const char *ylabel, const cost_series *series, size_t nseries, const double *cpu,
-                        const double *err, const double *model, char (*labels)[24],
-                        const cost_prediction *pred)
-{
-    char data[1024], gp[1024], png[1024], tmp[1100], file[200];
-    snprintf(file, sizeof file, "%s-points", name);
-    FILE *f = vfy_file_begin(vfy_report_path(o, file, ".csv", data, sizeof data), tmp,
-                             sizeof tmp);
-    if (f == NULL)
-        return -1;
-    fprintf(f, "# %s: work-precision points, one block per curve (gnuplot index)\n"
-               "# cpu_s,Err,Err_model,label\n", name);
-    for (size_t s = 0; s < nseries; s++) {
-        fprintf(f, "%s# %s\n", s ? "\n\n" : "", series[s].title);
-        for (size_t k = 0; k < series[s].count; k++) {
-            size_t i = series[s].idx[k];
-            fprintf(f, "%.6g,%.6g,%.6g,%s\n", cpu[i], err[i], model[i], labels[i]);
-        }
-    }
-    fprintf(f, "\n\n# the model's cheapest point per target (predictions)\n");
-    for (size_t k = 0; k < pred->count; k++)
-        fprintf(f, "%.6g,%.6g,%.6g,%s\n", pred->cpu[k], pred->err[k], pred->err[k],
-                pred->label[k]);
-    if (vfy_file_commit(f, tmp, data, 1) != 0)
-        return -1;
-    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
-    if (f == NULL)
-        return -1;
-    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1100,750 font ',10'\n"
-               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
-               "set title '%s'\nset xlabel 'CPU seconds (all threads)'\n"
-               "set ylabel '%s'\nset logscale xy\nset format y '%%.0e'\n"
-               "set grid\nset key outside right top\n"
-               "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
-            name, gp, vfy_report_path(o, name, ".png", png, sizeof png), title, ylabel);
-    for (size_t s = 0; s < nseries; s++)
-        fprintf(f, "%s '%s' index %zu using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc %zu "
-                   "title '%s', '' index %zu using 1:3 with lines dt 3 lw 2 lc %zu notitle, "
-                   "'' index %zu using 1:2:4 with labels offset 0.6,0.7 font ',7' left "
-                   "tc lt %zu notitle",
-                s ? "," : "", data, s, s + 1, series[s].title, s, s + 1, s, s + 1);
-    if (pred->count > 0)
-        fprintf(f, ", '%s' index %zu using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' "
-                   "title 'predicted cheapest per target (model)', '' index %zu using 1:2:4 "
-                   "with labels offset 0,-1.4 font ',7' tc rgb 'black' notitle",
-                data, nseries, nseries);
-    for (size_t i = 0; i < NTARGETS; i++)
-        fprintf(f, ", %g with lines dt 2 lc rgb 'gray50' %s", targets[i],
-                i ? "notitle" : "title 'targets 1e-2, 1e-3, 1e-4'");
-    fputc('\n', f);
-    if (vfy_file_commit(f, tmp, gp, 1) != 0)
-        return -1;
-    if (vfy_gnuplot(gp) < 0 && o->progress)
-        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
-    return 0;
-}
-
-/* The Markdown file: the grid table, then the targets table; the CSVs:
- * <name>.csv (grid) and <name>-targets.csv. */
-static sim_status write_tables(const vfy_options *o, const char *name, const vfy_table *grid,
-                               const vfy_table *tg, const char *comment, const char *title,
-                               const char *notes, const char *tnotes, char *msg,
-                               size_t msglen)
-{
-    char path[1024], tmp[1100], tname[200];
-    snprintf(tname, sizeof tname, "%s-targets", name);
-    if (vfy_table_write_csv(grid, vfy_report_path(o, name, ".csv", path, sizeof path),
-                            comment) != 0
-        || vfy_table_write_csv(tg, vfy_report_path(o, tname, ".csv", path, sizeof path),
-                               comment) != 0)
-        return vfy_io_error(path, msg, msglen);
-    FILE *f = vfy_file_begin(vfy_report_path(o, name, ".md", path, sizeof path), tmp,
-                             sizeof tmp);
-    if (f == NULL)
-        return vfy_io_error(path, msg, msglen);
-    vfy_table_print_markdown(grid, f, title, notes);
-    fputc('\n', f);
-    vfy_table_print_markdown(tg, f, "Cheapest grid point per target, and the model's "
-                             "prediction", tnotes);
-    if (vfy_file_commit(f, tmp, path, 1) != 0)
-        return vfy_io_error(path, msg, msglen);
-    return SIM_OK;
 }
 
 /* ------------------------------------------------ Maxwell kernels: n x N */
@@ -574,17 +468,17 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
     if (status != SIM_OK)
         goto done;
     char summary[600] = "", line[200];
-    cost_prediction pred = {0};
-    for (size_t t = 0; t < NTARGETS; t++) {
-        size_t i = vfy_cost_cheapest(err, cpu, P, targets[t]);
-        size_t j = vfy_cost_cheapest(perr, pcost, np, targets[t]);
+    vfy_wp_prediction pred = {0};
+    for (size_t t = 0; t < VFY_WP_TARGETS; t++) {
+        size_t i = vfy_cost_cheapest(err, cpu, P, vfy_wp_targets[t]);
+        size_t j = vfy_cost_cheapest(perr, pcost, np, vfy_wp_targets[t]);
         if (j < np) {
             pred.cpu[pred.count] = pcost[j];
             pred.err[pred.count] = perr[j];
             snprintf(pred.label[pred.count++], sizeof pred.label[0], "%.0e: n=%.0f N=%.0f",
-                     targets[t], pn[j], pN[j]);
+                     vfy_wp_targets[t], pn[j], pN[j]);
         }
-        vfy_table_cell(&tg, "%.0e", targets[t]);
+        vfy_table_cell(&tg, "%.0e", vfy_wp_targets[t]);
         vfy_table_cell(&tg, "%s", i < P ? "reached" : "not reached in the grid");
         target_cells(&tg, i < P, NULL, i < P ? (size_t)gn[i] : 0, i < P ? (size_t)gN[i] : 0,
                      0.0, i < P ? err[i] : NAN, i < P ? cpu[i] : NAN);
@@ -593,13 +487,13 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
                      j < np ? pcost[j] : NAN);
         if (i < P)
             snprintf(line, sizeof line, "%s%.0e: n = %.0f, N = %.0f (%.3g CPU s)", t ? "; " : "",
-                     targets[t], gn[i], gN[i], cpu[i]);
+                     vfy_wp_targets[t], gn[i], gN[i], cpu[i]);
         else if (j < np)
             snprintf(line, sizeof line, "%s%.0e: not in the grid; predicted n = %.0f, N = %.0f "
-                     "(%.3g CPU s)", t ? "; " : "", targets[t], pn[j], pN[j], pcost[j]);
+                     "(%.3g CPU s)", t ? "; " : "", vfy_wp_targets[t], pn[j], pN[j], pcost[j]);
         else
             snprintf(line, sizeof line, "%s%.0e: not in the grid nor below n = 2^24", t ? "; "
-                     : "", targets[t]);
+                     : "", vfy_wp_targets[t]);
         strncat(summary, line, sizeof summary - strlen(summary) - 1);
     }
     if (o->progress)
@@ -648,24 +542,28 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
              "smaller Err is shown). The model assumes kappa stays constant as n grows beyond the grid "
              "(memory effects are not modelled). Summary: %s.",
              ns[0], Ns[0], Ns[nN - 1], summary);
-    if ((status = write_tables(o, c->name, &table, &tg, comment, title, notes, tnotes, msg,
-                               msglen)) != SIM_OK)
+    if ((status = vfy_write_case_tables2(o, c->name, &table, comment, title, notes, &tg,
+                                        "-targets", VFY_COST_TARGETS_TITLE, tnotes, msg,
+                                        msglen)) != SIM_OK)
         goto done;
 
-    cost_series series[AXIS_MAX];
+    vfy_wp_series series[AXIS_MAX];
+    size_t idx[AXIS_MAX][AXIS_MAX];
     char labels[GRID_MAX][24];
     for (size_t b = 0; b < nN; b++) {
         snprintf(series[b].title, sizeof series[b].title, "N = %zu (n grows)", Ns[b]);
         series[b].count = nn;
+        series[b].idx = idx[b];
         for (size_t a = 0; a < nn; a++)
-            series[b].idx[a] = a * nN + b;
+            idx[b][a] = a * nN + b;
     }
     for (size_t i = 0; i < P; i++)
         snprintf(labels[i], sizeof labels[i], "n=%.0f", gn[i]);
     char ftitle[200];
     snprintf(ftitle, sizeof ftitle, "%s: Err against CPU time, %s", c->name, d->obs_name);
-    if (write_figure(o, c->name, ftitle, "Err (relative, max norm over the output times)",
-                     series, nN, cpu, err, model, labels, &pred) != 0)
+    if (vfy_write_work_precision(o, c->name, ftitle,
+                                 "Err (relative, max norm over the output times)", series, nN,
+                                 cpu, err, model, labels, &pred) != 0)
         status = vfy_io_error(c->name, msg, msglen);
 done:
     vfy_table_free(&table);
@@ -1032,22 +930,22 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
     }
     static const char *const scheme_names[] = {"jump", "euler", "strang"};
     char summary[900] = "", line[240];
-    cost_prediction pred = {0};
-    for (size_t t = 0; t < NTARGETS; t++) {
-        size_t i = vfy_cost_cheapest(err_hi, cpu, P, targets[t]);
-        size_t j = vfy_cost_cheapest(perr, pcost, np, targets[t]);
+    vfy_wp_prediction pred = {0};
+    for (size_t t = 0; t < VFY_WP_TARGETS; t++) {
+        size_t i = vfy_cost_cheapest(err_hi, cpu, P, vfy_wp_targets[t]);
+        size_t j = vfy_cost_cheapest(perr, pcost, np, vfy_wp_targets[t]);
         if (j < np) {
             pred.cpu[pred.count] = pcost[j];
             pred.err[pred.count] = perr[j];
             if (pscheme[j])
                 snprintf(pred.label[pred.count++], sizeof pred.label[0], "%.0e: %s n=%.0f "
-                         "N=%.0f h=%g", targets[t], scheme_names[pscheme[j]], pn[j], pN[j],
+                         "N=%.0f h=%g", vfy_wp_targets[t], scheme_names[pscheme[j]], pn[j], pN[j],
                          ph[j]);
             else
                 snprintf(pred.label[pred.count++], sizeof pred.label[0], "%.0e: jump n=%.0f "
-                         "N=%.0f", targets[t], pn[j], pN[j]);
+                         "N=%.0f", vfy_wp_targets[t], pn[j], pN[j]);
         }
-        vfy_table_cell(&tg, "%.0e", targets[t]);
+        vfy_table_cell(&tg, "%.0e", vfy_wp_targets[t]);
         vfy_table_cell(&tg, "%s", i < P ? "reached" : "not reached in the grid");
         target_cells(&tg, i < P, i < P ? spec_scheme(&spec[i]) : "", i < P ? spec[i].n : 0,
                      i < P ? spec[i].N : 0, i < P ? spec[i].h : 0.0, i < P ? err_hi[i] : NAN,
@@ -1062,15 +960,15 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
             snprintf(hs, sizeof hs, ", h = %g", ph[j]);
         if (i < P)
             snprintf(line, sizeof line, "%s%.0e: %s n = %zu, N = %zu%s (%.3g CPU s)",
-                     t ? "; " : "", targets[t], spec_scheme(&spec[i]), spec[i].n, spec[i].N,
+                     t ? "; " : "", vfy_wp_targets[t], spec_scheme(&spec[i]), spec[i].n, spec[i].N,
                      hs, cpu[i]);
         else if (j < np)
             snprintf(line, sizeof line, "%s%.0e: not in the grid; predicted %s n = %.0f, "
-                     "N = %.0f%s (%.3g CPU s)", t ? "; " : "", targets[t],
+                     "N = %.0f%s (%.3g CPU s)", t ? "; " : "", vfy_wp_targets[t],
                      scheme_names[pscheme[j]], pn[j], pN[j], hs, pcost[j]);
         else
             snprintf(line, sizeof line, "%s%.0e: not in the grid nor below n = 2^24",
-                     t ? "; " : "", targets[t]);
+                     t ? "; " : "", vfy_wp_targets[t]);
         strncat(summary, line, sizeof summary - strlen(summary) - 1);
     }
     if (o->progress)
@@ -1134,19 +1032,21 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
              1e6 * (ag[0] + ag[1] / h_max), h_max,
              1e6 * (ag[0] + ag[1] * (double)(1u << PRED_H_HALVINGS) / h_max),
              h_max / (double)(1u << PRED_H_HALVINGS), summary);
-    if ((status = write_tables(o, c->name, &table, &tg, comment, title, notes, tnotes, msg,
-                               msglen)) != SIM_OK)
+    if ((status = vfy_write_case_tables2(o, c->name, &table, comment, title, notes, &tg,
+                                        "-targets", VFY_COST_TARGETS_TITLE, tnotes, msg,
+                                        msglen)) != SIM_OK)
         goto pred_done;
 
     /* The figure: the jump rows by N (n grows), the time-step rows by
      * (splitting, n, N) (h shrinks). */
-    cost_series series[GRID_MAX];
+    vfy_wp_series series[GRID_MAX];
+    size_t idx[GRID_MAX][GRID_MAX];
     char labels[GRID_MAX][24];
     size_t nseries = 0;
     for (size_t i = 0; i < P; i++) {
         size_t s = 0;
         for (; s < nseries; s++) {
-            const cost_split_spec *q = &spec[series[s].idx[0]];
+            const cost_split_spec *q = &spec[idx[s][0]];
             if (q->scheme == spec[i].scheme && q->N == spec[i].N
                 && (q->scheme == SIM_SCHEME_JUMP || (q->split == spec[i].split
                                                      && q->n == spec[i].n)))
@@ -1154,6 +1054,7 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
         }
         if (s == nseries) {
             series[s].count = 0;
+            series[s].idx = idx[s];
             if (spec[i].scheme == SIM_SCHEME_JUMP)
                 snprintf(series[s].title, sizeof series[s].title, "jump, N = %zu (n grows)",
                          spec[i].N);
@@ -1162,7 +1063,7 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
                          "(h shrinks)", spec_scheme(&spec[i]), spec[i].n, spec[i].N);
             nseries++;
         }
-        series[s].idx[series[s].count++] = i;
+        idx[s][series[s].count++] = i;
         if (spec[i].scheme == SIM_SCHEME_JUMP)
             snprintf(labels[i], sizeof labels[i], "n=%zu", spec[i].n);
         else
@@ -1170,8 +1071,9 @@ sim_status vfy_case_cost_split(const vfy_case *c, const vfy_options *o, vfy_repo
     }
     char ftitle[200];
     snprintf(ftitle, sizeof ftitle, "%s: Err of the time-averaged T against CPU time", c->name);
-    if (write_figure(o, c->name, ftitle, "Err = |T - T_inf| / T_inf (time-averaged T)",
-                     series, nseries, cpu, err, model, labels, &pred)
+    if (vfy_write_work_precision(o, c->name, ftitle,
+                                 "Err = |T - T_inf| / T_inf (time-averaged T)", series, nseries,
+                                 cpu, err, model, labels, &pred)
         != 0)
         status = vfy_io_error(c->name, msg, msglen);
 pred_done:

@@ -22,11 +22,34 @@ sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const v
                                  const char *comment, const char *title, const char *notes,
                                  char *msg, size_t msglen)
 {
-    char path[1024];
+    return vfy_write_case_tables2(o, name, table, comment, title, notes, NULL, NULL, NULL, NULL,
+                                  msg, msglen);
+}
+
+sim_status vfy_write_case_tables2(const vfy_options *o, const char *name, const vfy_table *table,
+                                  const char *comment, const char *title, const char *notes,
+                                  const vfy_table *second, const char *suffix,
+                                  const char *title2, const char *notes2, char *msg,
+                                  size_t msglen)
+{
+    char path[1024], tmp[1100], name2[200];
+    snprintf(name2, sizeof name2, "%s%s", name, suffix ? suffix : "");
     if (vfy_table_write_csv(table, vfy_report_path(o, name, ".csv", path, sizeof path),
                             comment) != 0
-        || vfy_table_write_markdown(table, vfy_report_path(o, name, ".md", path, sizeof path),
-                                    title, notes) != 0)
+        || (second
+            && vfy_table_write_csv(second, vfy_report_path(o, name2, ".csv", path, sizeof path),
+                                   comment) != 0))
+        return vfy_io_error(path, msg, msglen);
+    FILE *f = vfy_file_begin(vfy_report_path(o, name, ".md", path, sizeof path), tmp,
+                             sizeof tmp);
+    if (f == NULL)
+        return vfy_io_error(path, msg, msglen);
+    vfy_table_print_markdown(table, f, title, notes);
+    if (second) {
+        fputc('\n', f);
+        vfy_table_print_markdown(second, f, title2, notes2);
+    }
+    if (vfy_file_commit(f, tmp, path, 1) != 0)
         return vfy_io_error(path, msg, msglen);
     return SIM_OK;
 }

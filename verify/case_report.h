@@ -40,6 +40,13 @@ const char *vfy_display_path(const char *path);
 sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const vfy_table *table,
                                  const char *comment, const char *title, const char *notes,
                                  char *msg, size_t msglen);
+/* The same with a second table after the first in the Markdown file (its
+ * title2 and notes2) and in out_dir/<name><suffix>.csv. */
+sim_status vfy_write_case_tables2(const vfy_options *o, const char *name, const vfy_table *table,
+                                  const char *comment, const char *title, const char *notes,
+                                  const vfy_table *second, const char *suffix,
+                                  const char *title2, const char *notes2, char *msg,
+                                  size_t msglen);
 
 /* After each finished row: the rows so far as out_dir/<name>.csv, its
  * comment saying that the case is still running, so that an interrupted run

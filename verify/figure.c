@@ -82,3 +82,63 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
         fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
     return 0;
 }
+
+const double vfy_wp_targets[VFY_WP_TARGETS] = {1e-2, 1e-3, 1e-4};
+
+int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
+                             const char *ylabel, const vfy_wp_series *series, size_t nseries,
+                             const double *cpu, const double *err, const double *model,
+                             char (*labels)[24], const vfy_wp_prediction *pred)
+{
+    char data[1024], gp[1024], png[1024], tmp[1100], file[200];
+    snprintf(file, sizeof file, "%s-points", name);
+    FILE *f = vfy_file_begin(vfy_report_path(o, file, ".csv", data, sizeof data), tmp,
+                             sizeof tmp);
+    if (f == NULL)
+        return -1;
+    fprintf(f, "# %s: work-precision points, one block per curve (gnuplot index)\n"
+               "# cpu_s,Err,Err_model,label\n", name);
+    for (size_t s = 0; s < nseries; s++) {
+        fprintf(f, "%s# %s\n", s ? "\n\n" : "", series[s].title);
+        for (size_t k = 0; k < series[s].count; k++) {
+            size_t i = series[s].idx[k];
+            fprintf(f, "%.6g,%.6g,%.6g,%s\n", cpu[i], err[i], model[i], labels[i]);
+        }
+    }
+    fprintf(f, "\n\n# the model's cheapest point per target (predictions)\n");
+    for (size_t k = 0; k < pred->count; k++)
+        fprintf(f, "%.6g,%.6g,%.6g,%s\n", pred->cpu[k], pred->err[k], pred->err[k],
+                pred->label[k]);
+    if (vfy_file_commit(f, tmp, data, 1) != 0)
+        return -1;
+    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1100,750 font ',10'\n"
+               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
+               "set title '%s'\nset xlabel 'CPU seconds (all threads)'\n"
+               "set ylabel '%s'\nset logscale xy\nset format y '%%.0e'\n"
+               "set grid\nset key outside right top\n"
+               "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
+            name, gp, vfy_report_path(o, name, ".png", png, sizeof png), title, ylabel);
+    for (size_t s = 0; s < nseries; s++)
+        fprintf(f, "%s '%s' index %zu using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc %zu "
+                   "title '%s', '' index %zu using 1:3 with lines dt 3 lw 2 lc %zu notitle, "
+                   "'' index %zu using 1:2:4 with labels offset 0.6,0.7 font ',7' left "
+                   "tc lt %zu notitle",
+                s ? "," : "", data, s, s + 1, series[s].title, s, s + 1, s, s + 1);
+    if (pred->count > 0)
+        fprintf(f, ", '%s' index %zu using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' "
+                   "title 'predicted cheapest per target (model)', '' index %zu using 1:2:4 "
+                   "with labels offset 0,-1.4 font ',7' tc rgb 'black' notitle",
+                data, nseries, nseries);
+    for (size_t i = 0; i < VFY_WP_TARGETS; i++)
+        fprintf(f, ", %g with lines dt 2 lc rgb 'gray50' %s", vfy_wp_targets[i],
+                i ? "notitle" : "title 'targets 1e-2, 1e-3, 1e-4'");
+    fputc('\n', f);
+    if (vfy_file_commit(f, tmp, gp, 1) != 0)
+        return -1;
+    if (vfy_gnuplot(gp) < 0 && o->progress)
+        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
+    return 0;
+}

@@ -34,4 +34,32 @@ typedef struct vfy_points {
  * to <name>.png when gnuplot is installed.  Returns 0 or -1 (errno). */
 int vfy_write_points(const vfy_options *o, const vfy_points *f);
 
+/* Work-precision figures (SPEC §10): Err against CPU seconds. */
+#define VFY_WP_TARGETS 3
+extern const double vfy_wp_targets[VFY_WP_TARGETS];   /* 1e-2, 1e-3, 1e-4 */
+
+/* One curve: the points idx[0..count-1] of the arrays, in that order. */
+typedef struct vfy_wp_series {
+    char title[96];
+    const size_t *idx;
+    size_t count;
+} vfy_wp_series;
+
+/* The model's cheapest point per target (a prediction). */
+typedef struct vfy_wp_prediction {
+    size_t count;
+    double cpu[VFY_WP_TARGETS], err[VFY_WP_TARGETS];
+    char label[VFY_WP_TARGETS][48];
+} vfy_wp_prediction;
+
+/* out_dir/<name>-points.csv (one gnuplot index block per series: cpu_s,
+ * Err, Err_model, label; then the predictions) and out_dir/<name>.gp: Err
+ * against CPU seconds, log-log, each series with its model dotted, the
+ * targets as grey lines, the predicted cheapest points as open circles;
+ * rendered to <name>.png when gnuplot is installed.  Returns 0 or -1. */
+int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
+                             const char *ylabel, const vfy_wp_series *series, size_t nseries,
+                             const double *cpu, const double *err, const double *model,
+                             char (*labels)[24], const vfy_wp_prediction *pred);
+
 #endif
