@@ -142,3 +142,83 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
         fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
     return 0;
 }
+
+int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
+                     const char *comment,
+                        const double *t, size_t M, size_t nref, const char *const *ref_names,
+                        const double *const *refs, size_t rows, const size_t *n,
+                        const double *mean, const double *ci, const char *quantity,
+                        double x_from, int one_panel_per_row)
+{
+    char path[1024], tmp[1100], png[1024];
+    FILE *f = vfy_file_begin(vfy_report_path(o, name, "-curves.csv", path, sizeof path), tmp,
+                             sizeof tmp);
+    if (f == NULL)
+        return -1;
+    vfy_write_comment(f, comment);
+    fprintf(f, "t");
+    for (size_t j = 0; j < nref; j++)
+        fprintf(f, ",%s", ref_names[j]);
+    for (size_t i = 0; i < rows; i++) {
+        if (n[i] == 0)   /* the O(1/n) extrapolation */
+            fprintf(f, ",%s_ninf,%s_ninf_ci", quantity, quantity);
+        else
+            fprintf(f, ",%s_n%zu,%s_n%zu_ci", quantity, n[i], quantity, n[i]);
+    }
+    fputc('\n', f);
+    for (size_t m = 0; m < M; m++) {
+        fprintf(f, "%.10g", t[m]);
+        for (size_t j = 0; j < nref; j++)
+            fprintf(f, ",%.12g", refs[j][m]);
+        for (size_t i = 0; i < rows; i++)
+            fprintf(f, ",%.12g,%.6g", mean[i * M + m], ci[i * M + m]);
+        fputc('\n', f);
+    }
+    if (vfy_file_commit(f, tmp, path, 1) != 0)
+        return -1;
+
+    char gp[1024];
+    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    vfy_write_comment(f, comment);
+    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
+               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
+               "set xrange [%g:*]\n"
+               "set xlabel 't'\nset ylabel '%s'\nset key top right\n",
+            title, gp, one_panel_per_row ? 900 : 700,
+            vfy_report_path(o, name, ".png", png, sizeof png), x_from, quantity);
+    size_t panels = one_panel_per_row ? (rows < 4 ? rows : 4) : 1;
+    if (one_panel_per_row)
+        fprintf(f, "set multiplot layout 2,2 title '%s'\n", title);
+    else
+        fprintf(f, "set title '%s'\n", title);
+    for (size_t p = 0; p < panels; p++) {
+        size_t first = one_panel_per_row ? p : 0, last = one_panel_per_row ? p + 1 : rows;
+        if (one_panel_per_row)
+            fprintf(f, "set title 'n = %zu'\n", n[p]);
+        fprintf(f, "plot");
+        for (size_t j = 0; j < nref; j++)
+            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt 2 lw 2 title '%s'",
+                    j ? "," : "", path, 2 + j, ref_names[j]);
+        for (size_t i = first; i < last; i++) {
+            size_t col = 2 + nref + 2 * i;
+            char label[64];
+            if (n[i] == 0)
+                snprintf(label, sizeof label, "n = infinity (O(1/n) extrapolation) ± c");
+            else
+                snprintf(label, sizeof label, "n = %zu: mean ± c", n[i]);
+            fprintf(f, ", '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
+                       "fs transparent solid 0.25 lc %zu title '%s'",
+                    path, col, col + 1, col, col + 1, i + 1, label);
+        }
+        fputc('\n', f);
+    }
+    if (one_panel_per_row)
+        fprintf(f, "unset multiplot\n");
+    if (vfy_file_commit(f, tmp, gp, 1) != 0)
+        return -1;
+    if (vfy_gnuplot(gp) < 0 && o->progress)
+        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
+    return 0;
+}
