@@ -56,8 +56,10 @@
 
 #include "case_report.h"
 #include "cases.h"
+#include "driver.h"
 #include "figure.h"
 #include "heated.h"
+#include "metrics.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
 #include "steady.h"
@@ -219,43 +221,10 @@ static void target_cells(vfy_table *t, int present, const char *scheme, size_t n
 
 /* ------------------------------------------------ Maxwell kernels: n x N */
 
-struct cost_grid_data {
-    const char *scene;      /* scene stem in the scene directory */
-    const char *what;       /* for the title */
-    int obs;                /* the observable whose Err is reported */
-    const char *obs_name;
-    const char *exact;      /* reference column of F(t) */
-    const char *finite;     /* reference column of E xi^(n)(t) */
-    size_t n_paper[AXIS_MAX], N_paper[AXIS_MAX];   /* 0-terminated */
-    size_t n_quick[AXIS_MAX], N_quick[AXIS_MAX];
-};
-
-/* Paper A Ex 3 with Table 1's estimator; paper B Ex 2 with Table 2's.  Paper
- * sizes: about 280 and 230 CPU seconds (sum n x sum N x 4.8 and 3.8 us). */
-const struct cost_grid_data vfy_cost_grw_ex3 = {
-    "grw-ex3", "paper A Ex 3 (Table 1's Err: uncentred T_raw vs A.13)", SIM_OBS_T_RAW,
-    "T_raw", "T_exact", "T_raw_finite_n",
-    {64, 256, 1024, 4096, 16384, 0}, {128, 512, 2048, 0},
-    {64, 256, 1024, 0}, {64, 256, 0},
-};
-const struct cost_grid_data vfy_cost_brs_ex2 = {
-    "brs-ex2", "paper B Ex 2 (Table 2's Err: centred T vs B.15)", SIM_OBS_T, "T", "T_exact",
-    "T_finite_n",
-    {16, 64, 256, 1024, 4096, 16384, 0}, {128, 512, 2048, 0},
-    {16, 64, 256, 0}, {64, 256, 0},
-};
-
-static size_t axis_len(const size_t *v)
-{
-    size_t k = 0;
-    while (k < AXIS_MAX && v[k])
-        k++;
-    return k;
-}
-
-/* max_m |E xi^(n) - F| / F of the scene at n particles (exact, references). */
-static sim_status exact_sys(const struct cost_grid_data *d, const sim_scene *scene, size_t n,
-                            double *sys, double *exact, double *finite, char *msg,
+/* max_m |E xi^(n) - F| / F of the scene at n particles (exact, references):
+ * the systematic part of Err, beyond the grid for the predictions. */
+static sim_status exact_sys(const char *exact_name, const char *finite_name,
+                            const sim_scene *scene, size_t n, double *sys, char *msg,
                             size_t msglen)
 {
     sim_scene s = *scene;
@@ -267,159 +236,142 @@ static sim_status exact_sys(const struct cost_grid_data *d, const sim_scene *sce
         vfy_scene_format_error(&s, &err, msg, msglen);
         return status;
     }
-    if (!vfy_refs_column(&refs, d->exact, exact) || !vfy_refs_column(&refs, d->finite, finite)) {
-        snprintf(msg, msglen, "%s: no %s and %s references for this scene", s.file, d->exact,
-                 d->finite);
-        vfy_refs_free(&refs);
-        return SIM_EINVAL;
-    }
-    *sys = 0.0;
-    for (size_t m = 0; m < refs.outputs; m++)
-        *sys = fmax(*sys, fabs(finite[m] - exact[m]) / exact[m]);
+    double *buf = malloc(2 * refs.outputs * sizeof *buf);
+    if (buf == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        status = SIM_ENOMEM;
+    } else if (!vfy_refs_column(&refs, exact_name, buf)
+               || !vfy_refs_column(&refs, finite_name, buf + refs.outputs)) {
+        snprintf(msg, msglen, "%s: no %s and %s references for this scene", s.file, exact_name,
+                 finite_name);
+        status = SIM_EINVAL;
+    } else
+        *sys = vfy_max_rel_err(buf + refs.outputs, buf, refs.outputs);
+    free(buf);
     vfy_refs_free(&refs);
-    return SIM_OK;
+    return status;
 }
 
-/* One point of the (n, N) grid and its table row (model NaN: not fitted
- * yet, its cells empty). */
-typedef struct grid_point {
-    double n, N, err, sys, stat, conf, z, model, cpu, wall, events;
-} grid_point;
-
-static void grid_row(vfy_table *t, const grid_point *g)
+/* The grid's axes: its distinct n (slowest) and N, in order. */
+static size_t grid_axis(const vfy_case_run *run, const char *name, double *axis)
 {
-    vfy_table_cell(t, "%.0f", g->n);
-    vfy_table_cell(t, "%.0f", g->N);
-    vfy_table_cell(t, "%.3e", g->err);
-    vfy_table_cell(t, "%.3e", g->sys);
-    vfy_table_cell(t, "%.3e", g->stat);
-    vfy_table_cell(t, "%.3e", g->conf);
-    vfy_table_cell(t, "%.2f", g->z);
-    vfy_table_number(t, !isnan(g->model), "%.3e", g->model);
-    vfy_table_number(t, !isnan(g->model), "%.2f", g->err / g->model);
-    vfy_cost_cells(t, g->cpu, g->wall, g->events);
+    size_t count = 0;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const double v = vfy_values_get(&run->rows[i].values, name);
+        size_t k = 0;
+        while (k < count && axis[k] != v)
+            k++;
+        if (k == count && count < AXIS_MAX)
+            axis[count++] = v;
+    }
+    return count;
 }
 
-sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_report *r,
-                              char *msg, size_t msglen)
+/* The targets table: the cheapest measured point and the model's
+ * prediction per target, and the summary line of the notes. */
+static void grid_targets(vfy_case_run *run, size_t P, const double *gn, const double *gN,
+                         const double *err, const double *cpu, size_t np, const double *pn,
+                         const double *pN, const double *perr, const double *pcost,
+                         vfy_wp_prediction *pred, char *summary, size_t len)
 {
-    const struct cost_grid_data *d = c->data;
-    const size_t *ns = o->size == VFY_PAPER ? d->n_paper : d->n_quick;
-    const size_t *Ns = o->size == VFY_PAPER ? d->N_paper : d->N_quick;
-    const size_t nn = axis_len(ns), nN = axis_len(Ns), P = nn * nN;
-    sim_scene scene, solver;
-    sim_status status = vfy_load_scene_stem(d->scene, o, &scene, &solver, msg, msglen);
-    if (status != SIM_OK)
-        return status;
-    const size_t M = scene.outputs;
-
-    static const char *const cols[] = {
-        "n", "N", "Err", "Err_sys", "Err_stat", "Conf", "z", "Err_model", "Err_over_model",
-        VFY_COST_COLUMNS};
     static const char *const tcols[] = {
         "target", "grid", "n", "N", "Err", "cpu_s", "predicted_n", "predicted_N",
         "predicted_Err", "predicted_cpu_s"};
-    vfy_table table, tg;
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    vfy_table_init(&tg, sizeof tcols / sizeof *tcols, tcols);
-    double *exact = malloc(M * sizeof *exact), *finite = malloc(M * sizeof *finite);
-    double *mean = malloc(M * sizeof *mean), *ci = malloc(M * sizeof *ci);
-    double gn[GRID_MAX], gN[GRID_MAX], err[GRID_MAX], sys[GRID_MAX], stat[GRID_MAX];
-    double conf[GRID_MAX], z[GRID_MAX], cpu[GRID_MAX], wall[GRID_MAX], events[GRID_MAX];
-    double model[GRID_MAX], conf_fit[GRID_MAX];
-    uint64_t violations = 0;
-    if (!exact || !finite || !mean || !ci) {
-        snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-        goto done;
-    }
-    if (P == 0 || P > GRID_MAX) {
-        snprintf(msg, msglen, "%s: grid of %zu points (allowed 1 to %d)", c->name, P, GRID_MAX);
-        status = SIM_EINVAL;
-        goto done;
-    }
-
-    /* The grid, n by n, N growing within each n. */
-    char name[160], label[96];
-    for (size_t a = 0; a < nn && status == SIM_OK; a++) {
-        for (size_t b = 0; b < nN && status == SIM_OK; b++) {
-            const size_t i = a * nN + b;
-            scene.particles.n = solver.particles.n = ns[a];
-            scene.particles.ensembles = solver.particles.ensembles = Ns[b];
-            if ((status = exact_sys(d, &scene, ns[a], &sys[i], exact, finite, msg, msglen))
-                != SIM_OK)
-                break;
-            sim_ensemble_result res;
-            snprintf(label, sizeof label, "%s n=%zu N=%zu", c->name, ns[a], Ns[b]);
-            if ((status = vfy_simulate(&solver, o, label, &res, msg, msglen)) != SIM_OK) {
-                sim_ensemble_result_free(&res);
-                break;
-            }
-            vfy_result_column(&res, d->obs, mean, ci);
-            /* SPEC §1 Err, and its exact split into statistical and
-             * systematic parts at every output time (see the top). */
-            err[i] = stat[i] = conf[i] = 0.0;
-            for (size_t m = 0; m < M; m++) {
-                err[i] = fmax(err[i], fabs(mean[m] - exact[m]) / exact[m]);
-                stat[i] = fmax(stat[i], fabs(mean[m] - finite[m]) / exact[m]);
-                conf[i] = fmax(conf[i], ci[m] / exact[m]);
-            }
-            /* The measured mean against the exact E xi^(n): the systematic
-             * part is what the exact expectation says, up to noise. */
-            vfy_check_zscore(r, vfy_name(name, sizeof name, "%s n=%zu N=%zu %s vs exact "
-                                         "finite-n expectation", c->name, ns[a], Ns[b],
-                                         d->obs_name),
-                             mean + 1, ci + 1, finite + 1, M - 1, ZMAX, &z[i]);
-            gn[i] = (double)ns[a];
-            gN[i] = (double)Ns[b];
-            cpu[i] = res.cpu_seconds;
-            wall[i] = res.wall_seconds;
-            events[i] = (double)res.counts.candidates;
-            violations += res.counts.violations;
-            if (o->progress)
-                fprintf(o->progress, "   %s: Err %.3e (sys %.3e exact, stat %.3e, Conf "
-                        "%.3e), %.2f CPU s\n", label, err[i], sys[i], stat[i], conf[i],
-                        cpu[i]);
-            sim_ensemble_result_free(&res);
-            const grid_point g = {gn[i], gN[i], err[i], sys[i], stat[i], conf[i], z[i], NAN,
-                                  cpu[i], wall[i], events[i]};
-            grid_row(&table, &g);   /* rows so far; the model needs the whole grid */
-            status = vfy_write_rows_so_far(o, c->name, &table, &solver, msg, msglen);
+    vfy_table *tg = &run->second;
+    vfy_table_init(tg, sizeof tcols / sizeof *tcols, tcols);
+    summary[0] = '\0';
+    for (size_t t = 0; t < VFY_WP_TARGETS; t++) {
+        const double target = vfy_wp_targets[t];
+        size_t i = vfy_cost_cheapest(err, cpu, P, target);
+        size_t j = vfy_cost_cheapest(perr, pcost, np, target);
+        if (j < np) {
+            pred->cpu[pred->count] = pcost[j];
+            pred->err[pred->count] = perr[j];
+            snprintf(pred->label[pred->count++], sizeof pred->label[0], "%.0e: n=%.0f N=%.0f",
+                     target, pn[j], pN[j]);
         }
+        vfy_table_cell(tg, "%.0e", target);
+        vfy_table_cell(tg, "%s", i < P ? "reached" : "not reached in the grid");
+        target_cells(tg, i < P, NULL, i < P ? (size_t)gn[i] : 0, i < P ? (size_t)gN[i] : 0, 0.0,
+                     i < P ? err[i] : NAN, i < P ? cpu[i] : NAN);
+        target_cells(tg, j < np, NULL, j < np ? (size_t)pn[j] : 0, j < np ? (size_t)pN[j] : 0,
+                     0.0, j < np ? perr[j] : NAN, j < np ? pcost[j] : NAN);
+        char line[200];
+        if (i < P)
+            snprintf(line, sizeof line, "%s%.0e: n = %.0f, N = %.0f (%.3g CPU s)", t ? "; " : "",
+                     target, gn[i], gN[i], cpu[i]);
+        else if (j < np)
+            snprintf(line, sizeof line, "%s%.0e: not in the grid; predicted n = %.0f, N = %.0f "
+                     "(%.3g CPU s)", t ? "; " : "", target, pn[j], pN[j], pcost[j]);
+        else
+            snprintf(line, sizeof line, "%s%.0e: not in the grid nor below n = 2^24", t ? "; "
+                     : "", target);
+        strncat(summary, line, len - strlen(summary) - 1);
     }
-    if (status != SIM_OK)
-        goto done;
+}
 
-    /* The model: Conf^2 N = A/n + B/n^2; k = geometric mean of Err_stat/Conf;
-     * cpu = kappa n N. */
-    double AB[2], lk = 0.0, work = 0.0, cpu_sum = 0.0;
-    fit_conf(P, gn, gN, conf, AB);
+/* Grid points as arrays, in row order. */
+enum { G_N, G_NN, G_ERR, G_SYS, G_STAT, G_CONF, G_CPU, G_MODEL, G_CONF_FIT, G_ARRAYS };
+
+/* After the grid (vfy_hook_fn): the model Err_model = sqrt(Err_sys^2 + (k
+ * Conf_fit)^2) with Conf_fit^2 N = A/n + B/n^2 and k the geometric mean of
+ * Err_stat/Conf_fit, cpu = kappa n N; its checks, the targets table and
+ * the work-precision figure. */
+static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    const char *exact = run->d->needs[0], *finite = run->d->needs[1];
+    const char *obs = run->d->checks[0].value;
+    const size_t P = run->nrows;
+    double ns[AXIS_MAX], Ns[AXIS_MAX];
+    const size_t nn = grid_axis(run, "n", ns), nN = grid_axis(run, "N", Ns);
+    if (P > GRID_MAX || nn * nN != P) {
+        snprintf(msg, msglen, "%s: grid of %zu points, %zu x %zu (allowed up to %d, %d x %d)",
+                 run->c->name, P, nn, nN, GRID_MAX, AXIS_MAX, AXIS_MAX);
+        return SIM_EINVAL;
+    }
+    double g[G_ARRAYS][GRID_MAX];
+    uint64_t violations = 0;
+    static const char *const names[] = {"n", "N", "Err", "Err_sys", "Err_stat", "Conf",
+                                        "cpu_s"};
     for (size_t i = 0; i < P; i++) {
-        conf_fit[i] = conf_model(AB, gn[i], gN[i]);
-        lk += log(stat[i] / conf_fit[i]);
-        work += gn[i] * gN[i];
-        cpu_sum += cpu[i];
+        for (size_t k = 0; k < sizeof names / sizeof *names; k++)
+            g[k][i] = vfy_values_get(&run->rows[i].values, names[k]);
+        violations += (uint64_t)vfy_values_get(&run->rows[i].values, "violations");
+    }
+    double AB[2], lk = 0.0, work = 0.0, cpu_sum = 0.0;
+    fit_conf(P, g[G_N], g[G_NN], g[G_CONF], AB);
+    for (size_t i = 0; i < P; i++) {
+        g[G_CONF_FIT][i] = conf_model(AB, g[G_N][i], g[G_NN][i]);
+        lk += log(g[G_STAT][i] / g[G_CONF_FIT][i]);
+        work += g[G_N][i] * g[G_NN][i];
+        cpu_sum += g[G_CPU][i];
     }
     const double k = exp(lk / (double)P), kappa = cpu_sum / work;
-    double cpu_dev = 0.0;
+    double cpu_dev = 0.0, lo = INFINITY, hi = 0.0;
     for (size_t i = 0; i < P; i++) {
-        model[i] = hypot(sys[i], k * conf_fit[i]);
-        if (cpu[i] >= 1.0)   /* shorter runs are dominated by start-up */
-            cpu_dev = fmax(cpu_dev, fabs(cpu[i] / (kappa * gn[i] * gN[i]) - 1.0));
+        const double model = hypot(g[G_SYS][i], k * g[G_CONF_FIT][i]);
+        g[G_MODEL][i] = model;
+        vfy_values_set(&run->rows[i].values, "Err_model", model);
+        vfy_values_set(&run->rows[i].values, "Err_over_model", g[G_ERR][i] / model);
+        lo = fmin(lo, g[G_ERR][i] / model);
+        hi = fmax(hi, g[G_ERR][i] / model);
+        if (g[G_CPU][i] >= 1.0)   /* shorter runs are dominated by start-up */
+            cpu_dev = fmax(cpu_dev, fabs(g[G_CPU][i] / (kappa * g[G_N][i] * g[G_NN][i]) - 1.0));
     }
 
     /* Checks: the 1/sqrt(N) law of the statistical part, pooled over n for
      * each step of N; the model against the grid; no violations. */
+    char name[200];
     for (size_t b = 1; b < nN; b++) {
         double c1[AXIS_MAX], c2[AXIS_MAX], ratio;
         for (size_t a = 0; a < nn; a++) {
-            c1[a] = conf[a * nN + b - 1];
-            c2[a] = conf[a * nN + b];
+            c1[a] = g[G_CONF][a * nN + b - 1];
+            c2[a] = g[G_CONF][a * nN + b];
         }
-        vfy_cost_check_stat_scaling(r, vfy_name(name, sizeof name, "%s Conf(N=%zu)/Conf(N=%zu) "
-                                                "over sqrt(%zu/%zu), pooled over n", c->name,
-                                                Ns[b - 1], Ns[b], Ns[b], Ns[b - 1]),
-                                    c1, c2, nn, Ns[b - 1], Ns[b], ZMAX, &ratio);
+        snprintf(name, sizeof name, "%s Conf(N=%.0f)/Conf(N=%.0f) over sqrt(%.0f/%.0f), pooled "
+                 "over n", run->c->name, Ns[b - 1], Ns[b], Ns[b], Ns[b - 1]);
+        vfy_cost_check_stat_scaling(r, name, c1, c2, nn, (size_t)Ns[b - 1], (size_t)Ns[b],
+                                    ZMAX, &ratio);
     }
     /* Judged where one part dominates (by DOMINANCE): where the two are
      * comparable, noise of the opposite sign can cancel the bias and Err
@@ -427,114 +379,57 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
     double worst, dom_err[GRID_MAX], dom_model[GRID_MAX];
     size_t ndom = 0;
     for (size_t i = 0; i < P; i++) {
-        double a = sys[i], b2 = k * conf_fit[i];
+        double a = g[G_SYS][i], b2 = k * g[G_CONF_FIT][i];
         if (fmax(a, b2) >= DOMINANCE * fmin(a, b2)) {
-            dom_err[ndom] = err[i];
-            dom_model[ndom++] = model[i];
+            dom_err[ndom] = g[G_ERR][i];
+            dom_model[ndom++] = g[G_MODEL][i];
         }
     }
-    vfy_name(name, sizeof name, "%s Err/model where one part dominates (%zu of %zu points)",
-             c->name, ndom, P);
+    snprintf(name, sizeof name, "%s Err/model where one part dominates (%zu of %zu points)",
+             run->c->name, ndom, P);
     if (ndom > 0)
         vfy_cost_check_model(r, name, dom_err, dom_model, ndom, MODEL_FACTOR, &worst);
     else
         vfy_skip(r, name, "no grid point where one part dominates");
-    vfy_check_count(r, vfy_name(name, sizeof name, "%s majorant violations (all points)",
-                                c->name), violations, 0);
-
-    vfy_table_free(&table);   /* the rows again, now with the model */
-    vfy_table_init(&table, sizeof cols / sizeof *cols, cols);
-    for (size_t i = 0; i < P; i++) {
-        const grid_point g = {gn[i], gN[i], err[i], sys[i], stat[i], conf[i], z[i], model[i],
-                              cpu[i], wall[i], events[i]};
-        grid_row(&table, &g);
-    }
+    snprintf(name, sizeof name, "%s majorant violations (all points)", run->c->name);
+    vfy_check_count(r, name, violations, 0);
 
     /* Predictions: n = n_min 2^j up to 2^24, N among the grid's. */
     enum { PRED_MAX = 32 * AXIS_MAX };
     double perr[PRED_MAX], pcost[PRED_MAX], pn[PRED_MAX], pN[PRED_MAX];
     size_t np = 0;
-    for (size_t n = ns[0]; n <= PRED_N_MAX && status == SIM_OK; n *= 2) {
+    sim_status status = SIM_OK;
+    for (size_t n = (size_t)ns[0]; n <= PRED_N_MAX && status == SIM_OK; n *= 2) {
         double s;
-        if ((status = exact_sys(d, &scene, n, &s, exact, finite, msg, msglen)) != SIM_OK)
-            break;
-        for (size_t b = 0; b < nN && np < PRED_MAX; b++, np++) {
+        status = exact_sys(exact, finite, &run->rows[0].scene, n, &s, msg, msglen);
+        for (size_t b = 0; b < nN && np < PRED_MAX && status == SIM_OK; b++, np++) {
             pn[np] = (double)n;
-            pN[np] = (double)Ns[b];
+            pN[np] = Ns[b];
             perr[np] = hypot(s, k * conf_model(AB, pn[np], pN[np]));
             pcost[np] = kappa * pn[np] * pN[np];
         }
     }
     if (status != SIM_OK)
-        goto done;
-    char summary[600] = "", line[200];
+        return status;
+    char summary[600];
     vfy_wp_prediction pred = {0};
-    for (size_t t = 0; t < VFY_WP_TARGETS; t++) {
-        size_t i = vfy_cost_cheapest(err, cpu, P, vfy_wp_targets[t]);
-        size_t j = vfy_cost_cheapest(perr, pcost, np, vfy_wp_targets[t]);
-        if (j < np) {
-            pred.cpu[pred.count] = pcost[j];
-            pred.err[pred.count] = perr[j];
-            snprintf(pred.label[pred.count++], sizeof pred.label[0], "%.0e: n=%.0f N=%.0f",
-                     vfy_wp_targets[t], pn[j], pN[j]);
-        }
-        vfy_table_cell(&tg, "%.0e", vfy_wp_targets[t]);
-        vfy_table_cell(&tg, "%s", i < P ? "reached" : "not reached in the grid");
-        target_cells(&tg, i < P, NULL, i < P ? (size_t)gn[i] : 0, i < P ? (size_t)gN[i] : 0,
-                     0.0, i < P ? err[i] : NAN, i < P ? cpu[i] : NAN);
-        target_cells(&tg, j < np, NULL, j < np ? (size_t)pn[j] : 0,
-                     j < np ? (size_t)pN[j] : 0, 0.0, j < np ? perr[j] : NAN,
-                     j < np ? pcost[j] : NAN);
-        if (i < P)
-            snprintf(line, sizeof line, "%s%.0e: n = %.0f, N = %.0f (%.3g CPU s)", t ? "; " : "",
-                     vfy_wp_targets[t], gn[i], gN[i], cpu[i]);
-        else if (j < np)
-            snprintf(line, sizeof line, "%s%.0e: not in the grid; predicted n = %.0f, N = %.0f "
-                     "(%.3g CPU s)", t ? "; " : "", vfy_wp_targets[t], pn[j], pN[j], pcost[j]);
-        else
-            snprintf(line, sizeof line, "%s%.0e: not in the grid nor below n = 2^24", t ? "; "
-                     : "", vfy_wp_targets[t]);
-        strncat(summary, line, sizeof summary - strlen(summary) - 1);
-    }
-    if (o->progress)
-        fprintf(o->progress, "   %s: cheapest per target: %s\n", c->name, summary);
-
-    double wall_total = 0.0, lo = INFINITY, hi = 0.0;
-    for (size_t i = 0; i < P; i++) {
-        wall_total += wall[i];
-        lo = fmin(lo, err[i] / model[i]);
-        hi = fmax(hi, err[i] / model[i]);
-    }
-    char comment[600], notes[4000], tnotes[1600], title[200];
-    grid_comment(&solver, comment, sizeof comment);
-    snprintf(title, sizeof title, "%s: accuracy against CPU cost, %s (%s sizes)", c->name,
-             d->what, o->size == VFY_PAPER ? "paper" : "quick");
-    snprintf(notes, sizeof notes,
-             "%s; each row sets n and N.\n\nErr = max over the %zu output times of "
-             "|F(t) - eta1(t)|/F(t) for %s (SPEC §1). With E xi^(n)(t) the exact expectation "
-             "of the n-particle estimator (%s, SPEC §10), eta1 - F = (eta1 - E xi^(n)) + "
-             "(E xi^(n) - F) at every output time: Err_sys = max |E xi^(n) - F|/F is the "
-             "systematic part, exact (no noise), O(1/n); Err_stat = max |eta1 - E xi^(n)|/F "
-             "the statistical part as measured, O(1/sqrt(n N)); Conf = max c/F with c = 3.2 "
-             "sqrt(Var/N) (99.9%%) is its scale, and z = max |eta1 - E xi^(n)|/sigma "
-             "(judged <= %g). Err <= Err_sys + Err_stat. All points use the scene's seed, so "
-             "the run with 4N ensembles contains the run with N (common random numbers).\n\n"
-             "Model: Err_model = sqrt(Err_sys^2 + (k Conf_fit)^2), with Err_sys exact at "
-             "every n, Conf_fit^2 N = A/n + B/n^2 fitted to the grid (A = %.4g, B = %.4g) "
-             "and k = %.3f the geometric mean of Err_stat/Conf_fit; measured/model lies in "
-             "[%.2f, %.2f] over the grid (judged within a factor %g where one part is at least "
-             "%g times the other: where they are comparable, noise of the opposite sign can "
-             "cancel the bias). CPU model: cpu = kappa "
-             "n N with kappa = %.3g us (largest deviation %.0f%% over the points with at "
-             "least 1 CPU s). cpu_s is the process CPU time of that point's run (all "
-             "threads); events = candidate collision events. Total wall time %.1f s.",
-             comment, M, d->obs_name, d->finite, ZMAX, AB[0], AB[1], k, lo, hi, MODEL_FACTOR,
-             DOMINANCE, 1e6 * kappa, 100.0 * cpu_dev, wall_total);
-    snprintf(tnotes, sizeof tnotes,
+    grid_targets(run, P, g[G_N], g[G_NN], g[G_ERR], g[G_CPU], np, pn, pN, perr, pcost, &pred,
+                 summary, sizeof summary);
+    if (run->o->progress)
+        fprintf(run->o->progress, "   %s: cheapest per target: %s\n", run->c->name, summary);
+    const double v[][2] = {{AB[0], 0}, {AB[1], 0}, {k, 0}, {lo, 0}, {hi, 0},
+                           {1e6 * kappa, 0}, {100.0 * cpu_dev, 0}};
+    static const char *const vnames[] = {"A", "B", "k", "ratio_lo", "ratio_hi", "kappa_us",
+                                         "cpu_dev_percent"};
+    for (size_t i = 0; i < sizeof vnames / sizeof *vnames; i++)
+        vfy_values_set(&run->values, vnames[i], v[i][0]);
+    run->second_suffix = "-targets";
+    run->second_title = VFY_COST_TARGETS_TITLE;
+    snprintf(run->second_notes, sizeof run->second_notes,
              "grid: the cheapest measured point (least cpu_s) with Err <= target, or \"not "
              "reached in the grid\". predicted_*: the cheapest (n, N) by the model above "
-             "(a prediction, not a measurement) over n = %zu 2^j up to 2^24 and N among the "
-             "grid's values (%zu to %zu). The cost kappa n N is linear in n while Err_sys "
+             "(a prediction, not a measurement) over n = %.0f 2^j up to 2^24 and N among the "
+             "grid's values (%.0f to %.0f). The cost kappa n N is linear in n while Err_sys "
              "falls as 1/n, so at a given n N the model always prefers more particles and "
              "fewer ensembles: the prediction sits at the grid's smallest N, and fewer "
              "ensembles than that would leave Var (and so the confidence interval) poorly "
@@ -542,38 +437,89 @@ sim_status vfy_case_cost_grid(const vfy_case *c, const vfy_options *o, vfy_repor
              "smaller Err is shown). The model assumes kappa stays constant as n grows beyond the grid "
              "(memory effects are not modelled). Summary: %s.",
              ns[0], Ns[0], Ns[nN - 1], summary);
-    if ((status = vfy_write_case_tables2(o, c->name, &table, comment, title, notes, &tg,
-                                        "-targets", VFY_COST_TARGETS_TITLE, tnotes, msg,
-                                        msglen)) != SIM_OK)
-        goto done;
 
     vfy_wp_series series[AXIS_MAX];
     size_t idx[AXIS_MAX][AXIS_MAX];
-    char labels[GRID_MAX][24];
+    char labels[GRID_MAX][24], ftitle[200];
     for (size_t b = 0; b < nN; b++) {
-        snprintf(series[b].title, sizeof series[b].title, "N = %zu (n grows)", Ns[b]);
+        snprintf(series[b].title, sizeof series[b].title, "N = %.0f (n grows)", Ns[b]);
         series[b].count = nn;
         series[b].idx = idx[b];
         for (size_t a = 0; a < nn; a++)
             idx[b][a] = a * nN + b;
     }
     for (size_t i = 0; i < P; i++)
-        snprintf(labels[i], sizeof labels[i], "n=%.0f", gn[i]);
-    char ftitle[200];
-    snprintf(ftitle, sizeof ftitle, "%s: Err against CPU time, %s", c->name, d->obs_name);
-    if (vfy_write_work_precision(o, c->name, ftitle,
+        snprintf(labels[i], sizeof labels[i], "n=%.0f", g[G_N][i]);
+    snprintf(ftitle, sizeof ftitle, "%s: Err against CPU time, %s", run->c->name, obs);
+    if (vfy_write_work_precision(run->o, run->c->name, ftitle,
                                  "Err (relative, max norm over the output times)", series, nN,
-                                 cpu, err, model, labels, &pred) != 0)
-        status = vfy_io_error(c->name, msg, msglen);
-done:
-    vfy_table_free(&table);
-    vfy_table_free(&tg);
-    free(exact);
-    free(finite);
-    free(mean);
-    free(ci);
-    return status;
+                                 g[G_CPU], g[G_ERR], g[G_MODEL], labels, &pred) != 0)
+        return vfy_io_error(run->c->name, msg, msglen);
+    return SIM_OK;
 }
+
+/* Paper A Ex 3 with Table 1's estimator (uncentred T_raw against A.13); paper
+ * B Ex 2 with Table 2's (centred T against B.15).  Paper sizes: about 280 and
+ * 230 CPU seconds (sum n x sum N x 4.8 and 3.8 us).  The grid: n by n, N
+ * growing within each n.  OBS is the observable, FINITE the exact
+ * expectation of its n-particle estimator. */
+#define COST_GRID_METRICS(OBS, FINITE)                                                  \
+    {{"Err", vfy_metric_max_rel_err, OBS, "T_exact", 0},                                \
+     {"Err_sys", vfy_metric_max_rel_err, FINITE, "T_exact", 0},                         \
+     {"Err_stat", vfy_metric_max_rel_diff, OBS, FINITE "/T_exact", 0},                  \
+     {"Conf", vfy_metric_max_rel_ci, OBS, "T_exact", 0},                                \
+     {NULL, NULL, NULL, NULL, 0}}
+#define COST_GRID_CHECKS(OBS, FINITE)                                                   \
+    {{.name = "{case} n={n} N={N} " OBS " vs exact finite-n expectation",                \
+      .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1, .tol = ZMAX,  \
+      .out = "z"},                                                                      \
+     {.name = NULL}}
+static const vfy_column grid_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"Err", NULL, "%.3e"},
+    {"Err_sys", NULL, "%.3e"}, {"Err_stat", NULL, "%.3e"}, {"Conf", NULL, "%.3e"},
+    {"z", NULL, "%.2f"}, {"Err_model", NULL, "%.3e"}, {"Err_over_model", NULL, "%.2f"},
+    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+#define COST_GRID_NOTES(OBS, FINITE)                                                    \
+    "{comment}; each row sets n and N.\n\nErr = max over the {outputs} output times of "   \
+    "|F(t) - eta1(t)|/F(t) for " OBS " (SPEC §1). With E xi^(n)(t) the exact expectation " \
+    "of the n-particle estimator (" FINITE ", SPEC §10), eta1 - F = (eta1 - E "        \
+    "xi^(n)) + (E xi^(n) - F) at every output time: Err_sys = max |E xi^(n) - F|/F is the " \
+    "systematic part, exact (no noise), O(1/n); Err_stat = max |eta1 - E xi^(n)|/F the "   \
+    "statistical part as measured, O(1/sqrt(n N)); Conf = max c/F with c = 3.2 "           \
+    "sqrt(Var/N) (99.9%) is its scale, and z = max |eta1 - E xi^(n)|/sigma (judged <= "    \
+    "4.5). Err <= Err_sys + Err_stat. All points use the scene's seed, so the run with 4N " \
+    "ensembles contains the run with N (common random numbers).\n\nModel: Err_model = "    \
+    "sqrt(Err_sys^2 + (k Conf_fit)^2), with Err_sys exact at every n, Conf_fit^2 N = A/n + " \
+    "B/n^2 fitted to the grid (A = {A:%.4g}, B = {B:%.4g}) and k = {k:%.3f} the geometric " \
+    "mean of Err_stat/Conf_fit; measured/model lies in [{ratio_lo:%.2f}, "                 \
+    "{ratio_hi:%.2f}] over the grid (judged within a factor 2 where one part is at least " \
+    "3 times the other: where they are comparable, noise of the opposite sign can cancel " \
+    "the bias). CPU model: cpu = kappa n N with kappa = {kappa_us:%.3g} us (largest "        \
+    "deviation {cpu_dev_percent:%.0f}% over the points with at least 1 CPU s). cpu_s is "  \
+    "the process CPU time of that point's run (all threads); events = candidate "          \
+    "collision events. Total wall time {wall_total:%.1f} s."
+#define COST_GRID(SCENE, WHAT, OBS, FINITE, N_PAPER, N_QUICK)                           \
+    {.scene = SCENE,                                                                    \
+     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
+                    .values = {N_PAPER, "128 512 2048"}, .grid = 1},                     \
+     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
+                    .values = {N_QUICK, "64 256"}, .grid = 1},                           \
+     .needs = (const char *const[]){"T_exact", FINITE, NULL},                            \
+     .needs_why = "the cost grid needs the exact expectation of the n-particle estimator", \
+     .label = "{case} n={n} N={ensembles}",                                              \
+     .row_progress = "{case} n={n} N={N}: Err {Err:%.3e} (sys {Err_sys:%.3e} exact, stat " \
+                     "{Err_stat:%.3e}, Conf {Conf:%.3e}), {cpu_s:%.2f} CPU s",           \
+     .metrics = (const vfy_metric[])COST_GRID_METRICS(OBS, FINITE),                     \
+     .checks = (const vfy_check_spec[])COST_GRID_CHECKS(OBS, FINITE),                   \
+     .columns = grid_columns, .after_rows = grid_model,                                  \
+     .title = "{case}: accuracy against CPU cost, " WHAT " ({size} sizes)",              \
+     .notes = COST_GRID_NOTES(OBS, FINITE)}
+const vfy_case_desc vfy_cost_grw_ex3 =
+    COST_GRID("grw-ex3", "paper A Ex 3 (Table 1's Err: uncentred T_raw vs A.13)", "T_raw",
+              "T_raw_finite_n", "64 256 1024 4096 16384", "64 256 1024");
+const vfy_case_desc vfy_cost_brs_ex2 =
+    COST_GRID("brs-ex2", "paper B Ex 2 (Table 2's Err: centred T vs B.15)", "T", "T_finite_n",
+              "16 64 256 1024 4096 16384", "16 64 256");
 
 /* ------------------------------------- hard spheres: jump and time step */
 

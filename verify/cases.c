@@ -23,11 +23,9 @@ extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
 extern const vfy_case_desc vfy_split_ex5;
 /* case_cost.c (SPEC §10: accuracy against CPU cost) */
-sim_status vfy_case_cost_grid(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                              size_t);
 sim_status vfy_case_cost_split(const vfy_case *, const vfy_options *, vfy_report *, char *,
                                size_t);
-extern const struct cost_grid_data vfy_cost_grw_ex3, vfy_cost_brs_ex2;
+extern const vfy_case_desc vfy_cost_grw_ex3, vfy_cost_brs_ex2;
 extern const struct cost_split_data vfy_cost_split_ex5;
 /* case_hard.c (the hard suite, issue #5 item 1) */
 sim_status vfy_case_hard_dissipation(const vfy_case *, const vfy_options *, vfy_report *,
@@ -77,9 +75,9 @@ static const vfy_case cases[] = {
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, vfy_run_described, NULL, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
-     " n x N, paper A Ex 3", 1, vfy_case_cost_grid, &vfy_cost_grw_ex3, NULL},
+     " n x N, paper A Ex 3", 1, vfy_run_described, NULL, &vfy_cost_grw_ex3},
     {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
-     " n x N, paper B Ex 2", 1, vfy_case_cost_grid, &vfy_cost_brs_ex2, NULL},
+     " n x N, paper B Ex 2", 1, vfy_run_described, NULL, &vfy_cost_brs_ex2},
     {"cost-split-ex5", "cost", "SPEC §10: Err (systematic + splitting + statistical) against"
      " CPU time over n, N and h, paper A Ex 5", 1, vfy_case_cost_split, &vfy_cost_split_ex5, NULL},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"

@@ -908,6 +908,15 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     if (status != SIM_OK)
         return status;
     run_checks(run, NULL, d->case_checks, r);
+    const char *const *headers = run->table.cols;   /* the table again, with what the hook set */
+    const size_t ncols = run->table.ncols;
+    vfy_table_free(&run->table);
+    vfy_table_init(&run->table, ncols, headers);
+    for (size_t i = 0; i < run->nrows; i++)
+        if (row_cells(run, &run->rows[i]) != 0) {
+            snprintf(msg, msglen, "out of memory");
+            return SIM_ENOMEM;
+        }
     size_t notes_len = strlen(d->notes) + 4096;
     char title[256], *notes = malloc(notes_len);
     if (notes == NULL) {
@@ -916,8 +925,10 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     }
     vfy_expand(title, sizeof title, d->title, run, NULL);
     vfy_expand(notes, notes_len, d->notes, run, NULL);
-    status = vfy_write_case_tables(run->o, run->c->name, &run->table, run->comment, title, notes,
-                                   msg, msglen);
+    status = vfy_write_case_tables2(run->o, run->c->name, &run->table, run->comment, title,
+                                    notes, run->second.ncols ? &run->second : NULL,
+                                    run->second_suffix, run->second_title, run->second_notes,
+                                    msg, msglen);
     free(notes);
     for (size_t k = 0; k < VFY_FIGURES_MAX && d->figures[k].kind != VFY_FIGURE_NONE
                        && status == SIM_OK;
@@ -966,6 +977,7 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     }
     vfy_values_free(&run.values);
     vfy_table_free(&run.table);
+    vfy_table_free(&run.second);
     free(run.extra_mean);
     free(run.extra_ci);
     free(run.rows);

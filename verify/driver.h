@@ -233,8 +233,10 @@ typedef sim_status (*vfy_adjust_fn)(const vfy_row *row, sim_scene *solver, char 
                                     size_t msglen);
 
 /* After the rows: cross-row analysis.  May record checks, set case values
- * (run->values) for the notes, and write its own files.  Returns SIM_OK or
- * an error with msg. */
+ * (run->values) for the notes, set row values (the table is made again
+ * after it: a model fitted to every row has its columns), fill a second
+ * table (run->second) and write its own files.  Returns SIM_OK or an error
+ * with msg. */
 typedef sim_status (*vfy_hook_fn)(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen);
 
 typedef struct vfy_case_desc {
@@ -283,6 +285,10 @@ struct vfy_case_run {
     double *extra_mean, *extra_ci;  /* set by a hook (malloc'd, M each): one more
                                        curve in the figure, the n = infinity
                                        extrapolation */
+    vfy_table second;      /* a hook's second table (ncols 0: none), written after the
+                              first in the Markdown file and as <case><second_suffix>.csv */
+    const char *second_suffix, *second_title;
+    char second_notes[2048];
 };
 
 /* Set the case's text `name` (at most 4 a case) for templates; returns 0,

@@ -401,3 +401,22 @@ double vfy_metric_per(const vfy_case_run *run, const vfy_row *row, const vfy_met
     const double b = value_of(run, row, m->b);
     return b > 0 ? m->x * value_of(run, row, m->a) / b : 0.0;
 }
+
+double vfy_metric_max_rel_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    const size_t M = row->res.outputs;
+    const char *slash = strchr(m->b, '/');
+    char b[64];
+    snprintf(b, sizeof b, "%.*s", slash ? (int)(slash - m->b) : (int)strlen(m->b), m->b);
+    double *buf = malloc(3 * M * sizeof *buf), worst = NAN;
+    if (buf != NULL && slash != NULL && vfy_row_series(row, m->a, buf, NULL) == 0
+        && vfy_row_series(row, b, buf + M, NULL) == 0
+        && vfy_row_series(row, slash + 1, buf + 2 * M, NULL) == 0) {
+        worst = 0.0;
+        for (size_t k = 0; k < M; k++)
+            worst = fmax(worst, fabs(buf[k] - buf[M + k]) / buf[2 * M + k]);
+    }
+    free(buf);
+    return worst;
+}

@@ -119,6 +119,9 @@ double vfy_metric_variants_sum(const vfy_case_run *run, const vfy_row *row, cons
 double vfy_metric_batch_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 double vfy_metric_batch_se(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 double vfy_metric_batch_t_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+/* max_m |a[m] - b[m]| / c[m] for series a and b = "B/C" (paper A's
+ * statistical part of Err: |eta1 - E xi^(n)| / F). */
+double vfy_metric_max_rel_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 /* vfy_max_abs_diff of series a against series b. */
 double vfy_metric_max_abs_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 /* x a / b, 0 where b <= 0 (ns_per_event = 1e9 cpu_s / events). */
