@@ -367,7 +367,7 @@ gdsmc_add_cli_exact(cli_x_verify_vro_needs_maxwell 2
                     verify --case vro-grw-ex3 --suite quick --quiet --scenes ${S}
                     --set collisions.kernel=hard-spheres --out build/tests/grw-needs-maxwell)
 gdsmc_add_cli_exact(cli_x_verify_brs_needs_hard_spheres 2
-                    "gdsmc verify: tests/scenes/cases/brs-ex4.ini: the scene has no hard-sphere closures (allowed collisions.kernel = hard-spheres and background.kernel = hard-spheres)"
+                    "gdsmc verify: tests/scenes/cases/brs-ex4.ini: the scene has no T_le T_grad uy_le uy_grad references (paper B's closures need collisions.kernel = hard-spheres and background.kernel = hard-spheres)"
                     verify --case brs-ex4 --suite quick --quiet --scenes ${B}/cases
                     --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
 
