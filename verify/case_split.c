@@ -307,12 +307,7 @@ static sim_status split_adjust(const vfy_row *row, sim_scene *solver, char *msg,
                  solver->file);
         return SIM_EINVAL;
     }
-    if (strcmp(vfy_row_text(row, "scheme"), "jump") == 0) {
-        *solver = row->scene;
-        solver->scheme = SIM_SCHEME_JUMP;
-        solver->splitting = SIM_SPLIT_EULER;
-    }
-    return SIM_OK;
+    return vfy_adjust_jump_rows(row, solver, msg, msglen);
 }
 
 /* What a given accuracy costs (the notes and a progress line): for a target

@@ -23,10 +23,8 @@ extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
 extern const vfy_case_desc vfy_split_ex5;
 /* case_cost.c (SPEC §10: accuracy against CPU cost) */
-sim_status vfy_case_cost_split(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                               size_t);
 extern const vfy_case_desc vfy_cost_grw_ex3, vfy_cost_brs_ex2;
-extern const struct cost_split_data vfy_cost_split_ex5;
+extern const vfy_case_desc vfy_cost_split_ex5;
 /* case_hard.c (the hard suite, issue #5 item 1) */
 sim_status vfy_case_hard_dissipation(const vfy_case *, const vfy_options *, vfy_report *,
                                      char *, size_t);
@@ -79,7 +77,7 @@ static const vfy_case cases[] = {
     {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
      " n x N, paper B Ex 2", 1, vfy_run_described, NULL, &vfy_cost_brs_ex2},
     {"cost-split-ex5", "cost", "SPEC §10: Err (systematic + splitting + statistical) against"
-     " CPU time over n, N and h, paper A Ex 5", 1, vfy_case_cost_split, &vfy_cost_split_ex5, NULL},
+     " CPU time over n, N and h, paper A Ex 5", 1, vfy_run_described, NULL, &vfy_cost_split_ex5},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
      " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
      vfy_case_hard_dissipation, NULL, NULL},

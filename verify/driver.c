@@ -156,6 +156,20 @@ const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row)
     return row->index > 0 ? &run->rows[row->index - 1] : NULL;
 }
 
+sim_status vfy_adjust_jump_rows(const vfy_row *row, sim_scene *solver, char *msg,
+                                size_t msglen)
+{
+    (void)msg;
+    (void)msglen;
+    const char *scheme = vfy_row_text(row, "scheme");
+    if (scheme != NULL && strcmp(scheme, "jump") == 0) {
+        *solver = row->scene;
+        solver->scheme = SIM_SCHEME_JUMP;
+        solver->splitting = SIM_SPLIT_EULER;
+    }
+    return SIM_OK;
+}
+
 /* ------------------------------------------------------------ templates */
 
 static const char *run_string(const vfy_case_run *run, const char *name)

@@ -313,6 +313,13 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
 const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_run *run,
                        const vfy_row *row);
 
+/* An adjust hook (vfy_adjust_fn): a row whose text "scheme" is "jump"
+ * simulates the scene the references describe (no --solver-set) with the
+ * exact jump scheme, the reference the time-step rows (the solver under
+ * test) are measured against (SPEC §10). */
+sim_status vfy_adjust_jump_rows(const vfy_row *row, sim_scene *solver, char *msg,
+                                size_t msglen);
+
 /* ------------------------------------------------------------ rules */
 
 /* value within tol relative of expected (vfy_check_relative). */

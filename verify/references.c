@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "background.h"
+#include "heated.h"
 #include "scene_refs.h"
 #include "sonine.h"
 
@@ -36,6 +37,16 @@ static double hs_steady(const sim_scene *s, ref_background_closure closure)
         return NAN;
     const ref_background_params p = vfy_background_params(s);
     return ref_background_hs_T_steady(&p, closure);
+}
+/* Paper A Ex 5's first-Sonine closure's steady temperature (white-noise
+ * heated hard spheres). */
+static double T_steady_sonine_at(const sim_scene *s)
+{
+    if (!s->heating.present || s->heating.type != SIM_HEATING_WHITE_NOISE
+        || !s->collisions.present || s->collisions.kernel != SIM_KERNEL_HARD_SPHERES)
+        return NAN;
+    const ref_heated_params p = vfy_heated_params(s);
+    return ref_heated_hs_T_steady(&p, REF_HEATED_SONINE_CLOSURE);
 }
 static double T_star_le_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_LE); }
 static double T_star_grad_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_GRAD); }
@@ -72,6 +83,8 @@ static const vfy_reference registry[] = {
      tail_A_white_noise_at},
     {"A_gaussian", VFY_REF_VALUE, "paper C: Gaussian-thermostat tail amplitude",
      tail_A_gaussian_at},
+    {"T_steady_sonine", VFY_REF_VALUE,
+     "paper A Ex 5: steady T of the first-Sonine closure (a2 from C.10)", T_steady_sonine_at},
     /* values of paper B's hard-sphere scenes */
     {"T_star_le", VFY_REF_VALUE, "paper B (B.21): steady T of the local-equilibrium closure",
      T_star_le_at},
