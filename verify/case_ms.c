@@ -77,8 +77,9 @@ static double ms_cooling(const sim_scene *s, double T, double a2)
  * (2/3) g <|v|> = loss with <|v|> = sqrt(2 T0) (2/sqrt(pi)) (1 - a2/8)
  * (paper C Eq. (48)), each with its thermostat's Sonine a2.  Nothing when
  * the scene file gives no strength (keep_temperature; or --set gave one). */
-static const char *ms_strength(const sim_scene *s, char *buf, size_t len)
+static const char *ms_strength(const vfy_row *row, char *buf, size_t len)
 {
+    const sim_scene *s = &row->scene;
     buf[0] = '\0';
     if (!s->heating.present || s->heating.keep_temperature
         || sim_scene_key_line(s, "heating.strength") < 0)

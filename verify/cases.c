@@ -26,20 +26,8 @@ extern const vfy_case_desc vfy_split_ex5;
 extern const vfy_case_desc vfy_cost_grw_ex3, vfy_cost_brs_ex2;
 extern const vfy_case_desc vfy_cost_split_ex5;
 /* case_hard.c (the hard suite, issue #5 item 1) */
-sim_status vfy_case_hard_dissipation(const vfy_case *, const vfy_options *, vfy_report *,
-                                     char *, size_t);
-sim_status vfy_case_hard_nongaussian(const vfy_case *, const vfy_options *, vfy_report *,
-                                     char *, size_t);
-sim_status vfy_case_hard_tails(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                               size_t);
-sim_status vfy_case_hard_tiny(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                              size_t);
-sim_status vfy_case_hard_long_run(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                                  size_t);
-sim_status vfy_case_hard_stiff(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                               size_t);
-sim_status vfy_case_hard_extreme(const vfy_case *, const vfy_options *, vfy_report *, char *,
-                                 size_t);
+extern const vfy_case_desc vfy_hard_dissipation, vfy_hard_nongaussian, vfy_hard_tails,
+    vfy_hard_tiny, vfy_hard_long_run, vfy_hard_stiff, vfy_hard_extreme;
 
 static const vfy_case cases[] = {
     {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
@@ -80,20 +68,20 @@ static const vfy_case cases[] = {
      " CPU time over n, N and h, paper A Ex 5", 1, vfy_run_described, NULL, &vfy_cost_split_ex5},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
      " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
-     vfy_case_hard_dissipation, NULL, NULL},
+     vfy_run_described, NULL, &vfy_hard_dissipation},
     {"hard-nongaussian", "hard", "paper C's non-Gaussian thermostat near v = 0, alpha = 0.05,"
      " 0.1: a2, Eq. (44), depletion at v = 0, momentum to round-off", 1,
-     vfy_case_hard_nongaussian, NULL, NULL},
+     vfy_run_described, NULL, &vfy_hard_nongaussian},
     {"hard-tails", "hard", "paper A Ex 7: growing majorant (no violations), overpopulated"
-     " tail, exact energy balance", 1, vfy_case_hard_tails, NULL, NULL},
+     " tail, exact energy balance", 1, vfy_run_described, NULL, &vfy_hard_tails},
     {"hard-tiny", "hard", "n = 2, 3, 4: exact finite-n expectations (papers A and B), exact"
-     " Gaussian bulk velocity, majorant violations", 1, vfy_case_hard_tiny, NULL, NULL},
+     " Gaussian bulk velocity, majorant violations", 1, vfy_run_described, NULL, &vfy_hard_tiny},
     {"hard-long-run", "hard", "1e9 events per system: momentum and energy to round-off, exact"
-     " T(0) e^{-kt}, no NaN", 1, vfy_case_hard_long_run, NULL, NULL},
+     " T(0) e^{-kt}, no NaN", 1, vfy_run_described, NULL, &vfy_hard_long_run},
     {"hard-stiff", "hard", "paper B closures with K = 100 and 1e-4 through CVODE: success or a"
-     " clear failure, never garbage", 1, vfy_case_hard_stiff, NULL, NULL},
+     " clear failure, never garbage", 1, vfy_run_described, NULL, &vfy_hard_stiff},
     {"hard-extreme", "hard", "restitution 1e-3 and 1, rate 1e6, T0 = 1e-8 and 1e8 against"
-     " exact expectations and the Sonine closure", 1, vfy_case_hard_extreme, NULL, NULL},
+     " exact expectations and the Sonine closure", 1, vfy_run_described, NULL, &vfy_hard_extreme},
 };
 
 size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }

@@ -467,7 +467,7 @@ static const char *sweep_name(const vfy_sweep *s, size_t k)
  * if VALUE is one, else a text. */
 static void row_setting(vfy_row *row, const char *p, size_t n)
 {
-    char name[24], value[32], *end;
+    char name[24], value[VFY_ROW_TEXT_LEN], *end;
     size_t eq = strcspn(p, "=");
     if (eq >= n)
         return;
@@ -476,10 +476,21 @@ static void row_setting(vfy_row *row, const char *p, size_t n)
     double v = strtod(value, &end);
     if (end != value && *end == '\0')
         vfy_values_set(&row->values, name, v);
-    else if (row->ntexts < 4) {
-        snprintf(row->text_names[row->ntexts], sizeof row->text_names[0], "%s", name);
-        snprintf(row->texts[row->ntexts++], sizeof row->texts[0], "%s", value);
-    }
+    else
+        vfy_row_set_text(row, name, value);
+}
+
+int vfy_row_set_text(vfy_row *row, const char *name, const char *text)
+{
+    size_t i = 0;
+    while (i < row->ntexts && strcmp(row->text_names[i], name) != 0)
+        i++;
+    if (i == VFY_ROW_TEXTS)
+        return -1;
+    snprintf(row->text_names[i], sizeof row->text_names[i], "%s", name);
+    snprintf(row->texts[i], sizeof row->texts[i], "%s", text);
+    row->ntexts += i == row->ntexts;
+    return 0;
 }
 
 const char *vfy_row_text(const vfy_row *row, const char *name)
@@ -545,7 +556,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
                                             &row->solver, msg, msglen);
     char derived[512];
     if (status == SIM_OK && run->d->derive
-        && run->d->derive(&row->scene, derived, sizeof derived)[0]) {
+        && run->d->derive(row, derived, sizeof derived)[0]) {
         nsets = split_sets(derived, storage, sets, nsets, MAX, stem, sizeof stem, row);
         status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene, &row->solver, msg,
                                      msglen);
@@ -641,7 +652,7 @@ static int row_cells(vfy_case_run *run, const vfy_row *row)
     for (const vfy_column *col = run->d->columns; col->header; col++) {
         const char *name = col->value ? col->value : col->header;
         if (strcmp(col->format, "%s") == 0) {
-            const char *text = vfy_row_text(row, name);
+            const char *text = row_string(row, name);
             rc |= vfy_table_cell(&run->table, "%s", text ? text : "");
         } else {
             double v = lookup(run, row, name);

@@ -62,6 +62,9 @@ void vfy_values_free(vfy_values *vals);
 
 typedef struct vfy_case_run vfy_case_run;
 
+#define VFY_ROW_TEXTS 8
+#define VFY_ROW_TEXT_LEN 512
+
 /* One row: its scenes, the references of `scene` and the simulation of
  * `solver`, and its values. */
 typedef struct vfy_row {
@@ -69,8 +72,8 @@ typedef struct vfy_row {
     size_t index;
     char label[96];             /* {label}: an explicit row's label, or "" */
     char stem[64];              /* {scene}: the stem of the row's scene file */
-    size_t ntexts;              /* text values a sweep gave ("$scheme=euler") */
-    char text_names[4][24], texts[4][32];
+    size_t ntexts;              /* text values a sweep ("$scheme=euler") or a rule gave */
+    char text_names[VFY_ROW_TEXTS][24], texts[VFY_ROW_TEXTS][VFY_ROW_TEXT_LEN];
     sim_scene scene;            /* what the references describe */
     sim_scene solver;           /* what was simulated (--solver-set added) */
     vfy_refs refs;              /* the scene's references (empty if the case names none) */
@@ -93,6 +96,10 @@ const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row
 
 /* The row's text value `name` ("$name=..." in its sweep), or NULL. */
 const char *vfy_row_text(const vfy_row *row, const char *name);
+
+/* Set (or replace) the row's text `name` (a rule may: a solver's message);
+ * returns 0, or -1 when the row holds VFY_ROW_TEXTS texts already. */
+int vfy_row_set_text(vfy_row *row, const char *name, const char *text);
 
 /* The row before this one, or NULL for the first. */
 const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
@@ -175,7 +182,7 @@ typedef struct vfy_paper_column {
  * templates); in sets and rows, "scene=STEM" takes the row from scene file
  * STEM instead of the description's, and "$NAME=VALUE" gives the row a value
  * NAME that is no scene key (a number, or else a text for templates and
- * "%s" columns, at most 4 a row). */
+ * "%s" columns, at most VFY_ROW_TEXTS a row). */
 #define VFY_SWEEP_KEYS 4
 typedef struct vfy_sweep {
     const char *keys[VFY_SWEEP_KEYS];
@@ -220,11 +227,11 @@ typedef struct vfy_figure_spec {
 } vfy_figure_spec;
 #define VFY_FIGURES_MAX 3
 
-/* Settings derived from a row's scene (e.g. a thermostat's strength from
- * alpha), as "key=value;key=value" in buf: applied after the sweep and
- * before --set and --solver-set, so they never override what the user
- * fixed.  Returns buf ("" for none). */
-typedef const char *(*vfy_derive_fn)(const sim_scene *scene, char *buf, size_t len);
+/* Settings derived from a row (its scene as the sweep left it, and its
+ * values: e.g. a thermostat's strength from alpha), as "key=value;key=value"
+ * in buf: applied after the sweep and before --set and --solver-set, so they
+ * never override what the user fixed.  Returns buf ("" for none). */
+typedef const char *(*vfy_derive_fn)(const vfy_row *row, char *buf, size_t len);
 
 /* Change a row's solver scene after it was loaded, for what no setting can
  * say (e.g. simulate the reference scene with another scheme).  Returns

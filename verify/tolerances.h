@@ -124,4 +124,26 @@
 /* A tail fit needs this many shells with a relative half-width below 0.5. */
 #define VFY_TOL_MS_TAIL_MIN_BINS 5
 
+/* ---------------------------------------------------------- the hard suite */
+
+/* |a2 - (C.10)| at alpha = 0.05, 0.1, beyond paper C's range (its Figure 1
+ * reaches 0.2), where the first-Sonine estimate's own error is larger: 0.006
+ * plus a2's half-width (hard-dissipation, hard-tails). */
+#define VFY_TOL_HARD_A2_WHITE 0.006
+/* The exact steady energy balance 2 beta = loss holds for the n-particle
+ * process; the product of time averages (mu2, T^{3/2}) differs from the
+ * average of the product by O(1/n): allowed 3/n beyond the half-widths. */
+#define VFY_TOL_HARD_BALANCE_BIAS 3.0
+/* Non-Gaussian thermostat: f/phi in the lowest shell at most 0.5 plus its
+ * half-width (paper C §4.3: about 0; the first Sonine approximation says
+ * 1 + 15 a2/8 = 0.78). */
+#define VFY_TOL_HARD_DEPLETED 0.5
+/* hard-tails: the tail is c >= 3. */
+#define VFY_TOL_HARD_TAIL_C 3.0
+/* CVODE (rtol 1e-10) against a closed form or a steady state: 1e-6. */
+#define VFY_TOL_HARD_ODE_RTOL 1e-6
+/* Hard spheres, centred T against (1 - 1/n) times the closure: the rest of
+ * the O(1/n) bias, allowed 2/n. */
+#define VFY_TOL_HARD_FINITE_N_BIAS 2.0
+
 #endif
