@@ -111,7 +111,7 @@ static void test_sweeps(void **state)
 }
 
 /* A run with two rows of values, for templates, rules and guards. */
-static const vfy_case test_case = {"test-case", "test", "a test", 0, NULL, NULL, NULL};
+static const vfy_case test_case = {"test-case", "test", "a test", 0, NULL};
 static const vfy_case_desc test_desc = {.paper = "Table 9"};
 static const vfy_options test_options = {.size = VFY_QUICK};
 
@@ -317,7 +317,7 @@ static const vfy_case_desc e2e_desc = {
     .needs = e2e_needs, .needs_why = "Maxwell molecules", .metrics = e2e_metrics,
     .checks = e2e_checks, .columns = e2e_columns, .title = "{case}",
     .notes = "{rows} rows, {outputs} outputs"};
-static const vfy_case e2e_case = {"driver-e2e", "test", "", 0, vfy_run_described, NULL,
+static const vfy_case e2e_case = {"driver-e2e", "test", "", 0,
                                   &e2e_desc};
 
 static size_t run_e2e(const char *const *wrong, size_t nwrong, char *table, size_t len)
@@ -399,7 +399,7 @@ static const vfy_case_desc rows_desc = {
     .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
                  .refs = {"T_exact"}}},
     .title = "{case}", .notes = "notes"};
-static const vfy_case rows_case = {"driver-rows", "test", "", 0, vfy_run_described, NULL,
+static const vfy_case rows_case = {"driver-rows", "test", "", 0,
                                    &rows_desc};
 
 static void test_rows_variants_adjust(void **state)

@@ -9,24 +9,7 @@
 #include "scene_ini.h"
 #include "table.h"
 
-void vfy_cost_cells(vfy_table *table, double cpu_seconds, double wall_seconds,
-                    double events)
-{
-    vfy_table_cell(table, "%.2f", cpu_seconds);
-    vfy_table_cell(table, "%.2f", wall_seconds);
-    vfy_table_cell(table, "%.0f", events);
-    vfy_table_cell(table, "%.1f", events > 0 ? 1e9 * cpu_seconds / events : 0.0);
-}
-
 sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const vfy_table *table,
-                                 const char *comment, const char *title, const char *notes,
-                                 char *msg, size_t msglen)
-{
-    return vfy_write_case_tables2(o, name, table, comment, title, notes, NULL, NULL, NULL, NULL,
-                                  msg, msglen);
-}
-
-sim_status vfy_write_case_tables2(const vfy_options *o, const char *name, const vfy_table *table,
                                   const char *comment, const char *title, const char *notes,
                                   const vfy_table *second, const char *suffix,
                                   const char *title2, const char *notes2, char *msg,
@@ -65,26 +48,6 @@ sim_status vfy_write_rows_so_far(const vfy_options *o, const char *name, const v
                             comment) != 0)
         return vfy_io_error(path, msg, msglen);
     return SIM_OK;
-}
-
-sim_status vfy_run_row(const vfy_case *c, const vfy_options *o, const sim_scene *scene,
-                       const sim_scene *solver, vfy_refs *refs, sim_ensemble_result *res,
-                       char *msg, size_t msglen)
-{
-    sim_error err;
-    memset(res, 0, sizeof *res);
-    sim_status status = vfy_scene_references(scene, refs, &err);
-    if (status != SIM_OK) {
-        vfy_scene_format_error(scene, &err, msg, msglen);
-        return status;
-    }
-    char label[96];
-    snprintf(label, sizeof label, "%s n=%zu", c->name, solver->particles.n);
-    if ((status = vfy_simulate(solver, o, label, res, msg, msglen)) != SIM_OK) {
-        vfy_refs_free(refs);
-        sim_ensemble_result_free(res);
-    }
-    return status;
 }
 
 const char *vfy_display_path(const char *path)

@@ -31,57 +31,57 @@ extern const vfy_case_desc vfy_hard_dissipation, vfy_hard_nongaussian, vfy_hard_
 
 static const vfy_case cases[] = {
     {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
-     vfy_run_described, NULL, &vfy_grw_ex3},
+     &vfy_grw_ex3},
     {"grw-ex4", "grw", "paper A Ex 4, Table 2: cooling Maxwell gas, Emax = O(1/n)", 1,
-     vfy_run_described, NULL, &vfy_grw_ex4},
+     &vfy_grw_ex4},
     {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
-     vfy_run_described, NULL, &vfy_grw_ex5},
+     &vfy_grw_ex5},
     {"vro-grw-ex3", "grw", "paper A Ex 3 observed through the exact conditional expectation "
-     "over the pending Brownian increments: the variance reduction", 1, vfy_run_described, NULL, &vfy_vro_grw_ex3},
+     "over the pending Brownian increments: the variance reduction", 1, &vfy_vro_grw_ex3},
     {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",
-     1, vfy_run_described, NULL, &vfy_brs_ex1},
+     1, &vfy_brs_ex1},
     {"brs-ex2", "brs", "paper B Ex 2, Table 2: Maxwell kernels, drifting background", 1,
-     vfy_run_described, NULL, &vfy_brs_ex2},
+     &vfy_brs_ex2},
     {"brs-ex3", "brs", "paper B Ex 3: Maxwell kernels, light background (slow relaxation)", 0,
-     vfy_run_described, NULL, &vfy_brs_ex3},
+     &vfy_brs_ex3},
     {"brs-ex4", "brs", "paper B Ex 4: hard spheres, K = 1/8: kinetic T* vs LE and Grad closures",
-     1, vfy_run_described, NULL, &vfy_brs_ex4},
+     1, &vfy_brs_ex4},
     {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,
-     vfy_run_described, NULL, &vfy_brs_ex5},
+     &vfy_brs_ex5},
     {"ms-a2-white-noise", "ms", "paper C Fig. 1: steady a2 vs alpha, white noise, vs (C.10)", 1,
-     vfy_run_described, NULL, &vfy_ms_white_noise},
+     &vfy_ms_white_noise},
     {"ms-a2-gaussian", "ms", "paper C Figs. 4, 6: steady a2, a3 vs alpha, Gaussian (HCS)", 1,
-     vfy_run_described, NULL, &vfy_ms_gaussian},
+     &vfy_ms_gaussian},
     {"ms-a2-non-gaussian", "ms", "paper C Fig. 8: steady a2 vs alpha, non-Gaussian, vs (C.76)",
-     1, vfy_run_described, NULL, &vfy_ms_non_gaussian},
+     1, &vfy_ms_non_gaussian},
     {"ms-table1", "ms", "paper C Table 1: mu4 direct vs through the exact steady relations", 1,
-     vfy_run_described, NULL, &vfy_ms_table1},
+     &vfy_ms_table1},
     {"ms-tails", "ms", "paper C Figs. 3, 7: high-energy tails G(c), fitted A vs theory", 0,
-     vfy_run_described, NULL, &vfy_ms_tails},
+     &vfy_ms_tails},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
-     " Euler and Strang", 1, vfy_run_described, NULL, &vfy_split_ex5},
+     " Euler and Strang", 1, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
-     " n x N, paper A Ex 3", 1, vfy_run_described, NULL, &vfy_cost_grw_ex3},
+     " n x N, paper A Ex 3", 1, &vfy_cost_grw_ex3},
     {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
-     " n x N, paper B Ex 2", 1, vfy_run_described, NULL, &vfy_cost_brs_ex2},
+     " n x N, paper B Ex 2", 1, &vfy_cost_brs_ex2},
     {"cost-split-ex5", "cost", "SPEC §10: Err (systematic + splitting + statistical) against"
-     " CPU time over n, N and h, paper A Ex 5", 1, vfy_run_described, NULL, &vfy_cost_split_ex5},
+     " CPU time over n, N and h, paper A Ex 5", 1, &vfy_cost_split_ex5},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
      " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
-     vfy_run_described, NULL, &vfy_hard_dissipation},
+     &vfy_hard_dissipation},
     {"hard-nongaussian", "hard", "paper C's non-Gaussian thermostat near v = 0, alpha = 0.05,"
      " 0.1: a2, Eq. (44), depletion at v = 0, momentum to round-off", 1,
-     vfy_run_described, NULL, &vfy_hard_nongaussian},
+     &vfy_hard_nongaussian},
     {"hard-tails", "hard", "paper A Ex 7: growing majorant (no violations), overpopulated"
-     " tail, exact energy balance", 1, vfy_run_described, NULL, &vfy_hard_tails},
+     " tail, exact energy balance", 1, &vfy_hard_tails},
     {"hard-tiny", "hard", "n = 2, 3, 4: exact finite-n expectations (papers A and B), exact"
-     " Gaussian bulk velocity, majorant violations", 1, vfy_run_described, NULL, &vfy_hard_tiny},
+     " Gaussian bulk velocity, majorant violations", 1, &vfy_hard_tiny},
     {"hard-long-run", "hard", "1e9 events per system: momentum and energy to round-off, exact"
-     " T(0) e^{-kt}, no NaN", 1, vfy_run_described, NULL, &vfy_hard_long_run},
+     " T(0) e^{-kt}, no NaN", 1, &vfy_hard_long_run},
     {"hard-stiff", "hard", "paper B closures with K = 100 and 1e-4 through CVODE: success or a"
-     " clear failure, never garbage", 1, vfy_run_described, NULL, &vfy_hard_stiff},
+     " clear failure, never garbage", 1, &vfy_hard_stiff},
     {"hard-extreme", "hard", "restitution 1e-3 and 1, rate 1e6, T0 = 1e-8 and 1e8 against"
-     " exact expectations and the Sonine closure", 1, vfy_run_described, NULL, &vfy_hard_extreme},
+     " exact expectations and the Sonine closure", 1, &vfy_hard_extreme},
 };
 
 size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
@@ -144,17 +144,11 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
         if (o->progress)
             fprintf(o->progress, "== %s (%s sizes): %s\n", c->name,
                     o->size == VFY_QUICK ? "quick" : "paper", c->summary);
-        sim_status status = c->run(c, o, r, msg, msglen);
+        sim_status status = vfy_run_described(c, o, r, msg, msglen);
         if (status != SIM_OK)
             return status;
     }
     return SIM_OK;
-}
-
-sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scene *scene,
-                               sim_scene *solver, char *msg, size_t msglen)
-{
-    return vfy_load_scene_stem(c->name, o, scene, solver, msg, msglen);
 }
 
 /* The solver's scene failed where the user's (the same --set) did not, so a

@@ -39,20 +39,12 @@ typedef struct vfy_options {
 
 typedef struct vfy_case vfy_case;
 
-/* Run a case: fill the report; return SIM_OK when it ran (whatever the
- * verdicts), or an error with msg (bad scene, I/O) when it could not. */
-typedef sim_status (*vfy_case_fn)(const vfy_case *c, const vfy_options *o, vfy_report *r,
-                                  char *msg, size_t msglen);
-
 struct vfy_case {
     const char *name;      /* also the scene file's stem and the report's name */
     const char *suite;     /* the paper's suite: "grw" (paper A), "brs" (paper B) */
     const char *summary;   /* one line for --list */
     int quick;             /* part of the quick suite */
-    vfy_case_fn run;
-    const void *data;      /* the case's own constants (a paper table) */
-    const struct vfy_case_desc *desc;  /* the description run by vfy_run_described
-                                          (driver.h) */
+    const struct vfy_case_desc *desc;  /* what the driver runs (driver.h) */
 };
 
 size_t vfy_case_count(void);
@@ -70,12 +62,6 @@ const char *vfy_paper_suites(char *buf, size_t len);
  * cannot run (returns its error).  Reports go to o->out_dir. */
 sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
                    vfy_report *r, char *msg, size_t msglen);
-
-/* Shared by the cases: load o->scene_dir/<name>.ini with o's overrides into
- * *scene (what the references describe) and, with the solver overrides added,
- * into *solver (what is simulated). */
-sim_status vfy_load_case_scene(const vfy_case *c, const vfy_options *o, sim_scene *scene,
-                               sim_scene *solver, char *msg, size_t msglen);
 
 /* The same for the scene o->scene_dir/<stem>.ini, for a case built on
  * another case's scene (e.g. cost-grw-ex3 on grw-ex3). */

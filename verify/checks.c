@@ -19,15 +19,6 @@ void vfy_report_free(vfy_report *r)
     memset(r, 0, sizeof *r);
 }
 
-const char *vfy_name(char *buf, size_t len, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(buf, len, fmt, ap);
-    va_end(ap);
-    return buf;
-}
-
 static const char *verdict_word(vfy_verdict v)
 {
     return v == VFY_PASS ? "PASS" : v == VFY_FAIL ? "FAIL" : "SKIP";

@@ -66,8 +66,4 @@ vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *
 /* A check that does not apply here, with the reason (never a failure). */
 void vfy_skip(vfy_report *r, const char *name, const char *reason);
 
-/* printf-style "%s", for names built on the fly. */
-const char *vfy_name(char *buf, size_t len, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
 #endif

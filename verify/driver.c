@@ -950,7 +950,7 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     }
     vfy_expand(title, sizeof title, d->title, run, NULL);
     vfy_expand(notes, notes_len, d->notes, run, NULL);
-    status = vfy_write_case_tables2(run->o, run->c->name, &run->table, run->comment, title,
+    status = vfy_write_case_tables(run->o, run->c->name, &run->table, run->comment, title,
                                     notes, run->second.ncols ? &run->second : NULL,
                                     run->second_suffix, run->second_title, run->second_notes,
                                     msg, msglen);

@@ -311,7 +311,8 @@ int vfy_run_extrapolate(vfy_case_run *run, const char *quantity, double *chi2);
 /* The number of variants of the description (1 without). */
 size_t vfy_variant_count(const vfy_case_desc *d);
 
-/* Run a described case (the vfy_case_fn of every description). */
+/* Run a case: fill the report; SIM_OK when it ran (whatever the verdicts),
+ * or an error with msg (a bad scene, I/O) when it could not. */
 sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
                              size_t msglen);
 
