@@ -469,8 +469,11 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
                  run->c->name, t.A_theory, vfy_values_get(&row->values, "b"), th, alpha);
         const char *series[] = {"G (DSMC)"}, *curves[] = {"G of the Maxwellian"};
         const double *ys[] = {G}, *cs[] = {Gc}, *yf[] = {Gphi};
-        const vfy_points fig = {name, title, "c", "G(c)", 1, bins, c, 1, series, ys, cs,
-                                bins, c, 1, curves, yf, run->comment};
+        const vfy_points fig = {.name = name, .title = title, .xlabel = "c", .ylabel = "G(c)",
+                                .logy = 1, .npoints = bins, .x = c, .nseries = 1,
+                                .series = series, .y = ys, .ci = cs, .nfine = bins,
+                                .xfine = c, .ncurves = 1, .curves = curves, .yfine = yf,
+                                .comment = run->comment};
         if (vfy_write_points(run->o, &fig) != 0)
             status = vfy_io_error(name, msg, msglen);
         free(buf);

@@ -86,46 +86,39 @@ static double split_step_for(const split_row *rows, size_t count, double order, 
     return NAN;
 }
 
-/* The figure: |difference in T̄| against h, log-log, with error bars. */
+/* The figure: |difference in T̄| against h, log-log, with error bars, beside
+ * slope 1 and slope 2 through each splitting's largest step (figure.h). */
 static int split_figure(const vfy_options *o, const char *name, const char *comment,
                         const split_row *rows, size_t levels)
 {
-    char data[1024], gp[1024], png[1024], tmp[1100], file[200];
-    snprintf(file, sizeof file, "%s-points", name);
-    FILE *f = vfy_file_begin(vfy_report_path(o, file, ".csv", data, sizeof data), tmp,
-                             sizeof tmp);
-    if (f == NULL)
+    double *buf = malloc(7 * levels * sizeof *buf);
+    if (buf == NULL)
         return -1;
-    vfy_write_comment(f, comment);
-    fprintf(f, "h,euler_dT,euler_dT_ci,strang_dT,strang_dT_ci\n");
-    for (size_t k = 0; k < levels; k++)
-        fprintf(f, "%.10g,%.6g,%.4g,%.6g,%.4g\n", rows[k].h, fabs(rows[k].dT), rows[k].dT_ci,
-                fabs(rows[levels + k].dT), rows[levels + k].dT_ci);
-    if (vfy_file_commit(f, tmp, data, 1) != 0)
-        return -1;
-    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
-    if (f == NULL)
-        return -1;
-    vfy_write_comment(f, comment);
+    double *h = buf, *e = buf + levels, *ec = e + levels, *s = ec + levels, *sc = s + levels;
+    double *one = sc + levels, *two = one + levels;
     const double h0 = rows[0].h, e0 = fabs(rows[0].dT), s0 = fabs(rows[levels].dT);
-    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 900,650 font ',10'\n"
-               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
-               "set title '%s: |time-step - jump| in the time-averaged T'\n"
-               "set xlabel 'h'\nset ylabel '|difference in T|'\nset logscale xy\n"
-               "set key top left\n"
-               "plot '%s' skip 1 using 1:2:3 with yerrorbars pt 5 title 'Euler ± c',"
-               " '%s' skip 1 using 1:4:5 with yerrorbars pt 7 title 'Strang ± c',"
-               " %.6g*(x/%.6g) with lines dt 2 title 'slope 1',"
-               " %.6g*(x/%.6g)**2 with lines dt 3 title 'slope 2'\n",
-            name, gp, vfy_report_path(o, name, ".png", png, sizeof png), name, data, data, e0,
-            h0, s0, h0);
-    if (vfy_file_commit(f, tmp, gp, 1) != 0)
-        return -1;
-    if (vfy_gnuplot(gp) < 0 && o->progress)
-        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
-    return 0;
+    for (size_t k = 0; k < levels; k++) {
+        h[k] = rows[k].h;
+        e[k] = fabs(rows[k].dT);
+        ec[k] = rows[k].dT_ci;
+        s[k] = fabs(rows[levels + k].dT);
+        sc[k] = rows[levels + k].dT_ci;
+        one[k] = e0 * (h[k] / h0);
+        two[k] = s0 * (h[k] / h0) * (h[k] / h0);
+    }
+    char title[200];
+    snprintf(title, sizeof title, "%s: |time-step - jump| in the time-averaged T", name);
+    const char *series[] = {"Euler |dT|", "Strang |dT|"}, *curves[] = {"slope 1", "slope 2"};
+    const double *ys[] = {e, s}, *cs[] = {ec, sc}, *yf[] = {one, two};
+    const vfy_points fig = {.name = name, .title = title, .xlabel = "h",
+                            .ylabel = "|difference in T|", .logy = 1, .logx = 1,
+                            .npoints = levels, .x = h, .nseries = 2, .series = series, .y = ys,
+                            .ci = cs, .nfine = levels, .xfine = h, .ncurves = 2,
+                            .curves = curves, .yfine = yf, .comment = comment};
+    int rc = vfy_write_points(o, &fig);
+    free(buf);
+    return rc;
 }
-
 
 /* ------------------------------------------------------------ the rows */
 

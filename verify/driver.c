@@ -766,9 +766,12 @@ static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
     char name[160], title[256];
     snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
     vfy_expand(title, sizeof title, f->title, run, NULL);
-    const vfy_points points = {name, title, f->xlabel, f->ylabel, 0, np, x, nseries, slabels,
-                               ys, cis, ncurves ? FINE : 0, xfine, ncurves, clabels, yfs,
-                               run->comment};
+    const vfy_points points = {.name = name, .title = title, .xlabel = f->xlabel,
+                               .ylabel = f->ylabel, .npoints = np, .x = x, .nseries = nseries,
+                               .series = slabels, .y = ys, .ci = cis,
+                               .nfine = ncurves ? FINE : 0, .xfine = xfine,
+                               .ncurves = ncurves, .curves = clabels, .yfine = yfs,
+                               .comment = run->comment};
     int rc = np > 0 ? vfy_write_points(run->o, &points) : 0;
     free(buf);
     return rc;

@@ -67,7 +67,11 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
                  "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
                  "plot",
             f->title, gp, vfy_report_path(o, f->name, ".png", png, sizeof png), f->title,
-            f->xlabel, f->ylabel, f->logy ? "set logscale y\n" : "");
+            f->xlabel, f->ylabel,
+            f->logx && f->logy ? "set logscale xy\n"
+            : f->logy          ? "set logscale y\n"
+            : f->logx          ? "set logscale x\n"
+                               : "");
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, "%s '%s' skip 1 using 1:%zu with lines lw 2 dt %zu title '%s'",
                 j ? "," : "", theory, j + 2, j + 1, f->curves[j]);

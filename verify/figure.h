@@ -27,7 +27,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
  * figures of a2 against alpha, G(c) against c). */
 typedef struct vfy_points {
     const char *name, *title, *xlabel, *ylabel;
-    int logy;
+    int logy, logx;   /* log scales */
     size_t npoints;
     const double *x;
     size_t nseries;
