@@ -427,6 +427,109 @@ static void test_rows_variants_adjust(void **state)
     assert_int_equal(access(path, R_OK), 0);
 }
 
+/* Batches as variants (brs-ex4's way): three seeded batches of each row, the
+ * batch metrics and the mean over the variants (NAME@*), a hook that sets
+ * case values and case checks on them; the exact time average of the
+ * finite-n expectation is met, a wrong printed value is not. */
+static const char *const batch_variants[] = {"b1: $batch=0", "b2: $batch=1", "b3: $batch=2",
+                                             NULL};
+static sim_status batch_seed(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
+{
+    (void)msg;
+    (void)msglen;
+    const double batch = vfy_values_get(&row->values, "batch");
+    if (!isnan(batch))
+        solver->seed = row->scene.seed + 1000 * (uint64_t)batch;
+    return SIM_OK;
+}
+static const vfy_metric batch_metrics[] = {
+    {"T_star", vfy_metric_batch_mean, "T_raw", NULL, 0.5},
+    {"T_star_se", vfy_metric_batch_se, "T_raw", NULL, 0.5},
+    {"T_star_ci", vfy_metric_batch_t_ci, "T_star_se", NULL, 0},
+    {"N", vfy_metric_variants_sum, "N", NULL, 0},
+    {"stat", vfy_metric_max_rel_diff, "T_raw@*", "T_raw_finite_n/T_exact", 0},
+    {"dev", vfy_metric_max_abs_diff, "T_raw@*", "T_raw_finite_n", 0},
+    {NULL, NULL, NULL, NULL, 0}};
+/* The exact time average of E T_raw over the same times. */
+static sim_status batch_hook(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    (void)r;
+    (void)msg;
+    (void)msglen;
+    const vfy_row *row = &run->rows[0];
+    double exact[64];
+    assert_true(row->res.outputs <= 64);
+    assert_int_equal(vfy_row_series(row, "T_raw_finite_n", exact, NULL), 0);
+    vfy_values_set(&run->values, "T_exact_avg",
+                   vfy_time_average(row->res.t, exact, row->res.outputs, 0.5 * row->solver.t_end));
+    vfy_values_set(&run->values, "T_star", vfy_values_get(&row->values, "T_star"));
+    vfy_values_set(&run->values, "T_star_ci", vfy_values_get(&row->values, "T_star_ci"));
+    return SIM_OK;
+}
+static const vfy_check_spec batch_case_checks[] = {
+    {.name = "{case} T* vs exact", .rule = vfy_rule_absolute, .value = "T_star",
+     .expected = "T_exact_avg", .plus = "T_star_ci"},
+    {.name = "{case} T* vs a wrong printed value", .rule = vfy_rule_printed, .value = "T_star",
+     .plus = "T_star_ci", .x = 9.99, .tol = 2},
+    {.name = NULL}};
+static const vfy_column batch_columns[] = {
+    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"T_star", NULL, "%.5f"}, {NULL, NULL, NULL}};
+static const vfy_case_desc batch_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {.keys = {"particles.n"}, .values = {"16"},
+                   .sets = "particles.ensembles=300;scene.outputs=21"},
+    .needs = e2e_needs, .variants = batch_variants, .adjust = batch_seed,
+    .metrics = batch_metrics, .columns = batch_columns, .after_rows = batch_hook,
+    .case_checks = batch_case_checks,
+    .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T_raw@*",
+                 .refs = {"T_raw_finite_n"}}},
+    .title = "{case}", .notes = "{rows} row"};
+static const vfy_case batch_case = {"driver-batches", "test", "", 0, &batch_desc};
+
+static void test_batches_and_case_checks(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], path[600], table[1024];
+    assert_int_equal(vfy_run_described(&batch_case, &o, &r, msg, sizeof msg), SIM_OK);
+    assert_int_equal(r.count, 2);
+    assert_int_equal(r.checks[0].verdict, VFY_PASS);
+    assert_string_equal(r.checks[1].name, "driver-batches T* vs a wrong printed value");
+    assert_int_equal(r.checks[1].verdict, VFY_FAIL);
+    vfy_report_free(&r);
+    snprintf(path, sizeof path, "%s/driver-batches.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t got = fread(table, 1, sizeof table - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    assert_non_null(strstr(table, "\nn,N,T_star\n16,900,"));   /* N summed over 3 batches */
+    /* the figure draws the batches' mean as T_raw */
+    snprintf(path, sizeof path, "%s/driver-batches-T-curves.csv", out_dir);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    got = fread(table, 1, sizeof table - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    assert_null(strstr(table, "@*"));
+}
+
+/* The pure helpers of the steady and cost cases: a time average over the
+ * second half, and the largest absolute difference; each moves with a
+ * wrong input. */
+static void test_time_average_and_abs_diff(void **state)
+{
+    (void)state;
+    const double t[5] = {0, 1, 2, 3, 4}, x[5] = {9, 9, 1, 2, 3}, y[5] = {9, 9, 1, 2, 3.5};
+    assert_close(vfy_time_average(t, x, 5, 2.0), 2.0, 1e-15, 0);
+    assert_close(vfy_time_average(t, y, 5, 2.0), 13.0 / 6.0, 1e-15, 0);
+    assert_true(isnan(vfy_time_average(t, x, 5, 5.0)));   /* no time that late */
+    assert_close(vfy_max_abs_diff(x, x, 5), 0.0, 0, 0);
+    assert_close(vfy_max_abs_diff(x, y, 5), 0.5, 1e-15, 0);
+}
+
 /* The registry names every series vfy_scene_references gives a shipped
  * scene (so the two cannot drift apart), and value references evaluate at
  * a scene's restitution. */
@@ -473,6 +576,8 @@ int main(void)
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
         cmocka_unit_test(test_reference_registry), cmocka_unit_test(test_rows_variants_adjust),
         cmocka_unit_test(test_tail_fit_and_adapters),
+        cmocka_unit_test(test_batches_and_case_checks),
+        cmocka_unit_test(test_time_average_and_abs_diff),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }
