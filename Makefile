@@ -66,7 +66,7 @@ fuzz:
 	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus
 
-# Ensembles across MPI ranks (README: Running on several processes); only the
+# Ensembles across MPI ranks (docs/running.md); only the
 # executable is built, and only the tests labelled mpi run.
 test-mpi:
 	$(MAKE) deps PACKAGES="$(PACKAGES) $(MPI_PACKAGES)"
