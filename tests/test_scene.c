@@ -785,7 +785,8 @@ static void refs_error(const char *text, sim_status status, char *msg, size_t ms
     if (st == SIM_OK)
         vfy_refs_free(&refs);
     assert_int_equal(st, status);
-    assert_null(refs.values);   /* nothing left allocated */
+    assert_null(refs.cols);   /* nothing left allocated */
+    assert_null(refs.names);
     assert_int_equal(refs.count, 0);
     vfy_scene_format_error(&s, &err, msg, msglen);
 }

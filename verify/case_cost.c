@@ -227,18 +227,14 @@ static sim_status exact_sys(const char *exact_name, const char *finite_name,
         vfy_scene_format_error(&s, &err, msg, msglen);
         return status;
     }
-    double *buf = malloc(2 * refs.outputs * sizeof *buf);
-    if (buf == NULL) {
-        snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-    } else if (!vfy_refs_column(&refs, exact_name, buf)
-               || !vfy_refs_column(&refs, finite_name, buf + refs.outputs)) {
+    const double *exact = vfy_refs_column(&refs, exact_name);
+    const double *finite = vfy_refs_column(&refs, finite_name);
+    if (exact == NULL || finite == NULL) {
         snprintf(msg, msglen, "%s: no %s and %s references for this scene", s.file, exact_name,
                  finite_name);
         status = SIM_EINVAL;
     } else
-        *sys = vfy_max_rel_err(buf + refs.outputs, buf, refs.outputs);
-    free(buf);
+        *sys = vfy_max_rel_err(finite, exact, refs.outputs);
     vfy_refs_free(&refs);
     return status;
 }

@@ -427,7 +427,7 @@ static int cmd_reference(int argc, char **argv)
     for (size_t m = 0; m < refs.outputs; m++) {
         fprintf(f, "%.10g", sim_scene_output_time(&scene, m));
         for (size_t j = 0; j < refs.count; j++)
-            fprintf(f, ",%.14g", refs.values[m * VFY_REFS_MAX + j]);
+            fprintf(f, ",%.14g", refs.cols[j][m]);
         fputc('\n', f);
     }
     vfy_refs_free(&refs);

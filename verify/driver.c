@@ -144,8 +144,10 @@ int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *c
             return 0;
         }
     }
-    if (vfy_refs_column(&row->refs, name, mean) == NULL)
+    const double *ref = vfy_refs_column(&row->refs, name);
+    if (ref == NULL)
         return -1;
+    memcpy(mean, ref, row->res.outputs * sizeof *mean);
     if (ci != NULL)
         memset(ci, 0, row->res.outputs * sizeof *ci);
     return 0;

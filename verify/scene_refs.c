@@ -70,10 +70,31 @@ static sim_status check_paper_b(const sim_scene *s, sim_error *err)
     return SIM_OK;
 }
 
-static void set_name(vfy_refs *refs, const char *name)
+/* A new column `name` of refs->outputs values (zeroed); NULL when out of
+ * memory. */
+static double *add_column(vfy_refs *refs, const char *name)
 {
-    snprintf(refs->names[refs->count++], sizeof refs->names[0], "%s", name);
+    if (refs->count == refs->capacity) {
+        size_t cap = refs->capacity ? 2 * refs->capacity : 4;
+        char(*names)[32] = realloc(refs->names, cap * sizeof *names);
+        if (names == NULL)
+            return NULL;
+        refs->names = names;
+        double **cols = realloc(refs->cols, cap * sizeof *cols);
+        if (cols == NULL)
+            return NULL;
+        refs->cols = cols;
+        refs->capacity = cap;
+    }
+    double *col = calloc(refs->outputs ? refs->outputs : 1, sizeof *col);
+    if (col == NULL)
+        return NULL;
+    snprintf(refs->names[refs->count], sizeof refs->names[0], "%s", name);
+    refs->cols[refs->count++] = col;
+    return col;
 }
+
+#define NO_MEMORY(err) sim_error_set(err, SIM_ENOMEM, "", "out of memory")
 
 /* Paper B: closed forms and the exact finite-n T (Maxwell), or the two
  * closures (hard spheres), into refs (values allocated, t the output times). */
@@ -85,26 +106,30 @@ static sim_status background_references(const sim_scene *scene, const double *t,
     char msg[256];
     if (scene->background.kernel == SIM_KERNEL_MAXWELL) {
         static const char *const names[] = {"T_exact", "ux_exact", "uy_exact", "uz_exact"};
+        double *col[4];
         for (size_t j = 0; j < 4; j++)
-            set_name(refs, names[j]);
+            if ((col[j] = add_column(refs, names[j])) == NULL)
+                return NO_MEMORY(err);
         for (size_t m = 0; m < M; m++) {
-            double *row = refs->values + m * VFY_REFS_MAX;
-            row[0] = ref_background_maxwell_T(&p, t[m]);
-            ref_background_maxwell_u(&p, t[m], row + 1);
+            double u[3];
+            col[0][m] = ref_background_maxwell_T(&p, t[m]);
+            ref_background_maxwell_u(&p, t[m], u);
+            for (int k = 0; k < 3; k++)
+                col[1 + k][m] = u[k];
         }
         if (scene->particles.zero_momentum)
             return SIM_OK;
         double *T = malloc(M * sizeof *T);
         if (T == NULL)
-            return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+            return NO_MEMORY(err);
         ref_status st = ref_background_maxwell_T_mean(&p, (double)scene->particles.n, t, M, NULL,
                                                       T, msg, sizeof msg);
-        if (st == REF_OK) {
-            set_name(refs, "T_finite_n");
-            for (size_t m = 0; m < M; m++)
-                refs->values[m * VFY_REFS_MAX + 4] = T[m];
-        }
+        double *finite = st == REF_OK ? add_column(refs, "T_finite_n") : NULL;
+        if (finite != NULL)
+            memcpy(finite, T, M * sizeof *T);
         free(T);
+        if (st == REF_OK && finite == NULL)
+            return NO_MEMORY(err);
         return st == REF_OK ? SIM_OK
                             : sim_error_set(err, SIM_EINVAL, "", "T_finite_n: %s", msg);
     }
@@ -123,17 +148,17 @@ static sim_status background_references(const sim_scene *scene, const double *t,
             break;
         }
         static const char *const quantities[] = {"T", "ux", "uy", "uz"};
-        size_t first = refs->count;
-        for (size_t j = 0; j < 4; j++) {
+        double *col[4];
+        for (size_t j = 0; j < 4 && status == SIM_OK; j++) {
             char name[32];
             snprintf(name, sizeof name, "%s_%s", quantities[j], closures[c].suffix);
-            set_name(refs, name);
+            if ((col[j] = add_column(refs, name)) == NULL)
+                status = NO_MEMORY(err);
         }
-        for (size_t m = 0; m < M; m++) {
-            double *row = refs->values + m * VFY_REFS_MAX + first;
-            row[0] = T[m];
+        for (size_t m = 0; m < M && status == SIM_OK; m++) {
+            col[0][m] = T[m];
             for (int k = 0; k < 3; k++)
-                row[1 + k] = u[3 * m + k];
+                col[1 + k][m] = u[3 * m + k];
         }
     }
     free(u);
@@ -184,9 +209,8 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
         return status;
     const size_t M = scene->outputs;
     refs->outputs = M;
-    refs->values = calloc(M * VFY_REFS_MAX, sizeof *refs->values);
     double *t = malloc(M * sizeof *t), *T = malloc(M * sizeof *T);
-    if (!refs->values || !t || !T) {
+    if (!t || !T) {
         free(t);
         free(T);
         vfy_refs_free(refs);
@@ -200,17 +224,18 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
     if (paper_b) {
         status = background_references(scene, t, refs, err);
     } else if (scene->collisions.exponent == 0.0) {   /* Maxwell molecules: exact */
-        set_name(refs, "T_exact");
-        if (!scene->particles.zero_momentum) {
-            set_name(refs, "T_finite_n");
-            set_name(refs, "T_raw_finite_n");
+        double *exact = add_column(refs, "T_exact"), *centred = NULL, *raw = NULL;
+        if (exact != NULL && !scene->particles.zero_momentum) {
+            centred = add_column(refs, "T_finite_n");
+            raw = centred ? add_column(refs, "T_raw_finite_n") : NULL;
         }
-        for (size_t m = 0; m < M; m++) {
-            double *row = refs->values + m * VFY_REFS_MAX;
-            row[0] = ref_heated_maxwell_T(&p, t[m]);
-            if (refs->count > 1) {
-                row[1] = ref_heated_maxwell_T_centred_mean(&p, n, t[m]);
-                row[2] = ref_heated_maxwell_T_raw_mean(&p, n, t[m]);
+        if (exact == NULL || (!scene->particles.zero_momentum && raw == NULL))
+            status = NO_MEMORY(err);
+        for (size_t m = 0; m < M && status == SIM_OK; m++) {
+            exact[m] = ref_heated_maxwell_T(&p, t[m]);
+            if (raw != NULL) {
+                centred[m] = ref_heated_maxwell_T_centred_mean(&p, n, t[m]);
+                raw[m] = ref_heated_maxwell_T_raw_mean(&p, n, t[m]);
             }
         }
     } else {   /* hard spheres: the two closures of SPEC §3 Ex 5 */
@@ -225,9 +250,11 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
                 status = sim_error_set(err, SIM_EINVAL, "", "%s: %s", closures[j].name, msg);
                 break;
             }
-            set_name(refs, closures[j].name);
-            for (size_t m = 0; m < M; m++)
-                refs->values[m * VFY_REFS_MAX + j] = T[m];
+            double *col = add_column(refs, closures[j].name);
+            if (col == NULL)
+                status = NO_MEMORY(err);
+            else
+                memcpy(col, T, M * sizeof *T);
         }
     }
     free(t);
@@ -237,28 +264,24 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
     return status;
 }
 
-int vfy_refs_has(const vfy_refs *refs, const char *name)
+const double *vfy_refs_column(const vfy_refs *refs, const char *name)
 {
     for (size_t j = 0; j < refs->count; j++)
         if (strcmp(refs->names[j], name) == 0)
-            return 1;
-    return 0;
+            return refs->cols[j];
+    return NULL;
 }
 
-const double *vfy_refs_column(const vfy_refs *refs, const char *name, double *buf)
+int vfy_refs_has(const vfy_refs *refs, const char *name)
 {
-    for (size_t j = 0; j < refs->count; j++) {
-        if (strcmp(refs->names[j], name) == 0) {
-            for (size_t m = 0; m < refs->outputs; m++)
-                buf[m] = refs->values[m * VFY_REFS_MAX + j];
-            return buf;
-        }
-    }
-    return NULL;
+    return vfy_refs_column(refs, name) != NULL;
 }
 
 void vfy_refs_free(vfy_refs *refs)
 {
-    free(refs->values);
+    for (size_t j = 0; j < refs->count; j++)
+        free(refs->cols[j]);
+    free(refs->cols);
+    free(refs->names);
     memset(refs, 0, sizeof *refs);
 }

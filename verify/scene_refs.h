@@ -26,13 +26,13 @@
 #include "heated.h"
 #include "scene.h"
 
-#define VFY_REFS_MAX 12
-
+/* The reference columns of a scene, as many as apply: column j is
+ * cols[j][0 .. outputs-1], named names[j]. */
 typedef struct vfy_refs {
     size_t outputs;
-    size_t count;
-    char names[VFY_REFS_MAX][32];
-    double *values;   /* [outputs * VFY_REFS_MAX], column j of row m at m * VFY_REFS_MAX + j */
+    size_t count, capacity;
+    char (*names)[32];
+    double **cols;
 } vfy_refs;
 
 /* Compute the references for scene (n taken from the scene).  Returns
@@ -40,8 +40,8 @@ typedef struct vfy_refs {
  * CVODE integration failed (message says why), SIM_ENOMEM. */
 sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_error *err);
 
-/* Column of a reference by name, or NULL. */
-const double *vfy_refs_column(const vfy_refs *refs, const char *name, double *buf);
+/* Column of a reference by name (refs->outputs values), or NULL. */
+const double *vfy_refs_column(const vfy_refs *refs, const char *name);
 
 /* Whether refs has the column `name`. */
 int vfy_refs_has(const vfy_refs *refs, const char *name);
