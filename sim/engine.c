@@ -108,6 +108,7 @@ struct sim_engine {
     interval_fn interval; /* one output interval of steps */
     size_t steps;         /* steps per output interval */
     double h;             /* the step */
+    size_t observables;   /* per output row (sim_engine_observables) */
     /* steady-state observers */
     size_t nsteady;
     size_t steady_from;   /* first output index with t >= steady.from */
@@ -249,6 +250,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     e->scene = *scene;
     e->mass = sim_scene_grain_mass(scene);
+    e->observables = SIM_OBS_BASE;
 
     sim_status status = SIM_OK;
     if (scene->collisions.present) {
@@ -337,6 +339,8 @@ const sim_scene *sim_engine_scene(const sim_engine *engine) { return &engine->sc
 const char *sim_engine_effects(const sim_engine *engine) { return engine->effects; }
 
 size_t sim_engine_steady_count(const sim_engine *engine) { return engine->nsteady; }
+
+size_t sim_engine_observables(const sim_engine *engine) { return engine->observables; }
 
 size_t sim_engine_workspace_bytes(const sim_engine *engine)
 {
@@ -497,7 +501,7 @@ static size_t pick_event(const sim_engine *e, gsl_rng *rng, const double *rates,
 static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double *obs,
                        size_t *samples)
 {
-    sim_observe(&ws->run.p, e->mass, obs + m * SIM_OBS_COUNT);
+    sim_observe(&ws->run.p, e->mass, obs + m * e->observables);
     if (e->nsteady > 0 && m >= e->steady_from) {
         sim_steady_sample(&e->scene, &ws->run.p, e->mass, ws->observer_rng, ws->steady_sum);
         (*samples)++;
@@ -529,7 +533,7 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
             total = e->nevents == 1 ? rates[0] : update_rates(e, ws, rates, k);
         }
         t = t_out;
-        double expected[SIM_OBS_COUNT];   /* before the pending increments are drawn */
+        double expected[SIM_OBS_BASE];   /* before the pending increments are drawn */
         if (e->pending_spread > 0.0)
             sim_observe_pending(&run->p, e->mass, t, e->pending_spread, expected);
         if (run->flow)
@@ -537,7 +541,7 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
                 sim_run_bring(run, i, t);
         observe_at(e, ws, m, obs, samples);
         if (e->pending_spread > 0.0)   /* T .. Pyz: their conditional expectations */
-            memcpy(obs + m * SIM_OBS_COUNT + SIM_OBS_T, expected + SIM_OBS_T,
+            memcpy(obs + m * e->observables + SIM_OBS_T, expected + SIM_OBS_T,
                    (SIM_OBS_PYZ + 1 - SIM_OBS_T) * sizeof *expected);
         if (m + 1 < scene->outputs)
             total = reset_events(e, ws, rates, interval);
@@ -692,7 +696,7 @@ void sim_engine_evolve(const sim_engine *e, sim_workspace *ws, double *obs, sim_
         run_jump_counted(e, ws, obs, &ws->samples);
 
     if (e->nsteady > 0) {   /* the time averages follow the rows */
-        double *avg = obs + scene->outputs * SIM_OBS_COUNT;
+        double *avg = obs + scene->outputs * e->observables;
         for (size_t k = 0; k < e->nsteady; k++)
             avg[k] = ws->steady_sum[k] / (double)ws->samples;
     }

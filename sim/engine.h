@@ -51,6 +51,11 @@ const char *sim_engine_effects(const sim_engine *engine);
  * [steady] section. */
 size_t sim_engine_steady_count(const sim_engine *engine);
 
+/* Observables recorded at every output time: the row length of obs below.
+ * The base set (observe.h) comes first; an effect that records more (a
+ * profile, a series of moments) extends the row, so no scene is capped. */
+size_t sim_engine_observables(const sim_engine *engine);
+
 /* Bytes one workspace (sim_workspace_create) holds: its n particles and the
  * effects' state; for refusing runs that cannot fit before allocating. */
 size_t sim_engine_workspace_bytes(const sim_engine *engine);
@@ -64,7 +69,7 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
 void sim_workspace_free(sim_workspace *ws);
 
 /* Simulate ensemble `index` (its random stream is (scene seed, index)) from
- * t = 0 to t_end.  obs must hold outputs * SIM_OBS_COUNT +
+ * t = 0 to t_end.  obs must hold outputs * sim_engine_observables() +
  * sim_engine_steady_count() doubles; row m gets the observables at output
  * time m, and the steady-state time averages (steady.h) follow the last row.
  * counts (may be NULL) is incremented. */

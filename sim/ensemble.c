@@ -15,7 +15,7 @@
 /* Running mean and sum of squared deviations of one block of ensembles. */
 typedef struct block_stats {
     double count;
-    double *mean;  /* [outputs * SIM_OBS_COUNT] */
+    double *mean;  /* [outputs * observables + nsteady] */
     double *m2;
 } block_stats;
 
@@ -240,7 +240,8 @@ double sim_ensemble_memory_estimate(const sim_engine *engine, int threads)
 {
     const sim_scene *scene = sim_engine_scene(engine);
     const double N = (double)scene->particles.ensembles;
-    const double len = (double)(scene->outputs * SIM_OBS_COUNT + sim_engine_steady_count(engine));
+    const double len = (double)(scene->outputs * sim_engine_observables(engine)
+                               + sim_engine_steady_count(engine));
     const double bsize = (double)block_size(scene->particles.ensembles);
     /* mean, var, ci, the blocks' mean and m2, and one observation per thread */
     const double stats = 8.0 * len * (3.0 + 2.0 * ceil(N / bsize) + threads);
@@ -269,7 +270,8 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
     const sim_scene *scene = sim_engine_scene(engine);
     const size_t outputs = scene->outputs, N = scene->particles.ensembles;
     /* the rows, then the steady-state time averages of each run */
-    const size_t rows_len = outputs * SIM_OBS_COUNT, nsteady = sim_engine_steady_count(engine);
+    const size_t observables = sim_engine_observables(engine);
+    const size_t rows_len = outputs * observables, nsteady = sim_engine_steady_count(engine);
     const size_t len = rows_len + nsteady;
     const size_t bsize = block_size(N), nblocks = (N + bsize - 1) / bsize;
     /* this process's share of the blocks (all of them without MPI) */
@@ -293,6 +295,7 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
         return ranks_agree(rk, refused, &stopped, &done, err);
     }
     res->outputs = outputs;
+    res->observables = observables;
     res->ensembles = N;
     res->n = scene->particles.n;
     res->t = malloc(outputs * sizeof *res->t);

@@ -30,9 +30,10 @@ typedef struct sim_ensemble_result {
     size_t ensembles;    /* N */
     size_t n;            /* particles per ensemble */
     double *t;           /* [outputs] output times */
-    double *mean;        /* [outputs * SIM_OBS_COUNT] */
-    double *var;         /* [outputs * SIM_OBS_COUNT] */
-    double *ci;          /* [outputs * SIM_OBS_COUNT] */
+    size_t observables;  /* per output row (sim_engine_observables) */
+    double *mean;        /* [outputs * observables], observable k of row m at m * observables + k */
+    double *var;         /* [outputs * observables] */
+    double *ci;          /* [outputs * observables] */
     size_t nsteady;      /* steady-state quantities (0 without [steady]) */
     double *steady_mean; /* [nsteady], pointing into mean/var/ci after the rows */
     double *steady_var;
@@ -74,11 +75,16 @@ double sim_ensemble_memory_estimate(const sim_engine *engine, int threads);
 /* Accessors: observable k at output m. */
 static inline double sim_result_mean(const sim_ensemble_result *r, size_t m, int k)
 {
-    return r->mean[m * SIM_OBS_COUNT + (size_t)k];
+    return r->mean[m * r->observables + (size_t)k];
 }
 static inline double sim_result_ci(const sim_ensemble_result *r, size_t m, int k)
 {
-    return r->ci[m * SIM_OBS_COUNT + (size_t)k];
+    return r->ci[m * r->observables + (size_t)k];
+}
+
+static inline double sim_result_var(const sim_ensemble_result *r, size_t m, int k)
+{
+    return r->var[m * r->observables + (size_t)k];
 }
 
 static inline double sim_result_steady_mean(const sim_ensemble_result *r, size_t k)

@@ -1,16 +1,26 @@
 #include "observe.h"
 
-static const char *const names[SIM_OBS_COUNT] = {
+#include <string.h>
+
+static const char *const names[SIM_OBS_BASE] = {
     "T", "T_raw", "ux", "uy", "uz", "Pxx", "Pyy", "Pzz", "Pxy", "Pxz", "Pyz",
     "qx", "qy", "qz", "a2", "a3",
 };
 
 const char *sim_observable_name(sim_observable k)
 {
-    return k < SIM_OBS_COUNT ? names[k] : "?";
+    return k < SIM_OBS_BASE ? names[k] : "?";
 }
 
-void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT])
+int sim_observable_find(const char *name, size_t len)
+{
+    for (int k = 0; k < SIM_OBS_BASE; k++)
+        if (strlen(names[k]) == len && strncmp(names[k], name, len) == 0)
+            return k;
+    return -1;
+}
+
+void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE])
 {
     const size_t n = p->n;
     const double w = 1.0 / (double)n;
@@ -59,9 +69,9 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT])
 }
 
 void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
-                         double out[SIM_OBS_COUNT])
+                         double out[SIM_OBS_BASE])
 {
-    double now[SIM_OBS_COUNT];
+    double now[SIM_OBS_BASE];
     sim_observe(p, mass, now);
     const size_t n = p->n;
     double owed = 0.0;

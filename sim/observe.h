@@ -24,14 +24,18 @@ typedef enum sim_observable {
     SIM_OBS_PXX, SIM_OBS_PYY, SIM_OBS_PZZ, SIM_OBS_PXY, SIM_OBS_PXZ, SIM_OBS_PYZ,
     SIM_OBS_QX, SIM_OBS_QY, SIM_OBS_QZ,
     SIM_OBS_A2, SIM_OBS_A3,
-    SIM_OBS_COUNT
+    SIM_OBS_BASE   /* the observables every scene records, first in each output row */
 } sim_observable;
 
-/* Column name of an observable ("T", "T_raw", "ux", ...). */
+/* Column name of a base observable ("T", "T_raw", "ux", ...). */
 const char *sim_observable_name(sim_observable k);
 
-/* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_COUNT]. */
-void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT]);
+/* The index of the base observable named by the len characters at name, or
+ * -1 when none is. */
+int sim_observable_find(const char *name, size_t len);
+
+/* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_BASE]. */
+void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE]);
 
 /* The observables at most quadratic in the velocities, T .. Pyz (SIM_OBS_T
  * to SIM_OBS_PYZ), of a lazily flowing system at time t, as exact conditional
@@ -45,6 +49,6 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_COUNT])
  * (the 1/n: the centring velocity V owes S/n per component).  Writes only
  * those entries of out; p is not changed. */
 void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
-                         double out[SIM_OBS_COUNT]);
+                         double out[SIM_OBS_BASE]);
 
 #endif

@@ -51,7 +51,7 @@ static void test_same_seed_same_numbers_any_threads(void **state)
     run_scene(sets, 4, 2, &two);
     assert_int_equal(one.threads, 1);
     assert_int_equal(two.threads, 2);   /* else the comparison would be vacuous */
-    size_t len = one.outputs * SIM_OBS_COUNT;
+    size_t len = one.outputs * one.observables;
     assert_memory_equal(one.mean, two.mean, len * sizeof *one.mean);
     assert_memory_equal(one.var, two.var, len * sizeof *one.var);
     assert_memory_equal(&one.counts, &two.counts, sizeof one.counts);
@@ -69,7 +69,7 @@ static void test_other_seed_agrees_statistically(void **state)
     run_scene(a_sets, 4, 2, &a);
     run_scene(b_sets, 4, 2, &b);
     run_scene(wrong, 5, 2, &w);
-    assert_true(memcmp(a.mean, b.mean, a.outputs * SIM_OBS_COUNT * sizeof *a.mean) != 0);
+    assert_true(memcmp(a.mean, b.mean, a.outputs * a.observables * sizeof *a.mean) != 0);
     double z_seed = max_z(&a, &b), z_wrong = max_z(&a, &w);
     print_message("max |z| other seed %.2f, other restitution %.2f\n", z_seed, z_wrong);
     assert_true(z_seed <= 4.5);

@@ -148,10 +148,11 @@ static void test_conservation(void **state)
     sim_workspace *ws = NULL;
     assert_int_equal(sim_engine_create(&s, &e, NULL), SIM_OK);
     assert_int_equal(sim_workspace_create(e, &ws, NULL), SIM_OK);
-    double obs[9 * SIM_OBS_COUNT];
+    assert_int_equal(sim_engine_observables(e), SIM_OBS_BASE);   /* obs fits */
+    double obs[9 * SIM_OBS_BASE];
     sim_counts c = {0};
     sim_engine_run(e, ws, 3, obs, &c);
-    double *last = obs + 8 * SIM_OBS_COUNT;
+    double *last = obs + 8 * SIM_OBS_BASE;
     for (int k = SIM_OBS_UX; k <= SIM_OBS_UZ; k++)
         assert_close(last[k], obs[k], 0.0, 1e-14);
     assert_close(last[SIM_OBS_T_RAW], obs[SIM_OBS_T_RAW], 1e-13, 0.0);
@@ -178,7 +179,7 @@ static void test_start_evolve_is_run(void **state)
     assert_int_equal(sim_engine_create(&s, &e, NULL), SIM_OK);
     assert_int_equal(sim_workspace_create(e, &fresh, NULL), SIM_OK);
     assert_int_equal(sim_workspace_create(e, &used, NULL), SIM_OK);
-    const size_t len = s.outputs * SIM_OBS_COUNT + sim_engine_steady_count(e);
+    const size_t len = s.outputs * sim_engine_observables(e) + sim_engine_steady_count(e);
     assert_true(sim_engine_steady_count(e) > 0);
     double *whole = calloc(len, sizeof *whole), *parts = calloc(len, sizeof *parts);
     assert_non_null(whole);
@@ -233,8 +234,8 @@ static void test_thread_count_independence(void **state)
     run(&s, &b);
     assert_int_equal(a.threads, 1);
     assert_int_equal(b.threads, 2);   /* else the comparison would be vacuous */
-    assert_memory_equal(a.mean, b.mean, a.outputs * SIM_OBS_COUNT * sizeof(double));
-    assert_memory_equal(a.ci, b.ci, a.outputs * SIM_OBS_COUNT * sizeof(double));
+    assert_memory_equal(a.mean, b.mean, a.outputs * a.observables * sizeof(double));
+    assert_memory_equal(a.ci, b.ci, a.outputs * a.observables * sizeof(double));
     assert_int_equal(a.counts.candidates, b.counts.candidates);
     sim_ensemble_result_free(&a);
     sim_ensemble_result_free(&b);
@@ -320,9 +321,10 @@ static void test_two_particles_counted(void **state)
     sim_counts c = {0};
     double mean = 0.0;
     for (uint64_t j = 0; j < 4000; j++) {
-        double obs[3 * SIM_OBS_COUNT];
+        assert_int_equal(sim_engine_observables(e), SIM_OBS_BASE);   /* obs fits */
+        double obs[3 * SIM_OBS_BASE];
         sim_engine_run(e, ws, j, obs, &c);
-        assert_close(obs[2 * SIM_OBS_COUNT + SIM_OBS_T], obs[SIM_OBS_T], 1e-12, 0.0);
+        assert_close(obs[2 * SIM_OBS_BASE + SIM_OBS_T], obs[SIM_OBS_T], 1e-12, 0.0);
         mean += sqrt(12.0 * obs[SIM_OBS_T]) * s.t_end / 2.0;
     }
     const double count = (double)c.collisions, z = (count - mean) / sqrt(mean);

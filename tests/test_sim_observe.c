@@ -18,10 +18,10 @@ static const double t_obs = 1.0, spread = 1.7, mass = 2.0;
 
 /* Monte Carlo mean and standard error of each observable after drawing the
  * increments: v_i += sqrt(spread (t - stamp_i)) xi. */
-static void monte_carlo(double mean[SIM_OBS_COUNT], double se[SIM_OBS_COUNT])
+static void monte_carlo(double mean[SIM_OBS_BASE], double se[SIM_OBS_BASE])
 {
-    double v[N][3], stamp[N], obs[SIM_OBS_COUNT], sum[SIM_OBS_COUNT] = {0},
-                                                  sum2[SIM_OBS_COUNT] = {0};
+    double v[N][3], stamp[N], obs[SIM_OBS_BASE], sum[SIM_OBS_BASE] = {0},
+                                                  sum2[SIM_OBS_BASE] = {0};
     sim_particles p = {N, v, stamp};
     gsl_rng *rng = sim_rng_alloc();
     assert_non_null(rng);
@@ -34,13 +34,13 @@ static void monte_carlo(double mean[SIM_OBS_COUNT], double se[SIM_OBS_COUNT])
                 v[i][k] = v0[i][k] + s * xi[k];
         }
         sim_observe(&p, mass, obs);
-        for (int k = 0; k < SIM_OBS_COUNT; k++) {
+        for (int k = 0; k < SIM_OBS_BASE; k++) {
             sum[k] += obs[k];
             sum2[k] += obs[k] * obs[k];
         }
     }
     gsl_rng_free(rng);
-    for (int k = 0; k < SIM_OBS_COUNT; k++) {
+    for (int k = 0; k < SIM_OBS_BASE; k++) {
         mean[k] = sum[k] / DRAWS;
         se[k] = sqrt((sum2[k] / DRAWS - mean[k] * mean[k]) / DRAWS);
     }
@@ -54,8 +54,8 @@ static void test_pending_is_the_conditional_expectation(void **state)
     double stamp[N];
     memcpy(stamp, stamp0, sizeof stamp);
     sim_particles p = {N, v0, stamp};
-    double exact[SIM_OBS_COUNT], mc[SIM_OBS_COUNT], se[SIM_OBS_COUNT];
-    for (int k = 0; k < SIM_OBS_COUNT; k++)
+    double exact[SIM_OBS_BASE], mc[SIM_OBS_BASE], se[SIM_OBS_BASE];
+    for (int k = 0; k < SIM_OBS_BASE; k++)
         exact[k] = NAN;   /* must stay untouched beyond Pyz */
     sim_observe_pending(&p, mass, t_obs, spread, exact);
     assert_memory_equal(stamp, stamp0, sizeof stamp);   /* p is not changed */
@@ -67,7 +67,7 @@ static void test_pending_is_the_conditional_expectation(void **state)
                         sim_observable_name((sim_observable)k), mc[k], se[k], exact[k], zk);
         assert_true(zk <= 4.5);
     }
-    for (int k = SIM_OBS_QX; k < SIM_OBS_COUNT; k++)
+    for (int k = SIM_OBS_QX; k < SIM_OBS_BASE; k++)
         assert_true(isnan(exact[k]));
 }
 
@@ -79,7 +79,7 @@ static void test_without_centring_term_is_rejected(void **state)
     double stamp[N];
     memcpy(stamp, stamp0, sizeof stamp);
     sim_particles p = {N, v0, stamp};
-    double now[SIM_OBS_COUNT], mc[SIM_OBS_COUNT], se[SIM_OBS_COUNT];
+    double now[SIM_OBS_BASE], mc[SIM_OBS_BASE], se[SIM_OBS_BASE];
     sim_observe(&p, mass, now);
     double S = 0.0;
     for (int i = 0; i < N; i++)

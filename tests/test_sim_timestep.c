@@ -342,9 +342,10 @@ static void test_elastic_rate(void **state)
         assert_int_equal(sim_workspace_create(e, &ws, NULL), SIM_OK);
         sim_counts c = {0};
         for (size_t j = 0; j < N; j++) {
-            double obs[3 * SIM_OBS_COUNT];
+            assert_int_equal(sim_engine_observables(e), SIM_OBS_BASE);   /* obs fits */
+            double obs[3 * SIM_OBS_BASE];
             sim_engine_run(e, ws, j, obs, &c);
-            double *last = obs + 2 * SIM_OBS_COUNT;
+            double *last = obs + 2 * SIM_OBS_BASE;
             for (int k = SIM_OBS_UX; k <= SIM_OBS_UZ; k++)
                 assert_close(last[k], obs[k], 0.0, 1e-14);
             assert_close(last[SIM_OBS_T_RAW], obs[SIM_OBS_T_RAW], 1e-13, 0.0);
@@ -417,7 +418,7 @@ static void test_thread_count_independence(void **state)
     run(&s, &a);
     omp_set_num_threads(2);
     run(&s, &b);
-    size_t len = a.outputs * SIM_OBS_COUNT + a.nsteady;
+    size_t len = a.outputs * a.observables + a.nsteady;
     assert_int_equal(a.threads, 1);
     assert_int_equal(b.threads, 2);   /* else the comparison would be vacuous */
     assert_int_equal(a.nsteady, SIM_STEADY_BIN0 + 10);
@@ -515,7 +516,7 @@ static void test_steady_time_average(void **state)
     run(&s, &a);
     s.steady.pairs = 500;
     run(&s, &b);
-    assert_memory_equal(a.mean, b.mean, a.outputs * SIM_OBS_COUNT * sizeof(double));
+    assert_memory_equal(a.mean, b.mean, a.outputs * a.observables * sizeof(double));
     const int rows[] = {SIM_OBS_T, SIM_OBS_A2, SIM_OBS_A3};
     const int steady[] = {SIM_STEADY_T, SIM_STEADY_A2, SIM_STEADY_A3};
     for (int q = 0; q < 3; q++) {

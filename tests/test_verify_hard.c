@@ -45,7 +45,7 @@ static vfy_verdict last_verdict(const vfy_report *r)
 static void test_summarize(void **state)
 {
     (void)state;
-    enum { M = 3, K = SIM_OBS_COUNT };
+    enum { M = 3, K = SIM_OBS_BASE };
     double mean[M * K], var[M * K], ci[M * K], t[M] = {0.0, 1.0, 2.0};
     for (size_t i = 0; i < M * K; i++) {
         mean[i] = 0.5;
@@ -62,7 +62,7 @@ static void test_summarize(void **state)
         }
     }
     mean[1 * K + SIM_OBS_UY] = 3e-16;
-    sim_ensemble_result res = {.outputs = M, .ensembles = 4, .n = 1000, .t = t,
+    sim_ensemble_result res = {.outputs = M, .observables = K, .ensembles = 4, .n = 1000, .t = t,
                                .mean = mean, .var = var, .ci = ci};
     res.counts.candidates = 17;
     res.counts.violations = 2;

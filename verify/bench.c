@@ -89,9 +89,13 @@ static sim_status run_engine(const sim_scene *s, size_t runs, bench_row *row, si
 {
     sim_engine *e = NULL;
     sim_workspace *ws = NULL;
-    double *obs = malloc(s->outputs * SIM_OBS_COUNT * sizeof *obs);
-    sim_status status = obs ? sim_engine_create(s, &e, err)
-                            : sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    double *obs = NULL;
+    sim_status status = sim_engine_create(s, &e, err);
+    if (status == SIM_OK) {
+        obs = malloc((s->outputs * sim_engine_observables(e) + sim_engine_steady_count(e))
+                     * sizeof *obs);
+        status = obs ? SIM_OK : sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    }
     if (status == SIM_OK)
         status = sim_workspace_create(e, &ws, err);
     if (status == SIM_OK) {

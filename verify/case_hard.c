@@ -99,7 +99,7 @@ void vfy_hard_summarize(const sim_ensemble_result *res, double mass, vfy_hard_su
     s->candidates = res->counts.candidates;
     s->collisions = res->counts.collisions;
     s->violations = res->counts.violations;
-    const size_t M = res->outputs, total = M * SIM_OBS_COUNT + res->nsteady;
+    const size_t M = res->outputs, total = M * res->observables + res->nsteady;
     const double *arrays[3] = {res->mean, res->var, res->ci};
     for (size_t a = 0; a < 3; a++)
         for (size_t i = 0; i < total; i++) {
@@ -113,11 +113,11 @@ void vfy_hard_summarize(const sim_ensemble_result *res, double mass, vfy_hard_su
     s->T_min = s->T_max = s->T_first;
     for (size_t m = 0; m < M; m++) {
         for (int k = SIM_OBS_UX; k <= SIM_OBS_UZ; k++) {
-            double mean = sim_result_mean(res, m, k), var = res->var[m * SIM_OBS_COUNT + k];
+            double mean = sim_result_mean(res, m, k), var = sim_result_var(res, m, k);
             nan_max(&s->momentum, sqrt(N * (var + mean * mean)));
         }
         double mean = sim_result_mean(res, m, SIM_OBS_T_RAW);
-        double var = res->var[m * SIM_OBS_COUNT + SIM_OBS_T_RAW];
+        double var = sim_result_var(res, m, SIM_OBS_T_RAW);
         nan_max(&s->speed, sqrt(3.0 * sqrt(N * (var + mean * mean)) / mass));
         nan_min(&s->T_min, sim_result_mean(res, m, SIM_OBS_T));
         nan_max(&s->T_max, sim_result_mean(res, m, SIM_OBS_T));
@@ -347,7 +347,7 @@ static vfy_verdict check_gaussian_momentum(vfy_report *r, const char *name,
             for (int k = 0; k < 3; k++) {
                 const int obs = SIM_OBS_UX + k;
                 const double mu = sim_result_mean(res, m, obs);
-                mean[3 * m + k] = res->var[m * SIM_OBS_COUNT + obs] + mu * mu;
+                mean[3 * m + k] = sim_result_var(res, m, obs) + mu * mu;
                 exact[3 * m + k] = sigma2[m];
                 ci[3 * m + k] = SIM_LAMBDA_P * sigma2[m] * sqrt(2.0 / (double)N);
             }

@@ -45,7 +45,7 @@ static const char *checkpoint_path(const char *dir, uint64_t key, char *buf, siz
 /* The statistics arrays of a result and their lengths, in file order. */
 static size_t stats_len(const sim_ensemble_result *r)
 {
-    return r->outputs * SIM_OBS_COUNT + r->nsteady;
+    return r->outputs * r->observables + r->nsteady;
 }
 
 static void write_array(FILE *f, const char *name, const double *x, size_t len)
@@ -70,7 +70,8 @@ sim_status vfy_checkpoint_save(const char *dir, const char *label, const sim_sce
     const sim_counts *c = &res->counts;
     fprintf(f, CHECKPOINT_MAGIC "\nversion %s\nkey %016" PRIx64 "\nlabel %s\n", GDSMC_VERSION,
             key, label);
-    fprintf(f, "sizes %zu %zu %zu %zu\n", res->outputs, res->ensembles, res->n, res->nsteady);
+    fprintf(f, "sizes %zu %zu %zu %zu %zu\n", res->outputs, res->observables, res->ensembles,
+            res->n, res->nsteady);
     fprintf(f, "counts %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 "\n",
             c->candidates, c->collisions, c->background, c->violations, c->normals);
     fprintf(f, "seconds %a %a %d\n", res->cpu_seconds, res->wall_seconds, res->threads);
@@ -111,9 +112,10 @@ int vfy_checkpoint_load(const char *dir, const sim_scene *s, sim_ensemble_result
              && fscanf(f, "version %63s key %" SCNx64 " ", version, &file_key) == 2
              && strcmp(version, GDSMC_VERSION) == 0 && file_key == key
              && fgets(line, sizeof line, f) && strncmp(line, "label ", 6) == 0
-             && fscanf(f, "sizes %zu %zu %zu %zu ", &res->outputs, &res->ensembles, &res->n,
-                       &res->nsteady) == 4
-             && res->outputs == s->outputs && res->ensembles == s->particles.ensembles
+             && fscanf(f, "sizes %zu %zu %zu %zu %zu ", &res->outputs, &res->observables,
+                       &res->ensembles, &res->n, &res->nsteady) == 5
+             && res->outputs == s->outputs && res->observables >= SIM_OBS_BASE
+             && res->observables < 1000000 && res->ensembles == s->particles.ensembles
              && res->n == s->particles.n && res->nsteady < 1000000
              && fscanf(f, "counts %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " ",
                        &c->candidates, &c->collisions, &c->background, &c->violations,
@@ -137,7 +139,7 @@ int vfy_checkpoint_load(const char *dir, const sim_scene *s, sim_ensemble_result
         sim_ensemble_result_free(res);
         return 0;
     }
-    const size_t rows_len = res->outputs * SIM_OBS_COUNT;
+    const size_t rows_len = res->outputs * res->observables;
     res->steady_mean = res->mean + rows_len;
     res->steady_var = res->var + rows_len;
     res->steady_ci = res->ci + rows_len;

@@ -137,12 +137,10 @@ int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *c
         if (res == NULL)
             return -1;
     }
-    for (int k = 0; k < SIM_OBS_COUNT; k++) {
-        const char *obs = sim_observable_name((sim_observable)k);
-        if (strlen(obs) == len && strncmp(obs, name, len) == 0) {
-            vfy_result_column(res, k, mean, ci);
-            return 0;
-        }
+    const int k = sim_observable_find(name, len);
+    if (k >= 0) {
+        vfy_result_column(res, k, mean, ci);
+        return 0;
     }
     const double *ref = vfy_refs_column(&row->refs, name);
     if (ref == NULL)

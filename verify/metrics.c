@@ -217,15 +217,13 @@ double vfy_metric_variance_ratio(const vfy_case_run *run, const vfy_row *row,
 {
     const sim_ensemble_result *a = vfy_row_result(run, row, NULL);
     const sim_ensemble_result *b = vfy_row_result(run, row, m->b);
-    int k = 0;
-    while (k < SIM_OBS_COUNT && strcmp(sim_observable_name((sim_observable)k), m->a) != 0)
-        k++;
+    const int k = sim_observable_find(m->a, strlen(m->a));
     size_t M = a->outputs;
     double *va = malloc(2 * M * sizeof *va), mean = NAN, min = NAN;
-    if (b != NULL && k < SIM_OBS_COUNT && va != NULL) {
+    if (b != NULL && k >= 0 && va != NULL) {
         for (size_t t = 0; t < M; t++) {
-            va[t] = a->var[t * SIM_OBS_COUNT + (size_t)k];
-            va[M + t] = b->var[t * SIM_OBS_COUNT + (size_t)k];
+            va[t] = sim_result_var(a, t, k);
+            va[M + t] = sim_result_var(b, t, k);
         }
         vfy_variance_ratio(va, va + M, M, &mean, &min);
     }
