@@ -109,7 +109,8 @@ const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
 /* A per-row metric: defines value `name` from the row (pure functions in
  * metrics.h do the arithmetic; these adapters name their operands). */
 typedef struct vfy_metric vfy_metric;
-typedef double (*vfy_metric_fn)(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+typedef double vfy_metric_func(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+typedef vfy_metric_func *vfy_metric_fn;
 struct vfy_metric {
     const char *name;
     vfy_metric_fn fn;
@@ -122,8 +123,9 @@ struct vfy_metric {
  * a ratio to the previous row on the first row). */
 typedef enum vfy_guard_result { VFY_JUDGE, VFY_GUARD_SKIP, VFY_OMIT } vfy_guard_result;
 typedef struct vfy_guard vfy_guard;
-typedef vfy_guard_result (*vfy_guard_fn)(const vfy_case_run *run, const vfy_row *row,
-                                         const vfy_guard *g);
+typedef vfy_guard_result vfy_guard_func(const vfy_case_run *run, const vfy_row *row,
+                                        const vfy_guard *g);
+typedef vfy_guard_func *vfy_guard_fn;
 struct vfy_guard {
     vfy_guard_fn fn;     /* NULL: always judged */
     const char *a, *b;
@@ -133,8 +135,9 @@ struct vfy_guard {
 
 /* A check: a rule (checks.h) applied to named values. */
 typedef struct vfy_check_spec vfy_check_spec;
-typedef vfy_verdict (*vfy_rule_fn)(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                                   const vfy_check_spec *c);
+typedef vfy_verdict vfy_rule_func(vfy_report *r, const char *name, vfy_case_run *run,
+                                  vfy_row *row, const vfy_check_spec *c);
+typedef vfy_rule_func *vfy_rule_fn;
 struct vfy_check_spec {
     const char *name;          /* template */
     vfy_rule_fn rule;
@@ -331,55 +334,43 @@ sim_status vfy_adjust_jump_rows(const vfy_row *row, sim_scene *solver, char *msg
 /* ------------------------------------------------------------ rules */
 
 /* value within tol relative of expected (vfy_check_relative). */
-vfy_verdict vfy_rule_relative(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                              const vfy_check_spec *c);
+vfy_rule_func vfy_rule_relative;
 /* lo <= value <= hi (vfy_check_range). */
-vfy_verdict vfy_rule_range(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                           const vfy_check_spec *c);
+vfy_rule_func vfy_rule_range;
 /* |value - expected| <= tol + rtol |expected| + plus + (quick sizes only)
  * plus_quick (vfy_check_absolute; the terms not given are left out). */
-vfy_verdict vfy_rule_absolute(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                              const vfy_check_spec *c);
+vfy_rule_func vfy_rule_absolute;
 /* value == expected (or x), integers (vfy_check_count). */
-vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                           const vfy_check_spec *c);
+vfy_rule_func vfy_rule_count;
 /* Series value against series expected from output `from` on: max |z| <=
  * tol (vfy_check_zscore); value `out` becomes the largest max |z| of the
  * checks that name it on this row. */
-vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                            const vfy_check_spec *c);
+vfy_rule_func vfy_rule_zscore;
 
 /* value within half a unit of the last of `tol` printed decimals of expected
  * (or x), plus value `plus` (its half-width) when given (vfy_check_printed). */
-vfy_verdict vfy_rule_printed(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                             const vfy_check_spec *c);
+vfy_rule_func vfy_rule_printed;
 
 /* ------------------------------------------------------------ guards */
 
 /* Judged while value a <= x; else SKIP. */
-vfy_guard_result vfy_guard_at_most(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g);
+vfy_guard_func vfy_guard_at_most;
 /* Judged while value a <= x; else omitted. */
-vfy_guard_result vfy_guard_only_at_most(const vfy_case_run *run, const vfy_row *row,
-                                        const vfy_guard *g);
+vfy_guard_func vfy_guard_only_at_most;
 /* Judged while value a >= x; else SKIP. */
-vfy_guard_result vfy_guard_at_least(const vfy_case_run *run, const vfy_row *row, const vfy_guard *g);
+vfy_guard_func vfy_guard_at_least;
 /* Judged while value a >= x; else omitted. */
-vfy_guard_result vfy_guard_only_at_least(const vfy_case_run *run, const vfy_row *row,
-                                         const vfy_guard *g);
+vfy_guard_func vfy_guard_only_at_least;
 /* Judged unless value a is positive (a row marked "$a=1"); then SKIP. */
-vfy_guard_result vfy_guard_unless(const vfy_case_run *run, const vfy_row *row,
-                                  const vfy_guard *g);
+vfy_guard_func vfy_guard_unless;
 /* Reported, not judged (SKIP with the reason) while value a <= x; else
  * omitted: a paper's number shown beside ours that cannot be judged. */
-vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,
-                                            const vfy_guard *g);
+vfy_guard_func vfy_guard_reported_at_most;
 /* Omitted on the first row (a ratio to the previous row). */
-vfy_guard_result vfy_guard_after_first(const vfy_case_run *run, const vfy_row *row,
-                                       const vfy_guard *g);
+vfy_guard_func vfy_guard_after_first;
 /* Omitted on the first row; judged when value a exceeds x times value b on
  * this row and on the previous one ("clean": the error well above the
  * noise); else SKIP. */
-vfy_guard_result vfy_guard_clean_pair(const vfy_case_run *run, const vfy_row *row,
-                                      const vfy_guard *g);
+vfy_guard_func vfy_guard_clean_pair;
 
 #endif

@@ -62,73 +62,65 @@ size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t b
 /* ------------------------------------------------- adapters (vfy_metric_fn) */
 
 /* vfy_max_rel_err of series a against series b. */
-double vfy_metric_max_rel_err(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_max_rel_err;
 /* vfy_max_rel_ci of series a's half-widths against series b. */
-double vfy_metric_max_rel_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_max_rel_ci;
 /* vfy_max_ratio_dev of series a against series b. */
-double vfy_metric_max_ratio_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_max_ratio_dev;
 /* Series a's mean, and its confidence half-width, at the last output time. */
-double vfy_metric_final_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-double vfy_metric_final_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_final_mean;
+vfy_metric_func vfy_metric_final_ci;
 /* vfy_fictitious_fraction of the row's counts (binary and background
  * collisions accepted). */
-double vfy_metric_fictitious_fraction(const vfy_case_run *run, const vfy_row *row,
-                                      const vfy_metric *m);
+vfy_metric_func vfy_metric_fictitious_fraction;
 /* vfy_variance_ratio of observable a between the row's first variant and
  * variant b: the mean (x = 0) or the smallest (x = 1). */
-double vfy_metric_variance_ratio(const vfy_case_run *run, const vfy_row *row,
-                                 const vfy_metric *m);
+vfy_metric_func vfy_metric_variance_ratio;
 /* vfy_max_norm3 of the mean velocity (ux, uy, uz). */
-double vfy_metric_max_velocity(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_max_velocity;
 /* Value a of the previous row over value a of this one (a convergence
  * factor); NAN on the first row. */
-double vfy_metric_ratio_previous(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_ratio_previous;
 
 /* Arithmetic on the row's values a and b (the row's own, else the case's). */
 /* a + x b */
-double vfy_metric_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-double vfy_metric_percent_diff(const vfy_case_run *run, const vfy_row *row,
-                               const vfy_metric *m);   /* 100 (a - b)/b */
-double vfy_metric_percent_of(const vfy_case_run *run, const vfy_row *row,
-                             const vfy_metric *m);     /* 100 a/b */
+vfy_metric_func vfy_metric_sum;
+vfy_metric_func vfy_metric_percent_diff;   /* 100 (a - b)/b */
+vfy_metric_func vfy_metric_percent_of;   /* 100 a/b */
 /* max(a, x b) */
-double vfy_metric_max_of(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-double vfy_metric_abs_widened(const vfy_case_run *run, const vfy_row *row,
-                              const vfy_metric *m);    /* |a|, plus b at quick sizes */
+vfy_metric_func vfy_metric_max_of;
+vfy_metric_func vfy_metric_abs_widened;   /* |a|, plus b at quick sizes */
 /* Paper C's ratio of a collisional moment to its first Sonine terms:
  * (a - a_0)/a_1, or a_ci/a_1 with x = 1 (a = "mu2": the values mu2, mu2_0,
  * mu2_1); NAN where it is not finite (a_1 = 0 in the elastic limit). */
-double vfy_metric_sonine_ratio(const vfy_case_run *run, const vfy_row *row,
-                               const vfy_metric *m);
+vfy_metric_func vfy_metric_sonine_ratio;
 /* The value named by the row's text a, followed by b ("$relation=mu4_white",
  * b = "_ci": the value mu4_white_ci). */
-double vfy_metric_named_by_text(const vfy_case_run *run, const vfy_row *row,
-                                const vfy_metric *m);
+vfy_metric_func vfy_metric_named_by_text;
 /* Confidence half-width a (SIM_LAMBDA_P standard errors over the row's N
  * ensembles) with Student's t quantile for N - 1 degrees of freedom instead
  * of the normal one: a x t(VFY_STUDENT_P, N - 1) / SIM_LAMBDA_P (4.07/3.2
  * for N = 16). */
-double vfy_metric_student_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_student_ci;
 /* Over the row's variants run as independent batches (driver.h): the sum of
  * value a over them (costs and counts); the mean of the batches' time
  * averages of series a over t >= x t_end, and its standard error (the
  * spread of the batches over sqrt(batches)); a standard error a as a
  * confidence half-width, with Student's t for batches - 1 degrees of
  * freedom. */
-double vfy_metric_variants_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-double vfy_metric_batch_mean(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-double vfy_metric_batch_se(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
-double vfy_metric_batch_t_ci(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_variants_sum;
+vfy_metric_func vfy_metric_batch_mean;
+vfy_metric_func vfy_metric_batch_se;
+vfy_metric_func vfy_metric_batch_t_ci;
 /* max_m |a[m] - b[m]| / c[m] for series a and b = "B/C" (paper A's
  * statistical part of Err: |eta1 - E xi^(n)| / F). */
-double vfy_metric_max_rel_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_max_rel_diff;
 /* vfy_max_abs_diff of series a against series b. */
-double vfy_metric_max_abs_diff(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_max_abs_diff;
 /* x a / b, 0 where b <= 0 (ns_per_event = 1e9 cpu_s / events). */
-double vfy_metric_per(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_per;
 /* The solver scene's thermostat strength and time step. */
-double vfy_metric_heating_strength(const vfy_case_run *run, const vfy_row *row,
-                                   const vfy_metric *m);
-double vfy_metric_time_step(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
+vfy_metric_func vfy_metric_heating_strength;
+vfy_metric_func vfy_metric_time_step;
 
 #endif
