@@ -438,7 +438,7 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
     for (size_t i = 0; i < P; i++)
         snprintf(labels[i], sizeof labels[i], "n=%.0f", g[G_N][i]);
     snprintf(ftitle, sizeof ftitle, "%s: Err against CPU time, %s", run->c->name, obs);
-    if (vfy_write_work_precision(run->o, run->c->name, ftitle,
+    if (vfy_write_work_precision(run->o, run->c->name, ftitle, run->comment,
                                  "Err (relative, max norm over the output times)", series, nN,
                                  g[G_CPU], g[G_ERR], g[G_MODEL], labels, &pred) != 0)
         return vfy_io_error(run->c->name, msg, msglen);
@@ -868,7 +868,7 @@ static int split_figure(const vfy_case_run *run, const split_fit *f,
     }
     snprintf(ftitle, sizeof ftitle, "%s: Err of the time-averaged T against CPU time",
              run->c->name);
-    return vfy_write_work_precision(run->o, run->c->name, ftitle,
+    return vfy_write_work_precision(run->o, run->c->name, ftitle, run->comment,
                                     "Err = |T - T_inf| / T_inf (time-averaged T)", series,
                                     nseries, f->cpu, f->err, f->model, labels, pred);
 }

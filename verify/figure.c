@@ -18,15 +18,25 @@ int vfy_gnuplot(const char *script_path)
     return status == 0 ? 1 : -1;
 }
 
+/* Report file `name` `suffix` of o (its path into path), begun as
+ * vfy_file_begin does, the provenance comment lines first. */
+static FILE *begin_file(const vfy_options *o, const char *name, const char *suffix,
+                        const char *comment, char *path, size_t pathlen, char *tmp,
+                        size_t tmplen)
+{
+    FILE *f = vfy_file_begin(vfy_report_path(o, name, suffix, path, pathlen), tmp, tmplen);
+    if (f != NULL)
+        vfy_write_comment(f, comment);
+    return f;
+}
+
 int vfy_write_points(const vfy_options *o, const vfy_points *f)
 {
     char points[1024], theory[1024], gp[1024], png[1024], tmp[1100], file[256];
     snprintf(file, sizeof file, "%s-points", f->name);
-    FILE *out = vfy_file_begin(vfy_report_path(o, file, ".csv", points, sizeof points), tmp,
-                               sizeof tmp);
+    FILE *out = begin_file(o, file, ".csv", f->comment, points, sizeof points, tmp, sizeof tmp);
     if (out == NULL)
         return -1;
-    vfy_write_comment(out, f->comment);
     fprintf(out, "%s", f->xlabel);
     for (size_t j = 0; j < f->nseries; j++)
         fprintf(out, ",%s,%s_ci", f->series[j], f->series[j]);
@@ -40,11 +50,9 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     if (vfy_file_commit(out, tmp, points, 1) != 0)
         return -1;
     snprintf(file, sizeof file, "%s-theory", f->name);
-    out = vfy_file_begin(vfy_report_path(o, file, ".csv", theory, sizeof theory), tmp,
-                         sizeof tmp);
+    out = begin_file(o, file, ".csv", f->comment, theory, sizeof theory, tmp, sizeof tmp);
     if (out == NULL)
         return -1;
-    vfy_write_comment(out, f->comment);
     fprintf(out, "%s", f->xlabel);
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, ",%s", f->curves[j]);
@@ -58,10 +66,9 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     if (vfy_file_commit(out, tmp, theory, 1) != 0)
         return -1;
 
-    out = vfy_file_begin(vfy_report_path(o, f->name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
+    out = begin_file(o, f->name, ".gp", f->comment, gp, sizeof gp, tmp, sizeof tmp);
     if (out == NULL)
         return -1;
-    vfy_write_comment(out, f->comment);
     fprintf(out, "# %s: gnuplot %s\nset terminal pngcairo size 900,650 font ',10'\n"
                  "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
                  "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
@@ -90,14 +97,13 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
 const double vfy_wp_targets[VFY_WP_TARGETS] = {1e-2, 1e-3, 1e-4};
 
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
-                             const char *ylabel, const vfy_wp_series *series, size_t nseries,
+                             const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
                              const double *cpu, const double *err, const double *model,
                              char (*labels)[24], const vfy_wp_prediction *pred)
 {
     char data[1024], gp[1024], png[1024], tmp[1100], file[200];
     snprintf(file, sizeof file, "%s-points", name);
-    FILE *f = vfy_file_begin(vfy_report_path(o, file, ".csv", data, sizeof data), tmp,
-                             sizeof tmp);
+    FILE *f = begin_file(o, file, ".csv", comment, data, sizeof data, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
     fprintf(f, "# %s: work-precision points, one block per curve (gnuplot index)\n"
@@ -115,7 +121,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
                 pred->label[k]);
     if (vfy_file_commit(f, tmp, data, 1) != 0)
         return -1;
-    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
+    f = begin_file(o, name, ".gp", comment, gp, sizeof gp, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
     fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1100,750 font ',10'\n"
@@ -155,11 +161,9 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                         double x_from, int one_panel_per_row)
 {
     char path[1024], tmp[1100], png[1024];
-    FILE *f = vfy_file_begin(vfy_report_path(o, name, "-curves.csv", path, sizeof path), tmp,
-                             sizeof tmp);
+    FILE *f = begin_file(o, name, "-curves.csv", comment, path, sizeof path, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
-    vfy_write_comment(f, comment);
     fprintf(f, "t");
     for (size_t j = 0; j < nref; j++)
         fprintf(f, ",%s", ref_names[j]);
@@ -182,10 +186,9 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
         return -1;
 
     char gp[1024];
-    f = vfy_file_begin(vfy_report_path(o, name, ".gp", gp, sizeof gp), tmp, sizeof tmp);
+    f = begin_file(o, name, ".gp", comment, gp, sizeof gp, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
-    vfy_write_comment(f, comment);
     fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
                "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
                "set xrange [%g:*]\n"

@@ -68,9 +68,10 @@ typedef struct vfy_wp_prediction {
  * Err, Err_model, label; then the predictions) and out_dir/<name>.gp: Err
  * against CPU seconds, log-log, each series with its model dotted, the
  * targets as grey lines, the predicted cheapest points as open circles;
- * rendered to <name>.png when gnuplot is installed.  Returns 0 or -1. */
+ * rendered to <name>.png when gnuplot is installed.  Both files start with
+ * the comment lines (the provenance).  Returns 0 or -1. */
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
-                             const char *ylabel, const vfy_wp_series *series, size_t nseries,
+                             const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
                              const double *cpu, const double *err, const double *model,
                              char (*labels)[24], const vfy_wp_prediction *pred);
 
