@@ -278,7 +278,7 @@ gdsmc_add_cli_exact(cli_x_sonine_out_unwritable 2
                     sonine --alpha 0.2 --out /nonexistent/gdsmc/s.csv)
 # gdsmc bench
 gdsmc_add_cli_exact(cli_x_bench_unknown_argument 2
-                    "gdsmc bench: unknown argument '--quick' (see gdsmc bench --help)"
+                    "gdsmc bench: unknown option '--quick' (see gdsmc bench --help)"
                     bench --quick)
 gdsmc_add_cli_exact(cli_x_bench_needs_value 2
                     "gdsmc bench: option '--seconds' needs a value (see gdsmc bench --help)"

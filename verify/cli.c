@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <signal.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -165,12 +166,42 @@ static const char usage_sonine[] =
     "  --d D        dimension, 2 <= D <= 100 (default 3; need not be an integer)\n"
     "  --out FILE   write the CSV to FILE (default: standard output)\n";
 
+/* The command line of any command (the options it does not take stay NULL
+ * or 0). */
 typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
+    const char *alpha, *d;                   /* sonine */
+    const char *md, *max_n, *seconds;        /* bench */
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
     size_t nsets, nsolver_sets;
     int quiet, list, resume;
 } args;
+
+/* Every option of every command: the commands that take it (words) and
+ * where it goes in args: a value, a flag, or one more --set or --solver-set. */
+typedef enum option_kind { OPT_VALUE, OPT_FLAG, OPT_SET, OPT_SOLVER_SET } option_kind;
+typedef struct option_spec {
+    const char *name, *commands;
+    option_kind kind;
+    size_t offset;   /* of the value (const char *) or the flag (int) */
+} option_spec;
+
+static const option_spec options[] = {
+    {"--out", "run reference verify sonine bench", OPT_VALUE, offsetof(args, out)},
+    {"--set", "run reference verify", OPT_SET, 0},
+    {"--quiet", "run reference verify", OPT_FLAG, offsetof(args, quiet)},
+    {"--list", "reference verify", OPT_FLAG, offsetof(args, list)},
+    {"--suite", "verify", OPT_VALUE, offsetof(args, suite)},
+    {"--case", "verify", OPT_VALUE, offsetof(args, case_name)},
+    {"--scenes", "verify", OPT_VALUE, offsetof(args, scenes)},
+    {"--solver-set", "verify", OPT_SOLVER_SET, 0},
+    {"--resume", "verify", OPT_FLAG, offsetof(args, resume)},
+    {"--alpha", "sonine", OPT_VALUE, offsetof(args, alpha)},
+    {"--d", "sonine", OPT_VALUE, offsetof(args, d)},
+    {"--md", "bench", OPT_VALUE, offsetof(args, md)},
+    {"--max-n", "bench", OPT_VALUE, offsetof(args, max_n)},
+    {"--seconds", "bench", OPT_VALUE, offsetof(args, seconds)},
+};
 
 /* Only async-signal-safe calls here (clock_gettime, _exit, a sig_atomic_t
  * flag).  A repeat within a second is the same request delivered twice:
@@ -212,55 +243,65 @@ static int bad_usage(const char *cmd, const char *fmt, const char *what)
     return EXIT_BAD_INPUT;
 }
 
-/* Parse the options of a command; positional SCENE if wants_scene.
- * Returns -1 when parsing succeeded, else the exit code (help: 0). */
+/* Whether the space-separated words of list include word. */
+static int has_word(const char *list, const char *word)
+{
+    const size_t len = strlen(word);
+    for (const char *w = strstr(list, word); w != NULL; w = strstr(w + 1, word))
+        if ((w == list || w[-1] == ' ') && (w[len] == ' ' || w[len] == '\0'))
+            return 1;
+    return 0;
+}
+
+/* cmd's option named s, or NULL. */
+static const option_spec *find_option(const char *cmd, const char *s)
+{
+    for (size_t k = 0; k < sizeof options / sizeof options[0]; k++)
+        if (strcmp(options[k].name, s) == 0 && has_word(options[k].commands, cmd))
+            return &options[k];
+    return NULL;
+}
+
+/* Parse the options of a command (the table above); positional SCENE if
+ * wants_scene.  Returns -1 when parsing succeeded, else the exit code
+ * (help: 0). */
 static int parse_args(const char *cmd, const char *usage, int wants_scene, int argc, char **argv,
                       args *a)
 {
     memset(a, 0, sizeof *a);
     for (int i = 0; i < argc; i++) {
         const char *s = argv[i];
-        const char **value = NULL;
         if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
             fputs(usage, stdout);
             return EXIT_OK;
-        } else if (strcmp(s, "--quiet") == 0) {
-            a->quiet = 1;
-            continue;
-        } else if (strcmp(s, "--list") == 0
-                   && (strcmp(cmd, "verify") == 0 || strcmp(cmd, "reference") == 0)) {
-            a->list = 1;
-            continue;
-        } else if (strcmp(s, "--resume") == 0 && strcmp(cmd, "verify") == 0) {
-            a->resume = 1;
-            continue;
-        } else if (strcmp(s, "--set") == 0) {
-            if (a->nsets == MAX_SETS)
-                return bad_usage(cmd, "more than %s --set options", "64");
-            value = &a->sets[a->nsets++];
-        } else if (strcmp(s, "--solver-set") == 0 && strcmp(cmd, "verify") == 0) {
-            if (a->nsolver_sets == MAX_SETS)
-                return bad_usage(cmd, "more than %s --solver-set options", "64");
-            value = &a->solver_sets[a->nsolver_sets++];
-        } else if (strcmp(s, "--out") == 0) {
-            value = &a->out;
-        } else if (strcmp(cmd, "verify") == 0 && strcmp(s, "--suite") == 0) {
-            value = &a->suite;
-        } else if (strcmp(cmd, "verify") == 0 && strcmp(s, "--case") == 0) {
-            value = &a->case_name;
-        } else if (strcmp(cmd, "verify") == 0 && strcmp(s, "--scenes") == 0) {
-            value = &a->scenes;
-        } else if (s[0] == '-' && s[1] != '\0') {
+        }
+        const option_spec *opt = find_option(cmd, s);
+        if (opt == NULL && s[0] == '-' && s[1] != '\0')
             return bad_usage(cmd, "unknown option '%s'", s);
-        } else if (wants_scene && a->scene == NULL) {
+        if (opt == NULL && wants_scene && a->scene == NULL) {
             a->scene = s;
             continue;
-        } else {
+        }
+        if (opt == NULL)
             return bad_usage(cmd, "unexpected argument '%s'", s);
+        if (opt->kind == OPT_FLAG) {
+            *(int *)((char *)a + opt->offset) = 1;
+            continue;
         }
         if (i + 1 >= argc)
             return bad_usage(cmd, "option '%s' needs a value", s);
-        *value = argv[++i];
+        const char *value = argv[++i];
+        if (opt->kind == OPT_VALUE) {
+            *(const char **)((char *)a + opt->offset) = value;
+        } else {
+            const char **list = opt->kind == OPT_SET ? a->sets : a->solver_sets;
+            size_t *count = opt->kind == OPT_SET ? &a->nsets : &a->nsolver_sets;
+            if (*count == MAX_SETS)
+                return bad_usage(cmd, opt->kind == OPT_SET ? "more than %s --set options"
+                                                           : "more than %s --solver-set options",
+                                 "64");
+            list[(*count)++] = value;
+        }
     }
     if (wants_scene && a->scene == NULL && !a->list)
         return bad_usage(cmd, "%s", "missing SCENE file");
@@ -457,31 +498,15 @@ static int parse_range(const char *opt, const char *text, double lo, double hi,
 
 static int cmd_sonine(int argc, char **argv)
 {
-    const char *alpha_text = NULL, *d_text = NULL, *out = NULL;
-    for (int i = 0; i < argc; i++) {
-        const char *s = argv[i], **value;
-        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
-            fputs(usage_sonine, stdout);
-            return EXIT_OK;
-        } else if (strcmp(s, "--alpha") == 0) {
-            value = &alpha_text;
-        } else if (strcmp(s, "--d") == 0) {
-            value = &d_text;
-        } else if (strcmp(s, "--out") == 0) {
-            value = &out;
-        } else if (s[0] == '-' && s[1] != '\0') {
-            return bad_usage("sonine", "unknown option '%s'", s);
-        } else {
-            return bad_usage("sonine", "unexpected argument '%s'", s);
-        }
-        if (i + 1 >= argc)
-            return bad_usage("sonine", "option '%s' needs a value", s);
-        *value = argv[++i];
-    }
+    args a;
+    int rc = parse_args("sonine", usage_sonine, 0, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    const char *alpha_text = a.alpha, *d_text = a.d, *out = a.out;
     if (alpha_text == NULL)
         return bad_usage("sonine", "%s", "missing --alpha");
     double alpha, d = 3.0;
-    int rc = parse_range("--alpha", alpha_text, 0.0, 1.0, "0 <= alpha <= 1", &alpha);
+    rc = parse_range("--alpha", alpha_text, 0.0, 1.0, "0 <= alpha <= 1", &alpha);
     if (rc == EXIT_OK && d_text != NULL)
         rc = parse_range("--d", d_text, REF_SONINE_D_MIN, REF_SONINE_D_MAX, "2 <= d <= 100", &d);
     if (rc != EXIT_OK)
@@ -507,27 +532,11 @@ static int cmd_sonine(int argc, char **argv)
 
 static int cmd_bench(int argc, char **argv)
 {
-    const char *out = NULL, *md = NULL, *max_n_text = NULL, *seconds_text = NULL;
-    for (int i = 0; i < argc; i++) {
-        const char *opt = argv[i], **value;
-        if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0) {
-            fputs(usage_bench, stdout);
-            return EXIT_OK;
-        } else if (strcmp(opt, "--out") == 0) {
-            value = &out;
-        } else if (strcmp(opt, "--md") == 0) {
-            value = &md;
-        } else if (strcmp(opt, "--max-n") == 0) {
-            value = &max_n_text;
-        } else if (strcmp(opt, "--seconds") == 0) {
-            value = &seconds_text;
-        } else {
-            return bad_usage("bench", "unknown argument '%s'", opt);
-        }
-        if (i + 1 >= argc)
-            return bad_usage("bench", "option '%s' needs a value", opt);
-        *value = argv[++i];
-    }
+    args a;
+    int rc = parse_args("bench", usage_bench, 0, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    const char *out = a.out, *md = a.md, *max_n_text = a.max_n, *seconds_text = a.seconds;
     vfy_bench_options o = {.max_n = 10000000, .seconds = 2.0,
                            .scene_dir = GDSMC_SOURCE_DIR "/verify/scenes", .progress = stderr};
     char *end;
@@ -542,7 +551,7 @@ static int cmd_bench(int argc, char **argv)
         if (end == seconds_text || *end || !(o.seconds > 0 && o.seconds <= 3600))
             return bad_usage("bench", "--seconds '%s': allowed 0 < S <= 3600", seconds_text);
     }
-    int rc = probe_out("bench", out);
+    rc = probe_out("bench", out);
     if (rc == EXIT_OK)
         rc = probe_out("bench", md);
     if (rc != EXIT_OK)
