@@ -50,6 +50,15 @@ add_test(NAME cli_threads_identical
                  -DOUT=${CMAKE_CURRENT_BINARY_DIR}/threads -P ${CMAKE_CURRENT_SOURCE_DIR}/run_threads.cmake)
 set_tests_properties(cli_threads_identical PROPERTIES TIMEOUT 120 LABELS unit)
 
+# Every report file starts with its provenance, the committed reports/paper
+# included (tests/run_provenance.cmake).
+add_test(NAME cli_reports_provenance
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DVERSION=${PROJECT_VERSION}
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/provenance
+                 -DPAPER=${PROJECT_SOURCE_DIR}/reports/paper
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/run_provenance.cmake)
+set_tests_properties(cli_reports_provenance PROPERTIES TIMEOUT 300 LABELS regression)
+
 # gdsmc sonine (SPEC §5, §9): paper C's Sonine values as CSV name,value.  Bad
 # input: the message and nothing else (anchored: standard output comes first).
 gdsmc_add_cli_test(cli_sonine_help 0 "usage: gdsmc sonine --alpha A" sonine --help)

@@ -30,6 +30,17 @@ static FILE *begin_file(const vfy_options *o, const char *name, const char *suff
     return f;
 }
 
+/* Commit the gnuplot script begun as tmp to gp and render it (a failure of
+ * gnuplot itself is only noted). */
+static int finish_script(const vfy_options *o, FILE *f, const char *tmp, const char *gp)
+{
+    if (vfy_file_commit(f, tmp, gp, 1) != 0)
+        return -1;
+    if (vfy_gnuplot(gp) < 0 && o->progress)
+        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
+    return 0;
+}
+
 int vfy_write_points(const vfy_options *o, const vfy_points *f)
 {
     char points[1024], theory[1024], gp[1024], png[1024], tmp[1100], file[256];
@@ -87,11 +98,7 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
                 f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j, 5 + 2 * j,
                 f->series[j]);
     fputc('\n', out);
-    if (vfy_file_commit(out, tmp, gp, 1) != 0)
-        return -1;
-    if (vfy_gnuplot(gp) < 0 && o->progress)
-        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
-    return 0;
+    return finish_script(o, out, tmp, gp);
 }
 
 const double vfy_wp_targets[VFY_WP_TARGETS] = {1e-2, 1e-3, 1e-4};
@@ -146,11 +153,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
         fprintf(f, ", %g with lines dt 2 lc rgb 'gray50' %s", vfy_wp_targets[i],
                 i ? "notitle" : "title 'targets 1e-2, 1e-3, 1e-4'");
     fputc('\n', f);
-    if (vfy_file_commit(f, tmp, gp, 1) != 0)
-        return -1;
-    if (vfy_gnuplot(gp) < 0 && o->progress)
-        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
-    return 0;
+    return finish_script(o, f, tmp, gp);
 }
 
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
@@ -223,9 +226,5 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
     }
     if (one_panel_per_row)
         fprintf(f, "unset multiplot\n");
-    if (vfy_file_commit(f, tmp, gp, 1) != 0)
-        return -1;
-    if (vfy_gnuplot(gp) < 0 && o->progress)
-        fprintf(o->progress, "   note: gnuplot failed on %s\n", gp);
-    return 0;
+    return finish_script(o, f, tmp, gp);
 }
