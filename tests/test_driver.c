@@ -14,6 +14,40 @@
 #include "scene_ini.h"
 #include "scene_refs.h"
 
+/* A description's column words: HEADER[=VALUE]:FORMAT, and each malformed
+ * word named. */
+static void test_columns(void **state)
+{
+    (void)state;
+    vfy_column *cols;
+    size_t n;
+    char *text, msg[200];
+    assert_int_equal(vfy_parse_columns("n:%.0f  candidates=events:%.0f\n scheme:%s "
+                                       VFY_COST_COLUMNS, &cols, &n, &text, msg, sizeof msg), 0);
+    assert_int_equal(n, 7);
+    assert_string_equal(cols[0].header, "n");
+    assert_null(cols[0].value);
+    assert_string_equal(cols[0].format, "%.0f");
+    assert_string_equal(cols[1].header, "candidates");
+    assert_string_equal(cols[1].value, "events");
+    assert_string_equal(cols[2].format, "%s");
+    assert_string_equal(cols[6].header, "ns_per_event");
+    assert_string_equal(cols[6].format, "%.1f");
+    free(cols);
+    free(text);
+    static const char *const bad[] = {"n", "n:", ":%.0f", "n:.0f", "=v:%g", "h=:%g",
+                                      "a:%g:b=c", NULL};
+    for (size_t k = 0; bad[k]; k++) {
+        char spec[64], want[120];
+        snprintf(spec, sizeof spec, "T:%%.5f %s", bad[k]);
+        assert_int_equal(vfy_parse_columns(spec, &cols, &n, &text, msg, sizeof msg), -1);
+        snprintf(want, sizeof want, "column '%s' is not HEADER[=VALUE]:FORMAT", bad[k]);
+        assert_string_equal(msg, want);
+        free(cols);
+        free(text);
+    }
+}
+
 static void test_values(void **state)
 {
     (void)state;
@@ -307,9 +341,7 @@ static const vfy_check_spec e2e_checks[] = {
     {.name = "{case} n={n} z", .rule = vfy_rule_zscore, .value = "T_raw",
      .expected = "T_raw_finite_n", .from = 1, .tol = 4.5, .out = "z"},
     {.name = NULL}};
-static const vfy_column e2e_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"CF", NULL, "%.2f"}, {"z", NULL, "%.2f"},
-    {NULL, NULL, NULL}};
+static const char e2e_columns[] = "n:%.0f N:%.0f CF:%.2f z:%.2f";
 static const vfy_case_desc e2e_desc = {
     .scene = "grw-ex3",
     .quick_rows = {.keys = {"particles.n"}, .values = {"16 64"},
@@ -388,9 +420,7 @@ static const vfy_check_spec rows_checks[] = {
     {.name = "{case} {label} {kind} b", .rule = vfy_rule_zscore, .value = "T_raw@b",
      .expected = "T_raw_finite_n", .from = 1, .tol = 4.5, .out = "z_b"},
     {.name = NULL}};
-static const vfy_column rows_columns[] = {
-    {"kind", NULL, "%s"}, {"h", NULL, "%g"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"},
-    {"N_b", "N@b", "%.0f"}, {"absent", NULL, "%s"}, {NULL, NULL, NULL}};
+static const char rows_columns[] = "kind:%s h:%g n:%.0f N:%.0f N_b=N@b:%.0f absent:%s";
 static const vfy_case_desc rows_desc = {
     .scene = "grw-ex3",
     .quick_rows = {.rows = rows_rows, .sets = "particles.ensembles=200;scene.outputs=11"},
@@ -472,8 +502,7 @@ static const vfy_check_spec batch_case_checks[] = {
     {.name = "{case} T* vs a wrong printed value", .rule = vfy_rule_printed, .value = "T_star",
      .plus = "T_star_ci", .x = 9.99, .tol = 2},
     {.name = NULL}};
-static const vfy_column batch_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"T_star", NULL, "%.5f"}, {NULL, NULL, NULL}};
+static const char batch_columns[] = "n:%.0f N:%.0f T_star:%.5f";
 static const vfy_case_desc batch_desc = {
     .scene = "grw-ex3",
     .quick_rows = {.keys = {"particles.n"}, .values = {"16"},
@@ -577,7 +606,7 @@ int main(void)
         cmocka_unit_test(test_reference_registry), cmocka_unit_test(test_rows_variants_adjust),
         cmocka_unit_test(test_tail_fit_and_adapters),
         cmocka_unit_test(test_batches_and_case_checks),
-        cmocka_unit_test(test_time_average_and_abs_diff),
+        cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -79,13 +79,11 @@ static const vfy_check_spec table2_checks[] = {
     BRS_CF_CHECKS, {.name = NULL}};
 static const vfy_check_spec no_table_checks[] = {BRS_EXACT_CHECKS, BRS_CF_CHECKS,
                                                  {.name = NULL}};
-static const vfy_column conv_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"Err", NULL, "%.3e"},
-    {"Err_paper", NULL, "%.2e"}, {"CF", NULL, "%.2f"}, {"CF_paper", NULL, "%.2f"},
-    {"Conf", NULL, "%.3e"}, {"Conf_paper", NULL, "%.2e"}, {"CF_Conf", NULL, "%.2f"},
-    {"CF_Conf_paper", NULL, "%.2f"}, {"e_sys", NULL, "%.3e"}, {"z_T", NULL, "%.2f"},
-    {"z_u", NULL, "%.2f"}, {"fictitious_fraction", NULL, "%.3f"}, {"violations", NULL, "%.0f"},
-    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char conv_columns[] =
+    "n:%.0f N:%.0f Err:%.3e Err_paper:%.2e CF:%.2f CF_paper:%.2f Conf:%.3e "
+    "Conf_paper:%.2e CF_Conf:%.2f CF_Conf_paper:%.2f e_sys:%.3e z_T:%.2f z_u:%.2f "
+    "fictitious_fraction:%.3f violations:%.0f "
+    VFY_COST_COLUMNS;
 static const char conv_notes[] =
     "{comment}; N = 16 n per row.\n\nErr = max over the {outputs} output times of |T(t) - "
     "eta1(t)|/T(t), with the centred temperature and T(t) from (B.15). Conf = max over the "
@@ -177,11 +175,10 @@ static const vfy_metric steady_metrics[] = {
 static const vfy_check_spec steady_checks[] = {
     {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count, .value = "violations"},
     {.name = NULL}};
-static const vfy_column steady_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"T_star", NULL, "%.5f"},
-    {"T_star_ci", NULL, "%.5f"}, {"dev_uy_grad", NULL, "%.4f"},
-    {"fictitious_fraction", NULL, "%.3f"}, {"violations", NULL, "%.0f"},
-    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char steady_columns[] =
+    "n:%.0f N:%.0f T_star:%.5f T_star_ci:%.5f dev_uy_grad:%.4f fictitious_fraction:%.3f "
+    "violations:%.0f "
+    VFY_COST_COLUMNS;
 
 /* n -> infinity: of T* (its value, half-width and the fit's chi^2), and of
  * T(t) at every output time for the figure; the closures' steady states and

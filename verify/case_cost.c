@@ -461,11 +461,10 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
       .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1, .tol = ZMAX,  \
       .out = "z"},                                                                      \
      {.name = NULL}}
-static const vfy_column grid_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"Err", NULL, "%.3e"},
-    {"Err_sys", NULL, "%.3e"}, {"Err_stat", NULL, "%.3e"}, {"Conf", NULL, "%.3e"},
-    {"z", NULL, "%.2f"}, {"Err_model", NULL, "%.3e"}, {"Err_over_model", NULL, "%.2f"},
-    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char grid_columns[] =
+    "n:%.0f N:%.0f Err:%.3e Err_sys:%.3e Err_stat:%.3e Conf:%.3e z:%.2f Err_model:%.3e "
+    "Err_over_model:%.2f "
+    VFY_COST_COLUMNS;
 #define COST_GRID_NOTES(OBS, FINITE)                                                    \
     "{comment}; each row sets n and N.\n\nErr = max over the {outputs} output times of "   \
     "|F(t) - eta1(t)|/F(t) for " OBS " (SPEC §1). With E xi^(n)(t) the exact expectation " \
@@ -968,15 +967,11 @@ static sim_status split_cost_adjust(const vfy_row *row, sim_scene *solver, char 
 static const vfy_metric split_cost_metrics[] = {
     {"ns_per_collision", vfy_metric_per, "cpu_s", "collisions", 1e9},
     {NULL, NULL, NULL, NULL, 0}};
-static const vfy_column split_cost_columns[] = {
-    {"scheme", NULL, "%s"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"h", NULL, "%g"},
-    {"T", NULL, "%.6f"}, {"T_ci", NULL, "%.6f"}, {"Err", NULL, "%.3e"},
-    {"Err_hi", NULL, "%.3e"}, {"Err_sys", NULL, "%.3e"}, {"Err_split", NULL, "%.3e"},
-    {"Err_stat", NULL, "%.3e"}, {"Conf", NULL, "%.3e"}, {"split_meas", NULL, "%+.3e"},
-    {"split_meas_ci", NULL, "%.2e"}, {"Err_model", NULL, "%.3e"}, {"cpu_s", NULL, "%.2f"},
-    {"wall_s", NULL, "%.2f"}, {"candidates", "events", "%.0f"},
-    {"collisions", NULL, "%.0f"}, {"normals", NULL, "%.0f"},
-    {"ns_per_collision", NULL, "%.1f"}, {NULL, NULL, NULL}};
+static const char split_cost_columns[] =
+    "scheme:%s n:%.0f N:%.0f h:%g T:%.6f T_ci:%.6f Err:%.3e Err_hi:%.3e Err_sys:%.3e "
+    "Err_split:%.3e Err_stat:%.3e Conf:%.3e split_meas:%+.3e split_meas_ci:%.2e "
+    "Err_model:%.3e cpu_s:%.2f wall_s:%.2f candidates=events:%.0f collisions:%.0f "
+    "normals:%.0f ns_per_collision:%.1f";
 
 /* The hard-sphere gas of paper A Ex 5 with the jump scheme over n x N and the
  * time-step scheme over h (the time-step rows simulate the solver's scene,

@@ -48,12 +48,10 @@ static const vfy_check_spec grw_checks[] = {
     {.name = "{case} n={n} T vs exact finite-n expectation", .rule = vfy_rule_zscore,
      .value = "T", .expected = "T_finite_n", .from = 1, .tol = VFY_TOL_ZMAX, .out = "z_T"},
     {.name = NULL}};
-static const vfy_column grw_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"Emax", NULL, "%.3e"},
-    {"Emax_paper", NULL, "%.3e"}, {"CF", NULL, "%.2f"}, {"CF_paper", NULL, "%.2f"},
-    {"V_inf", NULL, "%.3e"}, {"V_inf_paper", NULL, "%.3e"}, {"Emax_T", NULL, "%.3e"},
-    {"noise", NULL, "%.3e"}, {"z_T_raw", NULL, "%.2f"}, {"z_T", NULL, "%.2f"},
-    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char grw_columns[] =
+    "n:%.0f N:%.0f Emax:%.3e Emax_paper:%.3e CF:%.2f CF_paper:%.2f V_inf:%.3e "
+    "V_inf_paper:%.3e Emax_T:%.3e noise:%.3e z_T_raw:%.2f z_T:%.2f "
+    VFY_COST_COLUMNS;
 #define GRW_TABLE(LABEL, PAPER)                                                         \
     {.paper = LABEL,                                                                  \
      .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096 16384"}},   \
@@ -100,11 +98,10 @@ static const vfy_metric ex5_metrics[] = {
 static const vfy_check_spec ex5_checks[] = {
     {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count, .value = "violations"},
     {.name = NULL}};
-static const vfy_column ex5_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"T_end", NULL, "%.5f"},
-    {"T_end_ci", NULL, "%.5f"}, {"dev_maxwell_closure", NULL, "%.4f"},
-    {"dev_sonine_closure", NULL, "%.4f"}, {"fictitious_fraction", NULL, "%.3f"},
-    {"violations", NULL, "%.0f"}, VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char ex5_columns[] =
+    "n:%.0f N:%.0f T_end:%.5f T_end_ci:%.5f dev_maxwell_closure:%.4f "
+    "dev_sonine_closure:%.4f fictitious_fraction:%.3f violations:%.0f "
+    VFY_COST_COLUMNS;
 
 /* The O(1/n) extrapolation at every output time: <case>-extrapolated.csv, the
  * fit's chi^2 and T_inf(t_end) against the Sonine closure, and the n =

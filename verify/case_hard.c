@@ -756,19 +756,13 @@ static const vfy_check_spec tails_checks[] = {
     {.name = WHITE_LABEL " tail P(c >= 3) / first-Sonine value", .rule = hard_rule_at_least,
      .value = "tail_ratio", .expected = "tail_lower"},
     WHITE_TAIL_CHECKS};
-#define WHITE_COLUMNS_HEAD                                                             \
-    {"alpha", NULL, "%g"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"beta", NULL, "%.5g"}, \
-        {"T", NULL, "%.5f"}, {"T_ci", NULL, "%.5f"}, {"a2", NULL, "%.5f"},             \
-        {"a2_ci", NULL, "%.5f"}, {"a2_C10", NULL, "%.5f"}, {"mu2", NULL, "%.5f"},        \
-        {"mu4", NULL, "%.5f"}, {"mu4_white", NULL, "%.5f"}, {"balance", NULL, "%.5f"},   \
-        {"balance_tol", NULL, "%.5f"}
-#define WHITE_COLUMNS_TAIL                                                             \
-    {"fictitious_fraction", NULL, "%.3f"}, {"violations", NULL, "%.0f"},               \
-        VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}
-static const vfy_column dissipation_columns[] = {WHITE_COLUMNS_HEAD, WHITE_COLUMNS_TAIL};
-static const vfy_column tails_columns[] = {
-    WHITE_COLUMNS_HEAD, {"P_tail", NULL, "%.4g"}, {"P_tail_ci", NULL, "%.2g"},
-    {"P_tail_sonine", NULL, "%.4g"}, {"P_tail_maxwell", NULL, "%.4g"}, WHITE_COLUMNS_TAIL};
+#define WHITE_COLUMNS_HEAD                                                                   \
+    "alpha:%g n:%.0f N:%.0f beta:%.5g T:%.5f T_ci:%.5f a2:%.5f a2_ci:%.5f a2_C10:%.5f mu2:%.5f " \
+    "mu4:%.5f mu4_white:%.5f balance:%.5f balance_tol:%.5f "
+#define WHITE_COLUMNS_TAIL "fictitious_fraction:%.3f violations:%.0f " VFY_COST_COLUMNS
+static const char dissipation_columns[] = WHITE_COLUMNS_HEAD WHITE_COLUMNS_TAIL;
+static const char tails_columns[] = WHITE_COLUMNS_HEAD
+    "P_tail:%.4g P_tail_ci:%.2g P_tail_sonine:%.4g P_tail_maxwell:%.4g " WHITE_COLUMNS_TAIL;
 #define WHITE_NOTES                                                                    \
     "Steady state of white-noise heated hard spheres, exact jump scheme (time averages " \
     "per ensemble over the output times t >= steady.from; half-widths 3.2 sigma over the " \
@@ -864,13 +858,11 @@ static const vfy_check_spec nongaussian_checks[] = {
     HARD_CHECK(WHITE_LABEL, HARD_MOMENTUM, "updates"),
     HARD_CHECK(WHITE_LABEL, HARD_VIOLATIONS, NULL), HARD_CHECK(WHITE_LABEL, HARD_FINITE, NULL),
     {.name = NULL}};
-static const vfy_column nongaussian_columns[] = {
-    {"alpha", NULL, "%g"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"g", NULL, "%.5g"},
-    {"h", NULL, "%g"}, {"T", NULL, "%.5f"}, {"a2", NULL, "%.5f"}, {"a2_ci", NULL, "%.5f"},
-    {"a2_C76", NULL, "%.5f"}, {"mu4", NULL, "%.5f"}, {"mu4_nongaussian", NULL, "%.5f"},
-    {"f_over_phi_0", NULL, "%.4f"}, {"f_over_phi_0_ci", NULL, "%.4f"},
-    {"f_over_phi_sonine", NULL, "%.4f"}, {"max_V", NULL, "%.3g"}, {"V_bound", NULL, "%.3g"},
-    {"violations", NULL, "%.0f"}, VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char nongaussian_columns[] =
+    "alpha:%g n:%.0f N:%.0f g:%.5g h:%g T:%.5f a2:%.5f a2_ci:%.5f a2_C76:%.5f mu4:%.5f "
+    "mu4_nongaussian:%.5f f_over_phi_0:%.4f f_over_phi_0_ci:%.4f f_over_phi_sonine:%.4f "
+    "max_V:%.3g V_bound:%.3g violations:%.0f "
+    VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_nongaussian = {
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
                    .values = {"0.05 0.1"}},
@@ -924,10 +916,10 @@ static const vfy_check_spec tiny_checks[] = {
     {.name = NULL}};
 static const vfy_metric tiny_metrics[] = {HARD_METRIC("violations_hs", Q_VIOLATIONS_HS),
                                           {NULL, NULL, NULL, NULL, 0}};
-static const vfy_column tiny_columns[] = {
-    {"gas", NULL, "%s"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"z_T", NULL, "%.2f"},
-    {"z_T_raw", NULL, "%.2f"}, {"z_u", NULL, "%.2f"}, {"z_V2", NULL, "%.2f"},
-    {"violations", "violations_hs", "%.0f"}, VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char tiny_columns[] =
+    "gas:%s n:%.0f N:%.0f z_T:%.2f z_T_raw:%.2f z_u:%.2f z_V2:%.2f "
+    "violations=violations_hs:%.0f "
+    VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_tiny = {
     .paper_rows = {.rows = tiny_rows, .sets = "particles.ensembles=1000000;scene.outputs=41"},
     .quick_rows = {.rows = tiny_rows, .sets = "particles.ensembles=20000;scene.outputs=41"},
@@ -1037,13 +1029,11 @@ static const vfy_metric long_run_metrics[] = {
     {"V_bound", hard_metric, "collisions_per_system", NULL, Q_V_BOUND},
     {"energy_bound", hard_metric, "collisions_per_system", NULL, Q_ENERGY_BOUND},
     HARD_METRIC("violations_hs", Q_VIOLATIONS_HS), {NULL, NULL, NULL, NULL, 0}};
-static const vfy_column long_run_columns[] = {
-    {"row", NULL, "%s"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"alpha", NULL, "%.9g"},
-    {"t_end", NULL, "%.6g"}, {"events_per_system", NULL, "%.4g"},
-    {"collisions_per_system", NULL, "%.4g"}, {"k_t_end", NULL, "%.4g"},
-    {"T_end_over_T0", NULL, "%.6g"}, {"z_T", NULL, "%.2f"}, {"max_V", NULL, "%.3g"},
-    {"V_bound", NULL, "%.3g"}, {"energy_bound", NULL, "%.3g"},
-    {"violations", "violations_hs", "%.0f"}, VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char long_run_columns[] =
+    "row:%s n:%.0f N:%.0f alpha:%.9g t_end:%.6g events_per_system:%.4g "
+    "collisions_per_system:%.4g k_t_end:%.4g T_end_over_T0:%.6g z_T:%.2f max_V:%.3g "
+    "V_bound:%.3g energy_bound:%.3g violations=violations_hs:%.0f "
+    VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_long_run = {
     .paper_rows = {.rows = long_run_rows, .sets = "$events=1e9"},
     .quick_rows = {.rows = long_run_rows, .sets = "$events=1e7"},
@@ -1139,10 +1129,9 @@ static vfy_verdict stiff_rule(vfy_report *r, const char *name, vfy_case_run *run
 }
 static const vfy_check_spec stiff_checks[] = {
     {.name = "{case} {model_name} K={K} {method_name}", .rule = stiff_rule}, {.name = NULL}};
-static const vfy_column stiff_columns[] = {
-    {"model", "model_name", "%s"}, {"K", NULL, "%g"}, {"method", "method_name", "%s"},
-    {"status", NULL, "%s"}, {"T_end", NULL, "%.10g"}, {"T_steady", NULL, "%.10g"},
-    {"rel_dev", NULL, "%.2g"}, {"message", NULL, "%s"}, {NULL, NULL, NULL}};
+static const char stiff_columns[] =
+    "model=model_name:%s K:%g method=method_name:%s status:%s T_end:%.10g T_steady:%.10g "
+    "rel_dev:%.2g message:%s";
 static sim_status stiff_grid(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
     (void)r;
@@ -1230,12 +1219,11 @@ static const vfy_check_spec extreme_checks[] = {
      .rule = hard_rule_gaussian_V, .out = "z_V2"},
     HARD_CHECK(EXTREME_LABEL, HARD_FINITE, NULL),
     {.name = NULL}};
-static const vfy_column extreme_columns[] = {
-    {"row", "label", "%s"}, {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"t_end", NULL, "%.4g"},
-    {"T_end", NULL, "%.6g"}, {"T_end_ci", NULL, "%.2g"}, {"T_end_ref", NULL, "%.6g"},
-    {"z_T", NULL, "%.2f"}, {"z_T_raw", NULL, "%.2f"}, {"z_V2", NULL, "%.2f"},
-    {"fictitious_fraction", NULL, "%.3f"}, {"violations", "violations_hs", "%.0f"},
-    VFY_COST_COLUMN_SPECS, {NULL, NULL, NULL}};
+static const char extreme_columns[] =
+    "row=label:%s n:%.0f N:%.0f t_end:%.4g T_end:%.6g T_end_ci:%.2g T_end_ref:%.6g "
+    "z_T:%.2f z_T_raw:%.2f z_V2:%.2f fictitious_fraction:%.3f "
+    "violations=violations_hs:%.0f "
+    VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_extreme = {
     .paper_rows = {.rows = extreme_paper}, .quick_rows = {.rows = extreme_quick},
     .label = EXTREME_LABEL, .needs = all_references, .derive = extreme_rate,

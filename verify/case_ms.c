@@ -195,17 +195,12 @@ static const vfy_check_spec ng_checks[] = {
      .guard = INELASTIC},
     {.name = NULL}};
 
-static const vfy_column a2_columns[] = {
-    {"alpha", NULL, "%.2f"}, {"a2", NULL, "%.5f"}, {"a2_ci", NULL, "%.5f"},
-    {"a2_C10", NULL, "%.5f"}, {"a2_C32", NULL, "%.5f"}, {"a2_C5", NULL, "%.5f"},
-    {"a2_C40", NULL, "%.5f"}, {"a2_C50", NULL, "%.5f"}, {"a2_C76", NULL, "%.5f"},
-    {"mu2_ratio", NULL, "%.5f"}, {"mu2_ratio_ci", NULL, "%.5f"}, {"mu4_ratio", NULL, "%.5f"},
-    {"mu4_ratio_ci", NULL, "%.5f"}, {"a3", NULL, "%.5f"}, {"a3_ci", NULL, "%.5f"},
-    {"c1", NULL, "%.5f"}, {"c3", NULL, "%.5f"}, {"mu2", NULL, "%.5f"}, {"mu4", NULL, "%.5f"},
-    {"T", NULL, "%.4f"}, {"strength", NULL, "%.5g"}, {"h", NULL, "%g"},
-    {"collisions", NULL, "%.0f"}, {"violations", NULL, "%.0f"}, {"cpu_s", NULL, "%.2f"},
-    {"wall_s", NULL, "%.2f"}, {"ns_per_candidate", "ns_per_event", "%.1f"},
-    {NULL, NULL, NULL}};
+static const char a2_columns[] =
+    "alpha:%.2f a2:%.5f a2_ci:%.5f a2_C10:%.5f a2_C32:%.5f a2_C5:%.5f a2_C40:%.5f "
+    "a2_C50:%.5f a2_C76:%.5f mu2_ratio:%.5f mu2_ratio_ci:%.5f mu4_ratio:%.5f "
+    "mu4_ratio_ci:%.5f a3:%.5f a3_ci:%.5f c1:%.5f c3:%.5f mu2:%.5f mu4:%.5f T:%.4f "
+    "strength:%.5g h:%g collisions:%.0f violations:%.0f cpu_s:%.2f wall_s:%.2f "
+    "ns_per_candidate=ns_per_event:%.1f";
 
 #define A2_NOTES(CHECKS)                                                               \
     "{comment}; {sizes}.\n\nEach row is one steady state (time-step scheme, contact rule, " \
@@ -320,14 +315,11 @@ static const vfy_check_spec table1_checks[] = {
      .plus_quick = "mu4_indirect_ci_t",
      .guard = {vfy_guard_unless, "unjudged", NULL, 0, T1_UNJUDGED("mu4_indirect", "indirect")}},
     {.name = NULL}};
-static const vfy_column table1_columns[] = {
-    {"alpha", NULL, "%.1f"}, {"thermostat", NULL, "%s"}, {"mu4_0", NULL, "%.4f"},
-    {"mu4_0_paper", NULL, "%.3f"}, {"mu4_direct", "mu4", "%.4f"},
-    {"mu4_direct_ci", "mu4_ci", "%.4f"}, {"mu4_direct_paper", NULL, "%.3f"},
-    {"mu4_indirect", NULL, "%.4f"}, {"mu4_indirect_ci", NULL, "%.4f"},
-    {"mu4_indirect_paper", NULL, "%.3f"}, {"gap_percent", NULL, "%+.3f"},
-    {"gap_ci_percent", NULL, "%.3f"}, {"a2", NULL, "%.5f"}, {"a2_ci", NULL, "%.5f"},
-    {"cpu_s", NULL, "%.2f"}, {"wall_s", NULL, "%.2f"}, {NULL, NULL, NULL}};
+static const char table1_columns[] =
+    "alpha:%.1f thermostat:%s mu4_0:%.4f mu4_0_paper:%.3f mu4_direct=mu4:%.4f "
+    "mu4_direct_ci=mu4_ci:%.4f mu4_direct_paper:%.3f mu4_indirect:%.4f "
+    "mu4_indirect_ci:%.4f mu4_indirect_paper:%.3f gap_percent:%+.3f gap_ci_percent:%.3f "
+    "a2:%.5f a2_ci:%.5f cpu_s:%.2f wall_s:%.2f";
 
 const vfy_case_desc vfy_ms_table1 = {
     .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength,
@@ -528,13 +520,10 @@ static const vfy_check_spec tails_checks[] = {
      .guard = {vfy_guard_at_least, "f_over_phi_c4_ok", NULL, 1,
                "the shells at c = 4 hold too few particles at these sizes"}},
     {.name = NULL}};
-static const vfy_column tails_columns[] = {
-    {"thermostat", NULL, "%s"}, {"alpha", NULL, "%.1f"}, {"b", NULL, "%.1f"},
-    {"A_theory", NULL, "%.4f"}, {"A_paper", NULL, "%.2f"}, {"A_fit_c2", NULL, "%.4f"},
-    {"A_fit_c3", NULL, "%.4f"}, {"A_fit_c3_sd", NULL, "%.4f"}, {"fit_bins_c3", NULL, "%.0f"},
-    {"K", NULL, "%.3g"}, {"K_ci", NULL, "%.2g"}, {"K_paper", NULL, "%.3g"},
-    {"f_over_phi_c4", NULL, "%.3g"}, {"f_over_phi_c4_paper", "ratio4_paper", "%.3g"},
-    {"cpu_s", NULL, "%.2f"}, {"wall_s", NULL, "%.2f"}, {NULL, NULL, NULL}};
+static const char tails_columns[] =
+    "thermostat:%s alpha:%.1f b:%.1f A_theory:%.4f A_paper:%.2f A_fit_c2:%.4f "
+    "A_fit_c3:%.4f A_fit_c3_sd:%.4f fit_bins_c3:%.0f K:%.3g K_ci:%.2g K_paper:%.3g "
+    "f_over_phi_c4:%.3g f_over_phi_c4_paper=ratio4_paper:%.3g cpu_s:%.2f wall_s:%.2f";
 
 const vfy_case_desc vfy_ms_tails = {
     .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength,

@@ -48,12 +48,10 @@ static const vfy_check_spec vro_checks[] = {
     {.name = "{case} n={n} variance reduction of T_raw (mean over t)", .rule = vfy_rule_range,
      .value = "var_ratio_T_raw", .lo = 1.0 + 1e-9, .hi = INFINITY},
     {.name = NULL}};
-static const vfy_column vro_columns[] = {
-    {"n", NULL, "%.0f"}, {"N", NULL, "%.0f"}, {"var_ratio_T_raw", NULL, "%.3f"},
-    {"var_ratio_T_raw_min", NULL, "%.3f"}, {"var_ratio_T", NULL, "%.3f"},
-    {"var_ratio_T_min", NULL, "%.3f"}, {"z_T_raw", NULL, "%.2f"}, {"z_T", NULL, "%.2f"},
-    {"z_modes", NULL, "%.2f"}, {"cpu_s_sampled", "cpu_s", "%.2f"},
-    {"cpu_s_conditional", "cpu_s@conditional", "%.2f"}, {NULL, NULL, NULL}};
+static const char vro_columns[] =
+    "n:%.0f N:%.0f var_ratio_T_raw:%.3f var_ratio_T_raw_min:%.3f var_ratio_T:%.3f "
+    "var_ratio_T_min:%.3f z_T_raw:%.2f z_T:%.2f z_modes:%.2f cpu_s_sampled=cpu_s:%.2f "
+    "cpu_s_conditional=cpu_s@conditional:%.2f";
 
 /* The notes name the smallest mean factor for T_raw over the rows. */
 static sim_status vro_smallest(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)

@@ -646,10 +646,42 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
     }
 }
 
+int vfy_parse_columns(const char *spec, vfy_column **cols, size_t *ncols, char **text,
+                      char *msg, size_t msglen)
+{
+    *cols = NULL;
+    *ncols = 0;
+    size_t words = 0;
+    for (const char *p = spec; *p; p++)
+        words += !isspace((unsigned char)*p) && (p == spec || isspace((unsigned char)p[-1]));
+    *text = malloc(strlen(spec) + 1);
+    *cols = calloc(words ? words : 1, sizeof **cols);
+    if (*text == NULL || *cols == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return -1;
+    }
+    strcpy(*text, spec);
+    char *save = NULL;
+    for (char *w = strtok_r(*text, " \t\n", &save); w; w = strtok_r(NULL, " \t\n", &save)) {
+        vfy_column *col = &(*cols)[(*ncols)++];
+        char *format = strchr(w, ':'), *value = strchr(w, '=');
+        if (format == NULL || format == w || format[1] != '%' || (value && value > format)
+            || value == w || (value && value + 1 == format)) {
+            snprintf(msg, msglen, "column '%s' is not HEADER[=VALUE]:FORMAT", w);
+            return -1;
+        }
+        *format++ = '\0';
+        if (value != NULL)
+            *value++ = '\0';
+        *col = (vfy_column){w, value, format};
+    }
+    return 0;
+}
+
 static int row_cells(vfy_case_run *run, const vfy_row *row)
 {
     int rc = 0;
-    for (const vfy_column *col = run->d->columns; col->header; col++) {
+    for (const vfy_column *col = run->columns; col < run->columns + run->ncols; col++) {
         const char *name = col->value ? col->value : col->header;
         if (strcmp(col->format, "%s") == 0) {
             const char *text = row_string(row, name);
@@ -972,19 +1004,28 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     const vfy_case_desc *d = c->desc;
     const vfy_sweep *s = o->size == VFY_PAPER ? &d->paper_rows : &d->quick_rows;
     vfy_case_run run = {.c = c, .d = d, .o = o};
-    size_t rows = vfy_sweep_rows(s), ncols = 0;
-    while (d->columns[ncols].header)
-        ncols++;
+    size_t rows = vfy_sweep_rows(s);
+    char why[200];
+    if (vfy_parse_columns(d->columns, &run.columns, &run.ncols, &run.column_text, why,
+                          sizeof why) != 0) {
+        free(run.columns);
+        free(run.column_text);
+        snprintf(msg, msglen, "%s: %s", c->name, why);
+        return SIM_EINVAL;
+    }
+    const size_t ncols = run.ncols;
     const char **headers = malloc((ncols + 1) * sizeof *headers);
     run.rows = calloc(rows ? rows : 1, sizeof *run.rows);
     if (headers == NULL || run.rows == NULL) {
         free(headers);
         free(run.rows);
+        free(run.columns);
+        free(run.column_text);
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
     for (size_t k = 0; k < ncols; k++)
-        headers[k] = d->columns[k].header;
+        headers[k] = run.columns[k].header;
     vfy_table_init(&run.table, ncols, headers);
     sim_status status = SIM_OK;
     for (size_t i = 0; i < rows && status == SIM_OK; i++) {
@@ -1009,6 +1050,8 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     free(run.extra_mean);
     free(run.extra_ci);
     free(run.rows);
+    free(run.columns);
+    free(run.column_text);
     free(headers);
     return status;
 }

@@ -155,15 +155,21 @@ struct vfy_check_spec {
 
 /* A table column: header, the value it prints (NULL: the header's name) and
  * its printf format for a double; a NaN or missing value is an empty cell.
- * Format "%s" prints the row's text value of that name. */
+ * Format "%s" prints the row's text value of that name.  A description
+ * lists its columns as one string of words HEADER[=VALUE]:FORMAT
+ * ("n:%.0f Emax:%.3e candidates=events:%.0f"), parsed by vfy_parse_columns. */
 typedef struct vfy_column {
     const char *header, *value, *format;
 } vfy_column;
 
+/* The columns of spec into *cols (count of them in *ncols; the strings
+ * point into *text; free both).  Returns 0, or -1 with msg naming the word
+ * that is not HEADER[=VALUE]:FORMAT (or out of memory). */
+int vfy_parse_columns(const char *spec, vfy_column **cols, size_t *ncols, char **text,
+                      char *msg, size_t msglen);
+
 /* The cost columns most tables end with. */
-#define VFY_COST_COLUMN_SPECS                                                  \
-    {"cpu_s", NULL, "%.2f"}, {"wall_s", NULL, "%.2f"}, {"events", NULL, "%.0f"}, \
-        {"ns_per_event", NULL, "%.1f"}
+#define VFY_COST_COLUMNS "cpu_s:%.2f wall_s:%.2f events:%.0f ns_per_event:%.1f"
 
 /* A value the paper prints for each row (NAN where it prints none). */
 typedef struct vfy_paper_column {
@@ -272,7 +278,7 @@ typedef struct vfy_case_desc {
     const vfy_check_spec *checks;       /* in order; terminated by a NULL name */
     const vfy_check_spec *case_checks;  /* on the case's values, after after_rows (no
                                            row, no guard) */
-    const vfy_column *columns;          /* terminated by a NULL header */
+    const char *columns;                /* "HEADER[=VALUE]:FORMAT ..." (vfy_column) */
     vfy_figure_spec figures[VFY_FIGURES_MAX];  /* up to the first of kind NONE */
     const char *title, *notes;          /* templates */
     vfy_hook_fn after_rows;
@@ -286,6 +292,9 @@ struct vfy_case_run {
     const vfy_options *o;
     vfy_row *rows;
     size_t nrows;
+    vfy_column *columns;   /* the description's, parsed */
+    size_t ncols;
+    char *column_text;     /* the strings columns point into */
     vfy_values values;     /* the case's values (wall_total, hooks') */
     size_t ntexts;         /* the case's texts a hook set (vfy_run_set_text) */
     char text_names[4][24], texts[4][512];
