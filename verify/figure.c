@@ -6,6 +6,8 @@
 
 #include "table.h"
 
+enum { PATH_LEN = 1024, TMP_LEN = 1100 };   /* a report file's path, and its .tmp */
+
 int vfy_gnuplot(const char *script_path)
 {
     if (!vfy_writes_files())   /* another process (MPI rank 0) draws it */
@@ -30,6 +32,22 @@ static FILE *begin_file(const vfy_options *o, const char *name, const char *suff
     return f;
 }
 
+/* Begin the gnuplot script `name`.gp of o (its path into gp[PATH_LEN]): the
+ * provenance comment, "# HEADING: gnuplot PATH", and a width x height PNG
+ * terminal writing `name`.png, reading comma-separated data.  gp and tmp
+ * hold PATH_LEN and TMP_LEN characters. */
+static FILE *begin_script(const vfy_options *o, const char *name, const char *comment,
+                          const char *heading, int width, int height, char *gp, char *tmp)
+{
+    char png[PATH_LEN];
+    FILE *f = begin_file(o, name, ".gp", comment, gp, PATH_LEN, tmp, TMP_LEN);
+    if (f != NULL)
+        fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size %d,%d font ',10'\n"
+                   "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n",
+                heading, gp, width, height, vfy_report_path(o, name, ".png", png, sizeof png));
+    return f;
+}
+
 /* Commit the gnuplot script begun as tmp to gp and render it (a failure of
  * gnuplot itself is only noted). */
 static int finish_script(const vfy_options *o, FILE *f, const char *tmp, const char *gp)
@@ -43,7 +61,7 @@ static int finish_script(const vfy_options *o, FILE *f, const char *tmp, const c
 
 int vfy_write_points(const vfy_options *o, const vfy_points *f)
 {
-    char points[1024], theory[1024], gp[1024], png[1024], tmp[1100], file[256];
+    char points[PATH_LEN], theory[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[256];
     snprintf(file, sizeof file, "%s-points", f->name);
     FILE *out = begin_file(o, file, ".csv", f->comment, points, sizeof points, tmp, sizeof tmp);
     if (out == NULL)
@@ -77,15 +95,12 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     if (vfy_file_commit(out, tmp, theory, 1) != 0)
         return -1;
 
-    out = begin_file(o, f->name, ".gp", f->comment, gp, sizeof gp, tmp, sizeof tmp);
+    out = begin_script(o, f->name, f->comment, f->title, 900, 650, gp, tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "# %s: gnuplot %s\nset terminal pngcairo size 900,650 font ',10'\n"
-                 "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
-                 "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
+    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
                  "plot",
-            f->title, gp, vfy_report_path(o, f->name, ".png", png, sizeof png), f->title,
-            f->xlabel, f->ylabel,
+            f->title, f->xlabel, f->ylabel,
             f->logx && f->logy ? "set logscale xy\n"
             : f->logy          ? "set logscale y\n"
             : f->logx          ? "set logscale x\n"
@@ -108,7 +123,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
                              const double *cpu, const double *err, const double *model,
                              char (*labels)[24], const vfy_wp_prediction *pred)
 {
-    char data[1024], gp[1024], png[1024], tmp[1100], file[200];
+    char data[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[200];
     snprintf(file, sizeof file, "%s-points", name);
     FILE *f = begin_file(o, file, ".csv", comment, data, sizeof data, tmp, sizeof tmp);
     if (f == NULL)
@@ -128,16 +143,14 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
                 pred->label[k]);
     if (vfy_file_commit(f, tmp, data, 1) != 0)
         return -1;
-    f = begin_file(o, name, ".gp", comment, gp, sizeof gp, tmp, sizeof tmp);
+    f = begin_script(o, name, comment, name, 1100, 750, gp, tmp);
     if (f == NULL)
         return -1;
-    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1100,750 font ',10'\n"
-               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
-               "set title '%s'\nset xlabel 'CPU seconds (all threads)'\n"
+    fprintf(f, "set title '%s'\nset xlabel 'CPU seconds (all threads)'\n"
                "set ylabel '%s'\nset logscale xy\nset format y '%%.0e'\n"
                "set grid\nset key outside right top\n"
                "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
-            name, gp, vfy_report_path(o, name, ".png", png, sizeof png), title, ylabel);
+            title, ylabel);
     for (size_t s = 0; s < nseries; s++)
         fprintf(f, "%s '%s' index %zu using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc %zu "
                    "title '%s', '' index %zu using 1:3 with lines dt 3 lw 2 lc %zu notitle, "
@@ -163,7 +176,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                         const double *mean, const double *ci, const char *quantity,
                         double x_from, int one_panel_per_row)
 {
-    char path[1024], tmp[1100], png[1024];
+    char path[PATH_LEN], tmp[TMP_LEN];
     FILE *f = begin_file(o, name, "-curves.csv", comment, path, sizeof path, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
@@ -188,16 +201,12 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
     if (vfy_file_commit(f, tmp, path, 1) != 0)
         return -1;
 
-    char gp[1024];
-    f = begin_file(o, name, ".gp", comment, gp, sizeof gp, tmp, sizeof tmp);
+    char gp[PATH_LEN];
+    f = begin_script(o, name, comment, title, 1200, one_panel_per_row ? 900 : 700, gp, tmp);
     if (f == NULL)
         return -1;
-    fprintf(f, "# %s: gnuplot %s\nset terminal pngcairo size 1200,%d font ',10'\n"
-               "set termoption noenhanced\nset output '%s'\nset datafile separator ','\n"
-               "set xrange [%g:*]\n"
-               "set xlabel 't'\nset ylabel '%s'\nset key top right\n",
-            title, gp, one_panel_per_row ? 900 : 700,
-            vfy_report_path(o, name, ".png", png, sizeof png), x_from, quantity);
+    fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key top right\n",
+            x_from, quantity);
     size_t panels = one_panel_per_row ? (rows < 4 ? rows : 4) : 1;
     if (one_panel_per_row)
         fprintf(f, "set multiplot layout 2,2 title '%s'\n", title);
