@@ -11,6 +11,9 @@
  * all load.
  */
 #include <dirent.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -441,6 +444,141 @@ static void test_all_scene_files(void **state)
         assert_int_equal(st, SIM_OK);
         sim_engine_free(engine);
     }
+}
+
+/* ---- the scene writer: parse(write(s)) is s --------------------------- */
+
+/* Write s, parse the text back and compare every key and section. */
+static void assert_round_trip(const sim_scene *s)
+{
+    char *text = NULL, msg[1024], key[64];
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    assert_non_null(f);
+    assert_int_equal(vfy_scene_write(f, s), 0);
+    assert_int_equal(fclose(f), 0);
+    sim_scene back;
+    sim_status st = vfy_scene_parse(text, "written.ini", NULL, 0, &back, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("%s\n%s\n", msg, text);
+    assert_int_equal(st, SIM_OK);
+    if (vfy_scene_differs(s, &back, key, sizeof key))
+        print_error("%s differs after a round trip through\n%s\n", key, text);
+    assert_false(vfy_scene_differs(s, &back, key, sizeof key));
+    free(text);
+}
+
+static void test_write_shipped_scenes(void **state)
+{
+    (void)state;
+    char dir[1024], path[2048], msg[1024];
+    snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    size_t count = 0;
+    for (struct dirent *e; (e = readdir(d));) {
+        size_t len = strlen(e->d_name);
+        if (len < 4 || strcmp(e->d_name + len - 4, ".ini") != 0)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        sim_scene s;
+        assert_int_equal(vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg), SIM_OK);
+        assert_round_trip(&s);
+        count++;
+    }
+    closedir(d);
+    assert_int_equal(count, 18);
+}
+
+/* Random valid scenes: random values for random keys (awkward decimals,
+ * large counts, every word), on top of scenes of each kind; those the parser
+ * accepts go round the writer.  The comparison itself is tested: a changed
+ * value and a section gone are found. */
+static void test_write_random_scenes(void **state)
+{
+    (void)state;
+    static const char *const bases[] = {
+        "[scene]\nt_end = 2\noutputs = 5\n[collisions]\nkernel = hard-spheres\n",
+        "[scene]\nscheme = timestep\ndt = 0.3\n[collisions]\n[heating]\ntype = gaussian\n"
+        "keep_temperature = true\n[steady]\nfrom = 0.5\npairs = 10\nbins = 4\n",
+        "[particles]\ninitial = two-maxwellians\nfraction = 0.25\nmass1 = 1\nmass2 = 1\n"
+        "velocity1 = 1 2 3\nvelocity2 = -1 0 0.5\ntemperature1 = 2\ntemperature2 = 0.5\n"
+        "[background]\nkernel = hard-spheres\n",
+        "[collisions]\nkernel = vhs\nexponent = 0.37\n[shear]\nrate = 0.5\n[heat-flux]\n",
+    };
+    static const char *const reals[] = {
+        "scene.t_end", "particles.mass", "particles.temperature", "collisions.constant",
+        "collisions.rate", "background.density", "background.mass", "background.temperature",
+        "background.constant", "shear.length", "steady.c_max"};
+    static const char *const unit[] = {"collisions.restitution", "particles.fraction"};
+    static const char *const finite[] = {"heating.strength", "shear.rate",
+                                         "heat-flux.strength"};
+    static const char *const vectors[] = {"particles.velocity", "background.velocity"};
+    static const char *const counts[] = {"particles.n", "particles.ensembles", "scene.seed",
+                                         "scene.outputs", "shear.layers"};
+    static const char *const words[] = {
+        "collisions.model=ehs", "collisions.model=ihs", "scene.observation=sampled",
+        "particles.zero_momentum=true", "particles.initial=shell", "shear.boundary=lees-edwards",
+        "heating.type=non-gaussian", "background.kernel=maxwell", "scene.title=a title"};
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 2385);
+    size_t accepted = 0;
+    char sets[6][96];
+    for (int trial = 0; trial < 2000; trial++) {
+        const char *ov[6];
+        size_t nov = 1 + gsl_rng_uniform_int(rng, 6);
+        for (size_t k = 0; k < nov; k++) {
+            const double u = gsl_rng_uniform_pos(rng);
+            switch (gsl_rng_uniform_int(rng, 6)) {
+            case 0:
+                snprintf(sets[k], sizeof sets[k], "%s=%.17g",
+                         reals[gsl_rng_uniform_int(rng, 11)], 1e-3 + 1e3 * u * u);
+                break;
+            case 1:
+                snprintf(sets[k], sizeof sets[k], "%s=%.17g", unit[gsl_rng_uniform_int(rng, 2)],
+                         u);
+                break;
+            case 2:
+                snprintf(sets[k], sizeof sets[k], "%s=%.17g",
+                         finite[gsl_rng_uniform_int(rng, 3)], 20.0 * u - 10.0);
+                break;
+            case 3:
+                snprintf(sets[k], sizeof sets[k], "%s=%.17g -0 %.17g",
+                         vectors[gsl_rng_uniform_int(rng, 2)], u - 0.5, 1.0 / 3.0 + u);
+                break;
+            case 4:
+                snprintf(sets[k], sizeof sets[k], "%s=%lu", counts[gsl_rng_uniform_int(rng, 5)],
+                         2 + gsl_rng_uniform_int(rng, 4000000000UL));
+                break;
+            default:
+                snprintf(sets[k], sizeof sets[k], "%s", words[gsl_rng_uniform_int(rng, 9)]);
+            }
+            ov[k] = sets[k];
+        }
+        sim_scene s;
+        char msg[1024];
+        const char *base = bases[gsl_rng_uniform_int(rng, 4)];
+        if (vfy_scene_parse(base, "random.ini", ov, nov, &s, msg, sizeof msg) != SIM_OK)
+            continue;
+        assert_round_trip(&s);
+        accepted++;
+    }
+    gsl_rng_free(rng);
+    print_message("%zu random valid scenes went round the writer\n", accepted);
+    assert_true(accepted >= 500);
+
+    sim_scene a, b;
+    char msg[256], key[64];
+    assert_int_equal(vfy_scene_parse(bases[1], "a.ini", NULL, 0, &a, msg, sizeof msg), SIM_OK);
+    b = a;
+    assert_false(vfy_scene_differs(&a, &b, key, sizeof key));
+    b.collisions.restitution = nextafter(1.0, 0.0);
+    assert_true(vfy_scene_differs(&a, &b, key, sizeof key));
+    assert_string_equal(key, "collisions.restitution");
+    b = a;
+    b.steady.present = 0;
+    assert_true(vfy_scene_differs(&a, &b, key, sizeof key));
+    assert_string_equal(key, "[steady]");
 }
 
 /* ---- traps: status and the exact message ------------------------------- */
@@ -929,6 +1067,8 @@ int main(void)
         cmocka_unit_test(test_format_error),
         cmocka_unit_test(test_grw_ex3_file),
         cmocka_unit_test(test_all_scene_files),
+        cmocka_unit_test(test_write_shipped_scenes),
+        cmocka_unit_test(test_write_random_scenes),
     };
     const struct CMUnitTest trap[] = {
         cmocka_unit_test(trap_unknown_key),

@@ -804,3 +804,110 @@ void vfy_scene_format_error(const sim_scene *scene, const sim_error *err, char *
     else
         snprintf(msg, msglen, "%s:%d: %s: %s", file, line, err->key, err->msg);
 }
+
+/* ---- scenes to text (issue 14: the resolved scene a solver reads) ----- */
+
+/* The bytes of key d's field in s, and their count. */
+static size_t field_of(const key_desc *d, const sim_scene *s, const char **field)
+{
+    *field = (const char *)s + d->offset;
+    switch (d->kind) {
+    case K_TEXT:
+        return strlen(*field) + 1;
+    case K_REAL:
+        return sizeof(double);
+    case K_VEC3:
+        return 3 * sizeof(double);
+    case K_SIZE:
+        return sizeof(size_t);
+    case K_U64:
+        return sizeof(uint64_t);
+    case K_WORD:
+        return sizeof(int);
+    }
+    return 0;
+}
+
+static int section_present(const sim_scene *s, int section)
+{
+    return !sections[section].has_present
+           || *(const int *)((const char *)s + sections[section].present);
+}
+
+/* Whether key d of s was set or differs from its default (so it is written). */
+static int key_written(const key_desc *d, const sim_scene *s, const sim_scene *def)
+{
+    char full[64];
+    snprintf(full, sizeof full, "%s.%s", sections[d->section].name, d->name);
+    const char *a, *b;
+    size_t na = field_of(d, s, &a), nb = field_of(d, def, &b);
+    return is_set(s, full) || na != nb || memcmp(a, b, na) != 0;
+}
+
+static void write_value(FILE *f, const key_desc *d, const sim_scene *s)
+{
+    const char *field = (const char *)s + d->offset;
+    switch (d->kind) {
+    case K_TEXT:
+        fputs(field, f);
+        break;
+    case K_REAL:
+        fprintf(f, "%.17g", *(const double *)field);
+        break;
+    case K_VEC3: {
+        const double *v = (const double *)field;
+        fprintf(f, "%.17g %.17g %.17g", v[0], v[1], v[2]);
+        break;
+    }
+    case K_SIZE:
+        fprintf(f, "%zu", *(const size_t *)field);
+        break;
+    case K_U64:
+        fprintf(f, "%llu", (unsigned long long)*(const uint64_t *)field);
+        break;
+    case K_WORD:
+        for (const word_desc *w = d->words; w->word; w++)
+            if (w->value == *(const int *)field) {
+                fputs(w->word, f);
+                break;
+            }
+        break;
+    }
+}
+
+int vfy_scene_write(FILE *f, const sim_scene *s)
+{
+    sim_scene def;
+    sim_scene_defaults(&def);
+    for (int section = 0; section < (int)NSECTIONS; section++) {
+        if (!section_present(s, section))
+            continue;
+        fprintf(f, "%s[%s]\n", section ? "\n" : "", sections[section].name);
+        for (size_t i = 0; i < NKEYS; i++) {
+            if (keys[i].section != section || !key_written(&keys[i], s, &def))
+                continue;
+            fprintf(f, "%s = ", keys[i].name);
+            write_value(f, &keys[i], s);
+            fputc('\n', f);
+        }
+    }
+    return ferror(f) ? -1 : 0;
+}
+
+int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t keylen)
+{
+    for (int section = 0; section < (int)NSECTIONS; section++)
+        if (section_present(a, section) != section_present(b, section)) {
+            snprintf(key, keylen, "[%s]", sections[section].name);
+            return 1;
+        }
+    for (size_t i = 0; i < NKEYS; i++) {
+        const char *fa, *fb;
+        size_t na = field_of(&keys[i], a, &fa), nb = field_of(&keys[i], b, &fb);
+        if (na != nb || memcmp(fa, fb, na) != 0) {
+            snprintf(key, keylen, "%s.%s", sections[keys[i].section].name, keys[i].name);
+            return 1;
+        }
+    }
+    return 0;
+}

@@ -40,6 +40,7 @@
 #define GDSMC_VFY_SCENE_INI_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "error.h"
 #include "scene.h"
@@ -63,5 +64,18 @@ sim_status vfy_scene_parse(const char *text, const char *name, const char *const
  * or "FILE: message" when err->key is empty. */
 void vfy_scene_format_error(const sim_scene *scene, const sim_error *err, char *msg,
                             size_t msglen);
+
+/* Write scene s as canonical INI text: the sections present ([scene] and
+ * [particles] always), in the table's order, and in each the keys that were
+ * set or differ from their defaults (sim_scene_defaults), numbers with 17
+ * significant digits, so that parsing the text gives the same scene (the
+ * same value for every key; vfy_scene_differs finds none).  Returns 0, or -1
+ * when f reports an error. */
+int vfy_scene_write(FILE *f, const sim_scene *s);
+
+/* Whether scenes a and b differ in a section's presence or a key's value;
+ * if so, key (keylen bytes) names the first: "[shear]" or "particles.n".
+ * Where the scenes came from (file, lines) is not compared. */
+int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t keylen);
 
 #endif
