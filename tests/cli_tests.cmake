@@ -41,6 +41,13 @@ gdsmc_add_cli_test(cli_run_small 0
                    "\nt,T,T_ci,T_raw,T_raw_ci,ux,ux_ci[^\n]*\n0,(0\\.[6-9]|1\\.[0-3])[0-9]*,.*\n8,[^\n]*\n$"
                    run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=20
                    --quiet)
+# The solver protocol's result file (verify/result.h): the header lines, every
+# observable with its sample variance, one row per output time (t = 0, 4, 8),
+# full precision, and nothing on standard output.
+gdsmc_add_cli_test(cli_run_result 0
+                   "^# gdsmc-result 1\n# solver = gdsmc [0-9.]+ \\(built-in engine\\)\n# n = 8\n# ensembles = 20\n# cpu_seconds = [0-9.e+-]+\n# events = [1-9][0-9]*\n# violations = 0\nt,T,T_var,T_raw,T_raw_var,ux,ux_var,[^\n]*,a2,a2_var,a3,a3_var\n0,[01]\\.[0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][^\n]*\n4,[^\n]*\n8,[^\n]*\n$"
+                   run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=20
+                   --set scene.outputs=3 --result /dev/stdout --quiet)
 
 # Byte-identical output for 1 and 2 threads (hard spheres with heating: the
 # majorant, fictitious collisions and Brownian catch-ups all take part).

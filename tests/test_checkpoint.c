@@ -1,5 +1,7 @@
 /* Checkpoints (verify/checkpoint.h): a saved result comes back bit for bit;
- * a checkpoint of another scene, or a damaged one, is never used. */
+ * a checkpoint of another scene, or a damaged one, is never used.  And the
+ * solver protocol's result file (verify/result.h), the other way a result
+ * is written down. */
 #include "test_util.h"
 
 #include <stdlib.h>
@@ -7,6 +9,8 @@
 #include <unistd.h>
 
 #include "checkpoint.h"
+#include "observe.h"
+#include "result.h"
 
 static char dir[64];
 
@@ -54,6 +58,52 @@ static void fill(sim_ensemble_result *r, const sim_scene *s)
     r->cpu_seconds = 1.2345678901234567;
     r->wall_seconds = 0.1;
     r->threads = 2;
+}
+
+/* The solver protocol's result file (verify/result.h) carries every number
+ * exactly: the means as they are, the population variances as sample
+ * variances (times N/(N - 1)), the steady quantities in their own section. */
+static void test_result_file(void **state)
+{
+    (void)state;
+    sim_scene s = small_scene();
+    sim_ensemble_result a;
+    fill(&a, &s);
+    a.nsteady = 2;   /* the last two numbers stand for steady T and a2 */
+    const size_t rows = a.outputs * a.observables;
+    a.steady_mean = a.mean + rows - 2;
+    a.steady_var = a.var + rows - 2;
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    assert_non_null(f);
+    assert_int_equal(vfy_result_write(f, "test solver 1.0", &a), 0);
+    assert_int_equal(fclose(f), 0);
+    assert_non_null(strstr(text, "# gdsmc-result 1\n# solver = test solver 1.0\n# n = 8\n"
+                                 "# ensembles = 5\n# cpu_seconds = 1.2345678901234567\n"
+                                 "# events = 12345678901234\n# violations = 0\n"
+                                 "t,T,T_var,T_raw,T_raw_var,"));
+    const double N = (double)a.ensembles;
+    char *line = strstr(text, "\n0,");
+    for (size_t m = 0; m < a.outputs; m++) {
+        assert_non_null(line);
+        char *p = line + 1;
+        assert_true(strtod(p, &p) == a.t[m]);
+        for (int k = 0; k < SIM_OBS_BASE; k++) {
+            assert_int_equal(*p++, ',');
+            assert_true(strtod(p, &p) == sim_result_mean(&a, m, k));
+            assert_int_equal(*p++, ',');
+            assert_true(strtod(p, &p) == sim_result_var(&a, m, k) * N / (N - 1.0));
+        }
+        assert_int_equal(*p, '\n');
+        line = p;
+    }
+    char want[200];
+    snprintf(want, sizeof want, "\n# steady\nname,mean,var\nT,%.17g,%.17g\na2,", a.steady_mean[0],
+             a.steady_var[0] * N / (N - 1.0));
+    assert_non_null(strstr(text, want));
+    free(text);
+    sim_ensemble_result_free(&a);
 }
 
 static void test_round_trip_is_exact(void **state)
@@ -159,6 +209,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip_is_exact),
+        cmocka_unit_test(test_result_file),
         cmocka_unit_test(test_other_scene_not_used),
         cmocka_unit_test(test_damaged_not_used),
         cmocka_unit_test(test_unwritable_dir_is_an_error),

@@ -17,6 +17,7 @@
 #include "ensemble.h"
 #include "scene_ini.h"
 #include "references.h"
+#include "result.h"
 #include "scene_refs.h"
 #include "sonine.h"
 #include "table.h"
@@ -44,7 +45,7 @@ static const char usage_main[] =
     "exit status: 0 success, 1 a verification check failed, 2 bad input or error.\n";
 
 static const char usage_run[] =
-    "usage: gdsmc run SCENE [--set SECTION.KEY=VALUE]... [--out FILE.csv]\n"
+    "usage: gdsmc run SCENE [--set SECTION.KEY=VALUE]... [--out FILE.csv] [--result FILE]\n"
     "\n"
     "Simulate the scene's N ensembles of n particles and write one CSV row per\n"
     "output time: t, then for each observable its ensemble mean NAME and its\n"
@@ -54,7 +55,9 @@ static const char usage_run[] =
     "version, scene, seed and run counters.\n"
     "\n"
     "  --set S.K=V   override a scene key (same checks as the file), repeatable\n"
-    "  --out FILE    write the CSV to FILE (default: standard output)\n"
+    "  --out FILE    write the CSV to FILE (default: standard output, unless --result)\n"
+    "  --result FILE write the solver protocol's result file (docs/solver-protocol.md):\n"
+    "                every observable's mean and sample variance, 17 digits\n"
     "  --quiet       no progress or summary on standard error\n"
     "\n"
     "Threads: OMP_NUM_THREADS; the numbers do not depend on it.\n";
@@ -170,6 +173,7 @@ static const char usage_sonine[] =
  * or 0). */
 typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
+    const char *result;                      /* run: a solver-protocol result file */
     const char *alpha, *d;                   /* sonine */
     const char *md, *max_n, *seconds;        /* bench */
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
@@ -189,6 +193,7 @@ typedef struct option_spec {
 static const option_spec options[] = {
     {"--out", "run reference verify sonine bench", OPT_VALUE, offsetof(args, out)},
     {"--set", "run reference verify", OPT_SET, 0},
+    {"--result", "run", OPT_VALUE, offsetof(args, result)},
     {"--quiet", "run reference verify", OPT_FLAG, offsetof(args, quiet)},
     {"--list", "reference verify", OPT_FLAG, offsetof(args, list)},
     {"--suite", "verify", OPT_VALUE, offsetof(args, suite)},
@@ -353,6 +358,18 @@ static int load_scene(const char *cmd, const args *a, sim_scene *scene)
     return EXIT_OK;
 }
 
+/* The run's summary line on standard error (unless --quiet). */
+static void print_summary(const args *a, const sim_ensemble_result *res)
+{
+    if (!a->quiet)
+        fprintf(stderr, "gdsmc run: %zu ensembles of %zu particles, %llu candidate events "
+                "(%llu collisions, %llu majorant violations), %.2f s CPU, %.2f s wall on %d "
+                "threads\n", res->ensembles, res->n, (unsigned long long)res->counts.candidates,
+                (unsigned long long)res->counts.collisions,
+                (unsigned long long)res->counts.violations, res->cpu_seconds,
+                res->wall_seconds, res->threads);
+}
+
 static int cmd_run(int argc, char **argv)
 {
     args a;
@@ -375,7 +392,7 @@ static int cmd_run(int argc, char **argv)
     char effects[64];
     snprintf(effects, sizeof effects, "%s", sim_engine_effects(engine));
     sim_engine_free(engine);
-    if ((rc = probe_out("run", a.out)) != EXIT_OK)
+    if ((rc = probe_out("run", a.out)) != EXIT_OK || (rc = probe_out("run", a.result)) != EXIT_OK)
         return rc;
 
     vfy_options o = {.progress = a.quiet ? NULL : stderr};
@@ -389,6 +406,19 @@ static int cmd_run(int argc, char **argv)
         return status == SIM_ECANCELED ? EXIT_STOPPED : EXIT_BAD_INPUT;
     }
 
+    if (a.result != NULL) {
+        char tmp[1100], solver[64];
+        snprintf(solver, sizeof solver, "gdsmc %s (built-in engine)", GDSMC_VERSION);
+        FILE *f = open_out("run", a.result, tmp, sizeof tmp);
+        if (f != NULL)
+            vfy_result_write(f, solver, &res);
+        rc = f ? close_out("run", f, a.result, tmp) : EXIT_BAD_INPUT;
+        if (rc != EXIT_OK || a.out == NULL) {
+            print_summary(&a, &res);
+            sim_ensemble_result_free(&res);
+            return rc;
+        }
+    }
     char tmp[1100];
     FILE *f = open_out("run", a.out, tmp, sizeof tmp);
     if (f == NULL) {
@@ -411,13 +441,7 @@ static int cmd_run(int argc, char **argv)
             fprintf(f, ",%.12g,%.6g", sim_result_mean(&res, m, k), sim_result_ci(&res, m, k));
         fputc('\n', f);
     }
-    if (!a.quiet)
-        fprintf(stderr, "gdsmc run: %zu ensembles of %zu particles, %llu candidate events "
-                "(%llu collisions, %llu majorant violations), %.2f s CPU, %.2f s wall on %d "
-                "threads\n", res.ensembles, res.n, (unsigned long long)res.counts.candidates,
-                (unsigned long long)res.counts.collisions,
-                (unsigned long long)res.counts.violations, res.cpu_seconds, res.wall_seconds,
-                res.threads);
+    print_summary(&a, &res);
     sim_ensemble_result_free(&res);
     return close_out("run", f, a.out, tmp);
 }
