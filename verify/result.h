@@ -25,8 +25,18 @@
 #include <stdio.h>
 
 #include "ensemble.h"
+#include "observe.h"
+#include "scene.h"
 
 #define VFY_RESULT_VERSION 1
+
+/* What a result file reported beyond the required n and ensembles. */
+typedef struct vfy_result_info {
+    char solver[256];                /* the "# solver = " line, or "" */
+    int has_cpu, has_events, has_violations;
+    unsigned char reported[SIM_OBS_BASE];  /* observable k had a column */
+    size_t steady_reported;          /* steady quantities the file gave */
+} vfy_result_info;
 
 /* Write res, a simulation by `solver` (free text, one line), as a
  * version 1 result file: every base observable at every output time, the
@@ -35,5 +45,28 @@
  * (times N/(N - 1); 0 for N = 1).  Returns 0, or -1 when f reports an
  * error. */
 int vfy_result_write(FILE *f, const char *solver, const sim_ensemble_result *res);
+
+/* Read the result file at path for scene (its output times, n, N and steady
+ * quantities) into res: the means as reported, the variances as the
+ * engine's population variances (times (N - 1)/N) and the confidence
+ * half-widths 3.2 sqrt(var/N) from them; an observable or steady quantity the
+ * file does not report is NaN (info says which were).  Refuses, with SIM_EIO
+ * for a file that cannot be read and SIM_EINVAL otherwise, a message naming
+ * the file, line and column, and res freed: an empty file; a first line
+ * other than "# gdsmc-result 1"; n or ensembles missing or unlike the
+ * scene's; a header without t first, with an unknown or repeated
+ * observable, or a NAME without NAME_var after it; a row with another
+ * number of fields, a field that is not a number, NaN, an infinity, a
+ * negative variance, or a t unlike the scene's output time (relative 1e-9);
+ * too few or too many rows; an unknown or repeated steady quantity;
+ * anything after the rows but the steady section. */
+sim_status vfy_result_read(const char *path, const sim_scene *scene, sim_ensemble_result *res,
+                           vfy_result_info *info, char *msg, size_t msglen);
+
+/* The same from text in memory (len bytes, NUL bytes refused); name stands
+ * for the file in messages (tests and the fuzzer). */
+sim_status vfy_result_parse(const char *text, size_t len, const char *name,
+                            const sim_scene *scene, sim_ensemble_result *res,
+                            vfy_result_info *info, char *msg, size_t msglen);
 
 #endif
