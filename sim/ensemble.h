@@ -25,6 +25,9 @@
 
 #define SIM_LAMBDA_P 3.2
 
+#define SIM_MISSING_EVENTS 1u
+#define SIM_MISSING_VIOLATIONS 2u
+
 typedef struct sim_ensemble_result {
     size_t outputs;      /* rows */
     size_t ensembles;    /* N */
@@ -39,6 +42,8 @@ typedef struct sim_ensemble_result {
     double *steady_var;
     double *steady_ci;
     sim_counts counts;   /* summed over ensembles */
+    unsigned missing;    /* counts a result from elsewhere (an external solver) lacks:
+                            SIM_MISSING_EVENTS, SIM_MISSING_VIOLATIONS; 0 from the engine */
     double cpu_seconds;  /* process CPU time, all threads (and MPI ranks) */
     double wall_seconds; /* with MPI, the slowest rank's */
     int threads;         /* OpenMP threads used (summed over MPI ranks) */

@@ -66,6 +66,17 @@ add_test(NAME cli_reports_provenance
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/run_provenance.cmake)
 set_tests_properties(cli_reports_provenance PROPERTIES TIMEOUT 300 LABELS regression)
 
+# The built-in engine through the solver protocol gives the built-in run's
+# verdicts and tables (tests/run_solver_conformance.cmake).
+find_program(PYTHON3 python3)
+add_test(NAME cli_solver_conformance
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DPYTHON=${PYTHON3}
+                 -DCOMPARE=${PROJECT_SOURCE_DIR}/tools/compare-reports
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/conformance
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/run_solver_conformance.cmake)
+set_tests_properties(cli_solver_conformance PROPERTIES TIMEOUT 300 LABELS regression
+                     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+
 # gdsmc sonine (SPEC §5, §9): paper C's Sonine values as CSV name,value.  Bad
 # input: the message and nothing else (anchored: standard output comes first).
 gdsmc_add_cli_test(cli_sonine_help 0 "usage: gdsmc sonine --alpha A" sonine --help)

@@ -9,6 +9,7 @@
 #include "engine.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
+#include "solver.h"
 #include "table.h"
 
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
@@ -256,6 +257,21 @@ static void print_progress(size_t done, size_t total, void *ctx)
     fflush(p->out);
 }
 
+/* A finished simulation: its checkpoint, and the tests' countdown. */
+static sim_status finish_simulation(const sim_scene *scene, const vfy_options *o,
+                                    const char *label, const sim_ensemble_result *res,
+                                    char *msg, size_t msglen)
+{
+    sim_status status;
+    if (o->checkpoint_dir
+        && (status = vfy_checkpoint_save(o->checkpoint_dir, label, scene, res, msg, msglen))
+               != SIM_OK)
+        return status;
+    if (o->stop_countdown && *o->stop_countdown > 0 && --*o->stop_countdown == 0)
+        sim_ensemble_request_stop();
+    return SIM_OK;
+}
+
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen)
 {
@@ -267,6 +283,17 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
     sim_engine *engine = NULL;
     sim_error err = {{0}, {0}};
     memset(res, 0, sizeof *res);
+    if (o->solver != NULL) {
+        vfy_result_info info;
+        if (o->progress)
+            fprintf(o->progress, "   %s: running the solver\n", label);
+        sim_status status = vfy_solver_run(o->solver, scene, label, res, &info, msg, msglen);
+        if (status != SIM_OK)
+            return status;
+        res->missing = (info.has_events ? 0u : SIM_MISSING_EVENTS)
+                       | (info.has_violations ? 0u : SIM_MISSING_VIOLATIONS);
+        return finish_simulation(scene, o, label, res, msg, msglen);
+    }
     sim_status status = sim_engine_create(scene, &engine, &err);
     if (status == SIM_OK) {
         progress_state p = {o->progress, label, wall_now(), wall_now()};
@@ -281,13 +308,12 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
         vfy_scene_format_error(scene, &err, msg, msglen);
         return status;
     }
-    if (o->checkpoint_dir
-        && (status = vfy_checkpoint_save(o->checkpoint_dir, label, scene, res, msg, msglen))
-               != SIM_OK)
-        return status;
-    if (o->stop_countdown && *o->stop_countdown > 0 && --*o->stop_countdown == 0)
-        sim_ensemble_request_stop();
-    return SIM_OK;
+    return finish_simulation(scene, o, label, res, msg, msglen);
+}
+
+int vfy_external(const vfy_options *o)
+{
+    return o->solver != NULL;
 }
 
 double vfy_scene_step(const sim_scene *s)

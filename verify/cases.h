@@ -32,6 +32,8 @@ typedef struct vfy_options {
     const char *checkpoint_dir;        /* save every finished simulation there
                                           (checkpoint.h), or NULL */
     int resume;                        /* reuse the matching checkpoints */
+    const struct vfy_solver *solver;   /* an external solver (solver.h: --solver), or
+                                          NULL for the built-in engine */
     size_t *stop_countdown;            /* if not NULL and > 0: counts finished
                                           simulations down and requests a stop at 0, as
                                           SIGINT would (a test's deterministic interrupt) */
@@ -89,6 +91,10 @@ sim_status vfy_require_references(const sim_scene *scene, const char *const *nam
  * SIM_ECANCELED when a stop was requested. */
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen);
+
+/* Whether the simulations come from an external solver (o->solver), which
+ * may leave quantities unreported (NaN in the result). */
+int vfy_external(const vfy_options *o);
 
 /* The time step the engine uses for scene s: 0 for the jump scheme or if
  * it cannot build. */

@@ -20,6 +20,11 @@ static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
     return h;
 }
 
+uint64_t vfy_text_hash(const char *text)
+{
+    return fnv1a(UINT64_C(0xcbf29ce484222325), text, strlen(text));
+}
+
 uint64_t vfy_checkpoint_key(const sim_scene *s)
 {
     /* The scene's bytes without what does not change the numbers.  Scenes
@@ -72,8 +77,9 @@ sim_status vfy_checkpoint_save(const char *dir, const char *label, const sim_sce
             key, label);
     fprintf(f, "sizes %zu %zu %zu %zu %zu\n", res->outputs, res->observables, res->ensembles,
             res->n, res->nsteady);
-    fprintf(f, "counts %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 "\n",
-            c->candidates, c->collisions, c->background, c->violations, c->normals);
+    fprintf(f, "counts %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %u\n",
+            c->candidates, c->collisions, c->background, c->violations, c->normals,
+            res->missing);
     fprintf(f, "seconds %a %a %d\n", res->cpu_seconds, res->wall_seconds, res->threads);
     write_array(f, "t", res->t, res->outputs);
     write_array(f, "mean", res->mean, stats_len(res));
@@ -117,9 +123,9 @@ int vfy_checkpoint_load(const char *dir, const sim_scene *s, sim_ensemble_result
              && res->outputs == s->outputs && res->observables >= SIM_OBS_BASE
              && res->observables < 1000000 && res->ensembles == s->particles.ensembles
              && res->n == s->particles.n && res->nsteady < 1000000
-             && fscanf(f, "counts %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " ",
-                       &c->candidates, &c->collisions, &c->background, &c->violations,
-                       &c->normals) == 5
+             && fscanf(f, "counts %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64
+                          " %u ", &c->candidates, &c->collisions, &c->background,
+                       &c->violations, &c->normals, &res->missing) == 6
              && fscanf(f, "seconds %la %la %d", &res->cpu_seconds, &res->wall_seconds,
                        &res->threads) == 3;
     const size_t len = ok ? stats_len(res) : 0;

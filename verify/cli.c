@@ -19,6 +19,8 @@
 #include "references.h"
 #include "result.h"
 #include "scene_refs.h"
+#include "checkpoint.h"
+#include "solver.h"
 #include "sonine.h"
 #include "table.h"
 
@@ -83,7 +85,8 @@ static const char usage_reference[] =
 static const char usage_verify[] =
     "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME] [--out DIR]\n"
     "                    [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
-    "                    [--list]\n"
+    "                    [--solver 'COMMAND {scene} {out}'] [--solver-timeout S]\n"
+    "                    [--resume] [--list]\n"
     "\n"
     "Run solver against reference and write DIR/<case>.csv, DIR/<case>.md,\n"
     "DIR/<case>-curves.csv and a gnuplot figure DIR/<case>.png (when gnuplot is\n"
@@ -104,6 +107,14 @@ static const char usage_verify[] =
     "  --solver-set S.K=V  override a key for the simulation only: a deliberately\n"
     "               wrong solver, which the checks must catch (e.g.\n"
     "               --solver-set collisions.restitution=0.45)\n"
+    "  --solver 'COMMAND ARGS'  verify another program instead of the built-in\n"
+    "               engine: for every simulation gdsmc writes the scene as INI,\n"
+    "               runs COMMAND with {scene} and {out} replaced by the scene's and\n"
+    "               the result's paths (no shell), and reads the result file\n"
+    "               (docs/solver-protocol.md); a check on a quantity the solver\n"
+    "               does not report is a SKIP\n"
+    "  --solver-timeout S  seconds one solver run may take (default 3600); then\n"
+    "               it is killed and the case stops with an error\n"
     "  --resume     take every simulation already finished by an earlier run with\n"
     "               the same options from DIR/.checkpoint instead of running it\n"
     "               again; the tables come out byte-identical to an uninterrupted\n"
@@ -174,6 +185,7 @@ static const char usage_sonine[] =
 typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
     const char *result;                      /* run: a solver-protocol result file */
+    const char *solver, *solver_timeout;     /* verify: an external solver */
     const char *alpha, *d;                   /* sonine */
     const char *md, *max_n, *seconds;        /* bench */
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
@@ -201,6 +213,8 @@ static const option_spec options[] = {
     {"--scenes", "verify", OPT_VALUE, offsetof(args, scenes)},
     {"--solver-set", "verify", OPT_SOLVER_SET, 0},
     {"--resume", "verify", OPT_FLAG, offsetof(args, resume)},
+    {"--solver", "verify", OPT_VALUE, offsetof(args, solver)},
+    {"--solver-timeout", "verify", OPT_VALUE, offsetof(args, solver_timeout)},
     {"--alpha", "sonine", OPT_VALUE, offsetof(args, alpha)},
     {"--d", "sonine", OPT_VALUE, offsetof(args, d)},
     {"--md", "bench", OPT_VALUE, offsetof(args, md)},
@@ -642,8 +656,29 @@ static int cmd_verify(int argc, char **argv)
         .progress = a.quiet ? NULL : stderr,
         .resume = a.resume,
     };
-    char checkpoints[1100];
+    char checkpoints[1100], work[1100];
     snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint", o.out_dir);
+    vfy_solver solver = {.command = a.solver, .timeout = 3600.0, .work_dir = work};
+    if (a.solver_timeout != NULL) {
+        char *end;
+        solver.timeout = strtod(a.solver_timeout, &end);
+        if (end == a.solver_timeout || *end || !(solver.timeout > 0 && solver.timeout <= 1e6))
+            return bad_usage("verify", "--solver-timeout '%s': allowed 0 < S <= 1e6 seconds",
+                             a.solver_timeout);
+    }
+    if (a.solver != NULL) {
+        char *words[64], buf[4096], why[128];
+        if (vfy_solver_split(a.solver, words, 64, buf, sizeof buf, why, sizeof why) < 0) {
+            char text[300];
+            snprintf(text, sizeof text, "--solver '%s': %s", a.solver, why);
+            return bad_usage("verify", "%s", text);
+        }
+        /* another solver's results are never resumed as this one's */
+        snprintf(work, sizeof work, "%s/.solver", o.out_dir);
+        snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint/solver-%016llx", o.out_dir,
+                 (unsigned long long)vfy_text_hash(a.solver));
+        o.solver = &solver;
+    }
     o.checkpoint_dir = checkpoints;
     /* For tests: behave as if SIGINT arrived after K finished simulations. */
     size_t countdown = 0;

@@ -1,0 +1,274 @@
+#include "solver.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "checkpoint.h"
+#include "scene_ini.h"
+#include "table.h"
+
+#define MAX_WORDS 64
+
+int vfy_solver_split(const char *command, char **words, size_t max, char *buf, size_t bufsize,
+                     char *msg, size_t msglen)
+{
+    size_t n = 0, used = 0;
+    const char *p = command;
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\n')
+            p++;
+        if (*p == '\0')
+            break;
+        if (n == max) {
+            snprintf(msg, msglen, "more than %zu words", max);
+            return -1;
+        }
+        words[n++] = buf + used;
+        char quote = 0;
+        for (; *p != '\0' && (quote || (*p != ' ' && *p != '\t' && *p != '\n')); p++) {
+            char c = *p;
+            if (quote == 0 && (c == '\'' || c == '"')) {
+                quote = c;
+                continue;
+            }
+            if (c == quote) {
+                quote = 0;
+                continue;
+            }
+            if (quote == '"' && c == '\\' && (p[1] == '"' || p[1] == '\\'))
+                c = *++p;
+            if (used + 2 > bufsize) {
+                snprintf(msg, msglen, "longer than %zu characters", bufsize - 2);
+                return -1;
+            }
+            buf[used++] = c;
+        }
+        if (quote) {
+            snprintf(msg, msglen, "an unterminated %s quote", quote == '"' ? "double" : "single");
+            return -1;
+        }
+        buf[used++] = '\0';
+    }
+    if (n == 0)
+        snprintf(msg, msglen, "no command");
+    return n ? (int)n : -1;
+}
+
+/* word with every {scene} and {out} replaced, in dst; -1 if it does not fit. */
+static int substitute(const char *word, const char *scene, const char *out, char *dst,
+                      size_t cap)
+{
+    size_t used = 0;
+    while (*word) {
+        const char *with = NULL;
+        size_t skip = 1;
+        if (strncmp(word, "{scene}", 7) == 0)
+            with = scene, skip = 7;
+        else if (strncmp(word, "{out}", 5) == 0)
+            with = out, skip = 5;
+        size_t len = with ? strlen(with) : 1;
+        if (used + len + 1 > cap)
+            return -1;
+        memcpy(dst + used, with ? with : word, len);
+        used += len;
+        word += skip;
+    }
+    dst[used] = '\0';
+    return 0;
+}
+
+/* The last lines of the log (at most about 600 characters), indented. */
+static void log_tail(const char *path, char *buf, size_t cap)
+{
+    buf[0] = '\0';
+    FILE *f = fopen(path, "rb");
+    if (f == NULL)
+        return;
+    char text[601];
+    fseek(f, 0, SEEK_END);
+    long size = ftell(f);
+    fseek(f, size > 600 ? size - 600 : 0, SEEK_SET);
+    size_t len = fread(text, 1, 600, f);
+    fclose(f);
+    text[len] = '\0';
+    while (len > 0 && (text[len - 1] == '\n' || text[len - 1] == ' '))
+        text[--len] = '\0';
+    const char *start = text;
+    int lines = 0;
+    for (size_t i = len; i-- > 0;)
+        if (text[i] == '\n' && ++lines == 5) {
+            start = text + i + 1;
+            break;
+        }
+    if (size > 600 && start == text) {   /* a cut first line */
+        const char *nl = strchr(text, '\n');
+        start = nl ? nl + 1 : text;
+    }
+    size_t used = 0;
+    for (const char *p = start; *p && used + 8 < cap; p++) {
+        if (p == start || p[-1] == '\n')
+            used += (size_t)snprintf(buf + used, cap - used, "\n    ");
+        if (*p != '\n' && used + 1 < cap)
+            buf[used++] = *p;
+    }
+    buf[used < cap ? used : cap - 1] = '\0';
+}
+
+static double wall_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Start argv with its output to log: the child's pid, or -1 with errno set
+ * (the exec's own errno when the command could not be run). */
+static pid_t start(char **argv, const char *log)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return -1;
+    fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+    pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        return -1;
+    }
+    if (pid == 0) {   /* the child: its own process group, output to the log */
+        close(fds[0]);
+        setpgid(0, 0);
+        int in = open("/dev/null", O_RDONLY), out = open(log, O_WRONLY | O_CREAT | O_TRUNC,
+                                                          0644);
+        if (in >= 0)
+            dup2(in, 0);
+        if (out >= 0) {
+            dup2(out, 1);
+            dup2(out, 2);
+        }
+        execvp(argv[0], argv);
+        int e = errno;
+        ssize_t ignored = write(fds[1], &e, sizeof e);
+        (void)ignored;
+        _exit(127);
+    }
+    close(fds[1]);
+    int e = 0;
+    ssize_t got = read(fds[0], &e, sizeof e);   /* 0 bytes: the exec happened */
+    close(fds[0]);
+    if (got == (ssize_t)sizeof e) {
+        waitpid(pid, NULL, 0);
+        errno = e;
+        return -1;
+    }
+    return pid;
+}
+
+sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, const char *label,
+                          sim_ensemble_result *res, vfy_result_info *info, char *msg,
+                          size_t msglen)
+{
+    memset(res, 0, sizeof *res);
+    memset(info, 0, sizeof *info);
+    char scene_path[1100], out_path[1100], log_path[1100], why[200];
+    const uint64_t key = vfy_checkpoint_key(scene);
+    snprintf(scene_path, sizeof scene_path, "%s/%016" PRIx64 ".ini", solver->work_dir, key);
+    snprintf(out_path, sizeof out_path, "%s/%016" PRIx64 ".result", solver->work_dir, key);
+    snprintf(log_path, sizeof log_path, "%s/%016" PRIx64 ".log", solver->work_dir, key);
+
+    char *words[MAX_WORDS + 1], buf[4096], expanded[MAX_WORDS][1200];
+    int n = vfy_solver_split(solver->command, words, MAX_WORDS, buf, sizeof buf, why,
+                             sizeof why);
+    if (n < 0) {
+        snprintf(msg, msglen, "--solver '%s': %s", solver->command, why);
+        return SIM_EINVAL;
+    }
+    for (int k = 0; k < n; k++) {
+        if (substitute(words[k], scene_path, out_path, expanded[k], sizeof expanded[k]) != 0) {
+            snprintf(msg, msglen, "--solver '%s': word %d is too long with the paths in it",
+                     solver->command, k + 1);
+            return SIM_EINVAL;
+        }
+        words[k] = expanded[k];
+    }
+    words[n] = NULL;
+
+    FILE *f = vfy_ensure_dir(solver->work_dir) == 0 ? fopen(scene_path, "w") : NULL;
+    int written = f != NULL && vfy_scene_write(f, scene) == 0;
+    if (f == NULL || fclose(f) != 0 || !written) {
+        snprintf(msg, msglen, "%s: cannot write: %s", scene_path, strerror(errno));
+        return SIM_EIO;
+    }
+    unlink(out_path);   /* a result from before must not pass for this run's */
+
+    const double wall0 = wall_now();
+    pid_t pid = start(words, log_path);
+    if (pid < 0) {
+        snprintf(msg, msglen, "%s: the solver cannot be started: '%s': %s (--solver '%s')",
+                 label, words[0], strerror(errno), solver->command);
+        return SIM_EINVAL;
+    }
+    int status = 0;
+    struct rusage ru;
+    double pause = 1e-3;
+    for (;;) {
+        pid_t done = wait4(pid, &status, WNOHANG, &ru);
+        if (done == pid)
+            break;
+        const int stop = sim_ensemble_stop_requested();
+        const int late = wall_now() - wall0 > solver->timeout;
+        if (stop || late || done < 0) {
+            kill(-pid, SIGKILL);
+            wait4(pid, &status, 0, &ru);
+            if (stop) {
+                snprintf(msg, msglen, "%s: stopped (the solver killed)", label);
+                return SIM_ECANCELED;
+            }
+            snprintf(msg, msglen, "%s: the solver took more than %g s (--solver-timeout) and was "
+                     "killed (--solver '%s')", label, solver->timeout, solver->command);
+            return SIM_EINVAL;
+        }
+        struct timespec ts = {0, (long)(pause * 1e9)};
+        nanosleep(&ts, NULL);
+        pause = fmin(2.0 * pause, 0.05);
+    }
+    const double wall = wall_now() - wall0;
+    char tail[700];
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        log_tail(log_path, tail, sizeof tail);
+        if (WIFSIGNALED(status))
+            snprintf(why, sizeof why, "was killed by signal %d (%s)", WTERMSIG(status),
+                     strsignal(WTERMSIG(status)));
+        else
+            snprintf(why, sizeof why, "exited with status %d", WEXITSTATUS(status));
+        snprintf(msg, msglen, "%s: the solver %s (--solver '%s'); the last lines of its output "
+                 "(%s):%s", label, why, solver->command, log_path,
+                 tail[0] ? tail : "\n    (none)");
+        return SIM_EINVAL;
+    }
+    struct stat st;
+    if (stat(out_path, &st) != 0) {
+        snprintf(msg, msglen, "%s: the solver exited with status 0 but wrote no result %s "
+                 "(--solver '%s')", label, out_path, solver->command);
+        return SIM_EINVAL;
+    }
+    sim_status read = vfy_result_read(out_path, scene, res, info, msg, msglen);
+    if (read != SIM_OK)
+        return read == SIM_EIO ? SIM_EINVAL : read;
+    if (!info->has_cpu)
+        res->cpu_seconds = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec
+                           + (double)ru.ru_stime.tv_sec + 1e-6 * (double)ru.ru_stime.tv_usec;
+    res->wall_seconds = wall;
+    return SIM_OK;
+}

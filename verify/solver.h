@@ -1,0 +1,47 @@
+/* An external solver behind the solver protocol (docs/solver-protocol.md):
+ * for one scene, write the resolved scene as canonical INI (scene_ini.h),
+ * run the user's command with {scene} and {out} replaced by the two paths,
+ * and read the result file it wrote (result.h).
+ *
+ * The command is split into words as a shell would split a simple command
+ * (white space separates words; '...' keeps everything literally; "..." keeps
+ * all but \" and \\), but no shell runs: `sh -c '...'` is there for a user
+ * who wants one.  {scene} and {out} may stand anywhere inside a word.  The
+ * child inherits the environment (OMP_NUM_THREADS and the rest) and the
+ * working directory; its standard output and error go to a log file beside
+ * the result, whose last lines a failure quotes.
+ */
+#ifndef GDSMC_VFY_SOLVER_H
+#define GDSMC_VFY_SOLVER_H
+
+#include <stddef.h>
+
+#include "ensemble.h"
+#include "result.h"
+#include "scene.h"
+
+typedef struct vfy_solver {
+    const char *command;   /* "python3 mysolver.py {scene} {out}" */
+    double timeout;        /* seconds a run may take (> 0), the child killed after it */
+    const char *work_dir;  /* where the scene, result and log files go (created) */
+} vfy_solver;
+
+/* Split command into at most max words (in buf, bufsize bytes; words[]
+ * point into it); the number of words, or -1 with msg saying why (an
+ * unterminated quote, too many or too long words, no words). */
+int vfy_solver_split(const char *command, char **words, size_t max, char *buf, size_t bufsize,
+                     char *msg, size_t msglen);
+
+/* Simulate scene with the solver: res as vfy_result_read fills it, its
+ * cpu_seconds the child's (and its children's) CPU time unless the result
+ * reports them, its wall_seconds the run's.  label names the run in
+ * messages.  SIM_EINVAL with a message naming the command or the file, line
+ * and column: the command not found or not executable, a non-zero exit or
+ * a signal (its last standard-error lines quoted), the time limit exceeded,
+ * a missing, empty or malformed result; SIM_ECANCELED when a stop was
+ * requested (the child killed); SIM_EIO when the files cannot be written. */
+sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, const char *label,
+                          sim_ensemble_result *res, vfy_result_info *info, char *msg,
+                          size_t msglen);
+
+#endif
