@@ -473,3 +473,33 @@ add_test(NAME cli_out_fifo
                  $<TARGET_FILE:gdsmc> ${PROJECT_SOURCE_DIR}/${S}/grw-ex3.ini
          WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(cli_out_fifo PROPERTIES TIMEOUT 60 LABELS unit)
+
+# A bad external solver (issue 14): exit 2, a message naming the command or
+# the result's file and line, nothing on standard output and no table.
+set(SB ${CMAKE_CURRENT_BINARY_DIR}/solver-bad)
+gdsmc_add_no_output_test(cli_solver_not_found 2
+    "^gdsmc verify: grw-ex4 n=64: the solver cannot be started: 'nosuch-solver': No such file or directory \\(--solver 'nosuch-solver {scene} {out}'\\)\n$"
+    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    --solver "nosuch-solver {scene} {out}")
+gdsmc_add_no_output_test(cli_solver_exit_status 2
+    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 3 \\(--solver 'sh -c \"echo boom >&2 && exit 3\"'\\); the last lines of its output \\([^\n]*/\\.solver/[0-9a-f]+\\.log\\):\n    boom\n$"
+    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    --solver "sh -c \"echo boom >&2 && exit 3\"")
+gdsmc_add_no_output_test(cli_solver_timeout 2
+    "^gdsmc verify: grw-ex4 n=64: the solver took more than 0.5 s \\(--solver-timeout\\) and was killed \\(--solver 'sleep 30'\\)\n$"
+    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    --solver "sleep 30" --solver-timeout 0.5)
+gdsmc_add_no_output_test(cli_solver_no_result 2
+    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 0 but wrote no result [^\n]*/\\.solver/[0-9a-f]+\\.result \\(--solver 'true {scene} {out}'\\)\n$"
+    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    --solver "true {scene} {out}")
+gdsmc_add_no_output_test(cli_solver_bad_result 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:1: the first line must be '# gdsmc-result 1' \\(the protocol version\\), got '\\[scene\\]'\n$"
+    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    --solver "cp {scene} {out}")
+gdsmc_add_cli_exact(cli_x_verify_solver_timeout_bad 2
+                    "gdsmc verify: --solver-timeout 'soon': allowed 0 < S <= 1e6 seconds (see gdsmc verify --help)"
+                    verify --case grw-ex4 --solver "true" --solver-timeout soon)
+gdsmc_add_cli_exact(cli_x_verify_solver_quote 2
+                    "gdsmc verify: --solver 'sh -c 'echo': an unterminated single quote (see gdsmc verify --help)"
+                    verify --case grw-ex4 --solver "sh -c 'echo")

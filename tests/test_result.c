@@ -11,6 +11,7 @@
 
 #include "result.h"
 #include "scene_ini.h"
+#include "solver.h"
 
 /* t_end = 8, 3 outputs (t = 0, 4, 8), n = 8, N = 5; with [steady] (4 bins)
  * when steady is set. */
@@ -129,6 +130,28 @@ static void test_partial_result(void **state)
     sim_ensemble_result_free(&r);
 }
 
+/* The --solver command split into words as a shell splits a simple
+ * command: quotes group, \" and \\ inside double quotes, {scene} kept. */
+static void test_split_command(void **state)
+{
+    (void)state;
+    char *w[8], buf[256], msg[128];
+    int n = vfy_solver_split("  python3 'my solver.py'  --in={scene} \"a \\\"b\\\" \\\\c\" x''y ",
+                             w, 8, buf, sizeof buf, msg, sizeof msg);
+    assert_int_equal(n, 5);
+    assert_string_equal(w[0], "python3");
+    assert_string_equal(w[1], "my solver.py");
+    assert_string_equal(w[2], "--in={scene}");
+    assert_string_equal(w[3], "a \"b\" \\c");
+    assert_string_equal(w[4], "xy");
+    assert_int_equal(vfy_solver_split("sh -c \"echo", w, 8, buf, sizeof buf, msg, sizeof msg), -1);
+    assert_string_equal(msg, "an unterminated double quote");
+    assert_int_equal(vfy_solver_split("   ", w, 8, buf, sizeof buf, msg, sizeof msg), -1);
+    assert_string_equal(msg, "no command");
+    assert_int_equal(vfy_solver_split("a b c", w, 2, buf, sizeof buf, msg, sizeof msg), -1);
+    assert_string_equal(msg, "more than 2 words");
+}
+
 /* ---- traps: each bad result, its status and exact message ------------- */
 
 static void expect(int steady, const char *text, const char *message)
@@ -221,6 +244,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip),
         cmocka_unit_test(test_partial_result),
+        cmocka_unit_test(test_split_command),
         cmocka_unit_test(trap_results),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
