@@ -503,3 +503,24 @@ gdsmc_add_cli_exact(cli_x_verify_solver_timeout_bad 2
 gdsmc_add_cli_exact(cli_x_verify_solver_quote 2
                     "gdsmc verify: --solver 'sh -c 'echo': an unterminated single quote (see gdsmc verify --help)"
                     verify --case grw-ex4 --solver "sh -c 'echo")
+
+# An independent solver in another language (examples/python, NumPy): paper
+# A's Examples 3 and 4 at quick sizes pass through the solver protocol, and
+# the same program with a deliberate error (the heating halved) fails the
+# gate.  Debian's python3, where python3-numpy installs (make deps).
+find_program(DEBIAN_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
+set(EXAMPLE "${DEBIAN_PYTHON3} examples/python/heated_maxwell.py {scene} {out}")
+foreach(ex grw-ex3 grw-ex4)
+  add_test(NAME example_python_${ex}
+           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCODE=0
+                   "-DREGEX=\nverify: [0-9]+ passed, 0 failed"
+                   "-DARGS=verify;--suite;quick;--case;${ex};--out;${CMAKE_CURRENT_BINARY_DIR}/example-${ex};--solver;${EXAMPLE}"
+                   -DWORKDIR=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/run_cli.cmake)
+  set_tests_properties(example_python_${ex} PROPERTIES TIMEOUT 600 LABELS verification)
+endforeach()
+add_test(NAME example_python_halved_heating
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCODE=1
+                 "-DREGEX=\nverify: [0-9]+ passed, [1-9][0-9]* failed"
+                 "-DARGS=verify;--suite;quick;--case;grw-ex4;--out;${CMAKE_CURRENT_BINARY_DIR}/example-halved;--solver;${EXAMPLE} --halve-heating"
+                 -DWORKDIR=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/run_cli.cmake)
+set_tests_properties(example_python_halved_heating PROPERTIES TIMEOUT 600 LABELS verification)
