@@ -524,3 +524,14 @@ add_test(NAME example_python_halved_heating
                  "-DARGS=verify;--suite;quick;--case;grw-ex4;--out;${CMAKE_CURRENT_BINARY_DIR}/example-halved;--solver;${EXAMPLE} --halve-heating"
                  -DWORKDIR=${PROJECT_SOURCE_DIR} -P ${CMAKE_CURRENT_SOURCE_DIR}/run_cli.cmake)
 set_tests_properties(example_python_halved_heating PROPERTIES TIMEOUT 600 LABELS verification)
+
+# --junit: the report parses and its counts are the verdicts' (a wrong solver:
+# failures and a skip).
+add_test(NAME cli_verify_junit
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCODE=1 -DPYTHON=${PYTHON3}
+                 -DCHECK=${CMAKE_CURRENT_SOURCE_DIR}/check_junit.py
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/junit
+                 "-DARGS=--suite;quick;--case;grw-ex3;--out;${CMAKE_CURRENT_BINARY_DIR}/junit-reports;--solver-set;collisions.restitution=0.45"
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/run_junit.cmake)
+set_tests_properties(cli_verify_junit PROPERTIES TIMEOUT 300 LABELS regression
+                     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})

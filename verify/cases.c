@@ -145,7 +145,9 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
         if (o->progress)
             fprintf(o->progress, "== %s (%s sizes): %s\n", c->name,
                     o->size == VFY_QUICK ? "quick" : "paper", c->summary);
+        r->group = c->name;
         sim_status status = vfy_run_described(c, o, r, msg, msglen);
+        r->group = NULL;
         if (status != SIM_OK)
             return status;
     }

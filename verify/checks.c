@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "ensemble.h"
+#include "table.h"
 
 void vfy_report_init(vfy_report *r, FILE *echo)
 {
@@ -40,6 +41,7 @@ static vfy_verdict record(vfy_report *r, vfy_verdict v, const char *name, const 
     }
     vfy_check *c = &r->checks[r->count++];
     c->verdict = v;
+    snprintf(c->group, sizeof c->group, "%s", r->group ? r->group : "gdsmc");
     snprintf(c->name, sizeof c->name, "%s", name);
     va_list ap;
     va_start(ap, fmt);
@@ -135,4 +137,75 @@ vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *
 void vfy_skip(vfy_report *r, const char *name, const char *reason)
 {
     record(r, VFY_SKIP, name, "%s", reason);
+}
+
+/* text with XML's five special characters escaped, and control characters
+ * (which XML 1.0 cannot hold) as spaces. */
+static void xml_text(FILE *f, const char *text)
+{
+    for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
+        switch (*p) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&apos;", f); break;
+        default: fputc(*p < 0x20 ? ' ' : *p, f);
+        }
+    }
+}
+
+/* The counts of group g's checks (all groups when g is NULL). */
+static void group_counts(const vfy_report *r, const char *g, size_t count[3])
+{
+    count[0] = count[1] = count[2] = 0;
+    for (size_t i = 0; i < r->count; i++)
+        if (g == NULL || strcmp(r->checks[i].group, g) == 0)
+            count[r->checks[i].verdict]++;
+}
+
+int vfy_report_write_junit(const vfy_report *r, const char *path, double seconds)
+{
+    char tmp[1100];
+    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
+    if (f == NULL)
+        return -1;
+    size_t all[3];
+    group_counts(r, NULL, all);
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"gdsmc verify\" "
+               "tests=\"%zu\" failures=\"%zu\" skipped=\"%zu\" time=\"%.3f\">\n",
+            r->count, all[VFY_FAIL], all[VFY_SKIP], seconds);
+    for (size_t i = 0; i < r->count; i++) {
+        const char *g = r->checks[i].group;
+        size_t first = 0;   /* a group's suite opens at its first check */
+        while (strcmp(r->checks[first].group, g) != 0)
+            first++;
+        if (first != i)
+            continue;
+        size_t n[3];
+        group_counts(r, g, n);
+        fputs("  <testsuite name=\"", f);
+        xml_text(f, g);
+        fprintf(f, "\" tests=\"%zu\" failures=\"%zu\" skipped=\"%zu\">\n", n[0] + n[1] + n[2],
+                n[VFY_FAIL], n[VFY_SKIP]);
+        for (size_t k = i; k < r->count; k++) {
+            const vfy_check *c = &r->checks[k];
+            if (strcmp(c->group, g) != 0)
+                continue;
+            fputs("    <testcase classname=\"", f);
+            xml_text(f, g);
+            fputs("\" name=\"", f);
+            xml_text(f, c->name);
+            static const char *const open[] = {"\">\n      <failure message=\"",
+                                               "\">\n      <system-out>",
+                                               "\">\n      <skipped message=\""};
+            fputs(open[c->verdict], f);
+            xml_text(f, c->detail);
+            fputs(c->verdict == VFY_PASS ? "</system-out>\n" : "\"/>\n", f);
+            fputs("    </testcase>\n", f);
+        }
+        fputs("  </testsuite>\n", f);
+    }
+    fputs("</testsuites>\n", f);
+    return vfy_file_commit(f, tmp, path, 1);
 }

@@ -16,6 +16,7 @@ typedef enum vfy_verdict { VFY_FAIL = 0, VFY_PASS = 1, VFY_SKIP = 2 } vfy_verdic
 
 typedef struct vfy_check {
     vfy_verdict verdict;
+    char group[32];   /* the report's group when it was made: the case */
     char name[96];
     char detail[320];
 } vfy_check;
@@ -25,10 +26,17 @@ typedef struct vfy_report {
     size_t count, capacity;
     size_t failed;
     FILE *echo;   /* if not NULL, each verdict is printed here as it is made */
+    const char *group;  /* the case being judged (vfy_run sets it), or NULL */
 } vfy_report;
 
 void vfy_report_init(vfy_report *r, FILE *echo);
 void vfy_report_free(vfy_report *r);
+
+/* Write the report as JUnit XML to path (a testsuite per group, a testcase
+ * per check with <failure> or <skipped> and the check's detail as message),
+ * as CI systems read it; seconds is the run's wall time.  Returns 0, or -1
+ * with errno when path cannot be written (nothing is left behind). */
+int vfy_report_write_junit(const vfy_report *r, const char *path, double seconds);
 
 /* |value / expected - 1| <= rtol: a value printed by a paper, within a band. */
 vfy_verdict vfy_check_relative(vfy_report *r, const char *name, double value, double expected,

@@ -86,7 +86,7 @@ static const char usage_verify[] =
     "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME] [--out DIR]\n"
     "                    [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
     "                    [--solver 'COMMAND {scene} {out}'] [--solver-timeout S]\n"
-    "                    [--resume] [--list]\n"
+    "                    [--junit FILE.xml] [--resume] [--list]\n"
     "\n"
     "Run solver against reference and write DIR/<case>.csv, DIR/<case>.md,\n"
     "DIR/<case>-curves.csv and a gnuplot figure DIR/<case>.png (when gnuplot is\n"
@@ -115,6 +115,8 @@ static const char usage_verify[] =
     "               does not report is a SKIP\n"
     "  --solver-timeout S  seconds one solver run may take (default 3600); then\n"
     "               it is killed and the case stops with an error\n"
+    "  --junit FILE also write the verdicts as JUnit XML (a testsuite per case, a\n"
+    "               testcase per check), as CI systems read it\n"
     "  --resume     take every simulation already finished by an earlier run with\n"
     "               the same options from DIR/.checkpoint instead of running it\n"
     "               again; the tables come out byte-identical to an uninterrupted\n"
@@ -186,6 +188,7 @@ typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
     const char *result;                      /* run: a solver-protocol result file */
     const char *solver, *solver_timeout;     /* verify: an external solver */
+    const char *junit;                       /* verify: a JUnit XML report */
     const char *alpha, *d;                   /* sonine */
     const char *md, *max_n, *seconds;        /* bench */
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
@@ -214,6 +217,7 @@ static const option_spec options[] = {
     {"--solver-set", "verify", OPT_SOLVER_SET, 0},
     {"--resume", "verify", OPT_FLAG, offsetof(args, resume)},
     {"--solver", "verify", OPT_VALUE, offsetof(args, solver)},
+    {"--junit", "verify", OPT_VALUE, offsetof(args, junit)},
     {"--solver-timeout", "verify", OPT_VALUE, offsetof(args, solver_timeout)},
     {"--alpha", "sonine", OPT_VALUE, offsetof(args, alpha)},
     {"--d", "sonine", OPT_VALUE, offsetof(args, d)},
@@ -686,10 +690,22 @@ static int cmd_verify(int argc, char **argv)
     if (stop_after && (countdown = strtoul(stop_after, NULL, 10)) > 0)
         o.stop_countdown = &countdown;
     catch_stop_signals();
+    if ((rc = probe_out("verify", a.junit)) != EXIT_OK)
+        return rc;
     vfy_report report;
     vfy_report_init(&report, stdout);
     char msg[1024] = "";
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     sim_status status = vfy_run(a.suite, a.case_name, &o, &report, msg, sizeof msg);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    if (status == SIM_OK && a.junit != NULL
+        && vfy_report_write_junit(&report, a.junit,
+                                  (double)(t1.tv_sec - t0.tv_sec)
+                                      + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec)) != 0) {
+        status = SIM_EIO;
+        snprintf(msg, sizeof msg, "%s: cannot write: %s", a.junit, strerror(errno));
+    }
     size_t passed = 0, skipped = 0;
     for (size_t i = 0; i < report.count; i++) {
         passed += report.checks[i].verdict == VFY_PASS;
