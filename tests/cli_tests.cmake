@@ -535,3 +535,14 @@ add_test(NAME cli_verify_junit
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/run_junit.cmake)
 set_tests_properties(cli_verify_junit PROPERTIES TIMEOUT 300 LABELS regression
                      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+
+# What a solver does not report is a SKIP saying so, never a PASS; a check
+# that models the built-in engine's own streams is a SKIP for any other.
+gdsmc_add_cli_test(cli_solver_not_reported 0
+    "PASS  grw-ex4 n=64 T_raw vs exact finite-n expectation[^\n]*\nSKIP  grw-ex4 n=64 T vs exact finite-n expectation: T not reported by the solver\n.*verify: [0-9]+ passed, 0 failed, [0-9]+ skipped"
+    verify --suite quick --case grw-ex4 --out ${CMAKE_CURRENT_BINARY_DIR}/solver-partial
+    --solver "sh tests/solvers/partial.sh $<TARGET_FILE:gdsmc> {scene} {out}")
+gdsmc_add_cli_test(cli_solver_builtin_only 0
+    "SKIP  vro-grw-ex3 n=64 sampled vs conditional T_raw: built-in engine only: both variants follow the same trajectories of this engine's random streams\n"
+    verify --suite quick --case vro-grw-ex3 --out ${CMAKE_CURRENT_BINARY_DIR}/solver-vro
+    --solver "$<TARGET_FILE:gdsmc> run {scene} --result {out} --quiet")

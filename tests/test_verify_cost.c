@@ -58,20 +58,25 @@ static void test_stat_scaling(void **state)
         quarter[i] = conf1[i] / 4.0;
         same[i] = conf1[i];
     }
-    assert_int_equal(vfy_cost_check_stat_scaling(&r, "right", conf1, right, 5, 128, 512, 4.5,
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "right", conf1, right, 5, 128, 512, 1, 4.5,
                                                  &ratio), VFY_PASS);
     assert_close(ratio, 1.0, 0.03, 0.0);
-    assert_int_equal(vfy_cost_check_stat_scaling(&r, "1/N", conf1, quarter, 5, 128, 512, 4.5,
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "1/N", conf1, quarter, 5, 128, 512, 1, 4.5,
                                                  &ratio), VFY_FAIL);
     assert_close(ratio, 2.0, 1e-12, 0.0);
-    assert_int_equal(vfy_cost_check_stat_scaling(&r, "no N", conf1, same, 5, 128, 512, 4.5,
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "no N", conf1, same, 5, 128, 512, 1, 4.5,
                                                  &ratio), VFY_FAIL);
-    assert_int_equal(vfy_cost_check_stat_scaling(&r, "N2 <= N1", conf1, right, 5, 512, 512,
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "N2 <= N1", conf1, right, 5, 512, 512, 1,
                                                  4.5, NULL), VFY_FAIL);
     /* quick sizes (N = 64, 256, three n): the band is wider, 1/N still fails */
-    assert_int_equal(vfy_cost_check_stat_scaling(&r, "quick 1/N", conf1, quarter, 3, 64, 256,
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "quick 1/N", conf1, quarter, 3, 64, 256, 1,
                                                  4.5, NULL), VFY_FAIL);
-    assert_int_equal(r.failed, 4);
+    /* independent runs (an external solver): the wider band of 1/N1 + 1/N2 */
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "independent", conf1, right, 5, 128, 512, 0,
+                                                 4.5, NULL), VFY_PASS);
+    assert_int_equal(vfy_cost_check_stat_scaling(&r, "independent 1/N", conf1, quarter, 5, 128,
+                                                 512, 0, 4.5, NULL), VFY_FAIL);
+    assert_int_equal(r.failed, 5);
     vfy_report_free(&r);
 }
 

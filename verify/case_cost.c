@@ -122,14 +122,14 @@ int vfy_cost_lsq2(size_t count, const double *x1, const double *x2, const double
 
 vfy_verdict vfy_cost_check_stat_scaling(vfy_report *r, const char *name, const double *conf1,
                                         const double *conf2, size_t count, size_t N1, size_t N2,
-                                        double zmax, double *ratio)
+                                        int nested, double zmax, double *ratio)
 {
     double s = 0.0;
     for (size_t i = 0; i < count; i++)
         s += log(conf1[i] / conf2[i]);
     double R = count ? exp(s / (double)count) / sqrt((double)N2 / (double)N1) : NAN;
-    double sd = sqrt((2.0 + VFY_COST_KURTOSIS) / 4.0 * (1.0 / (double)N1 - 1.0 / (double)N2)
-                     / (double)count);
+    const double inv = 1.0 / (double)N1 + (nested ? -1.0 : 1.0) / (double)N2;
+    double sd = sqrt((2.0 + VFY_COST_KURTOSIS) / 4.0 * inv / (double)count);
     if (ratio)
         *ratio = R;
     /* vfy_check_range fails NaN too (N2 <= N1 gives a NaN sd) */
@@ -358,7 +358,7 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
         snprintf(name, sizeof name, "%s Conf(N=%.0f)/Conf(N=%.0f) over sqrt(%.0f/%.0f), pooled "
                  "over n", run->c->name, Ns[b - 1], Ns[b], Ns[b], Ns[b - 1]);
         vfy_cost_check_stat_scaling(r, name, c1, c2, nn, (size_t)Ns[b - 1], (size_t)Ns[b],
-                                    ZMAX, &ratio);
+                                    !vfy_external(run->o), ZMAX, &ratio);
     }
     /* Judged where one part dominates (by DOMINANCE): where the two are
      * comparable, noise of the opposite sign can cancel the bias and Err

@@ -35,15 +35,16 @@ int vfy_cost_lsq2(size_t count, const double *x1, const double *x2, const double
 
 /* The statistical part scales as 1/sqrt(N) (SPEC §1: c = lambda_p sqrt(Var/N)):
  * for `count` particle numbers, conf1[i] at N1 ensembles and conf2[i] at
- * N2 > N1 from the same random streams (the N2 run contains the N1 run's
- * ensembles).  The pooled ratio R = exp(mean_i ln(conf1[i]/conf2[i])) /
+ * N2 > N1.  The pooled ratio R = exp(mean_i ln(conf1[i]/conf2[i])) /
  * sqrt(N2/N1) must lie within 1 ± ZMAX s, where s^2 = ((2 + kurtosis)/4)
  * (1/N1 - 1/N2)/count is the variance of ln of the ratio of two nested
- * standard-deviation estimates, kurtosis = VFY_COST_KURTOSIS.  *ratio (may
- * be NULL) receives R. */
+ * standard-deviation estimates (nested: the N2 run contains the N1 run's
+ * ensembles, as the built-in engine's streams make it), or with 1/N1 +
+ * 1/N2 of two independent ones (an external solver's runs), kurtosis =
+ * VFY_COST_KURTOSIS.  *ratio (may be NULL) receives R. */
 vfy_verdict vfy_cost_check_stat_scaling(vfy_report *r, const char *name, const double *conf1,
                                         const double *conf2, size_t count, size_t N1, size_t N2,
-                                        double zmax, double *ratio);
+                                        int nested, double zmax, double *ratio);
 
 /* The error model describes the grid: max_i |ln(err[i]/model[i])| <=
  * ln(factor).  *worst (may be NULL) receives the err/model ratio farthest

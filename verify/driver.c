@@ -678,6 +678,11 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
             continue;
         char name[160], why[320];
         vfy_expand(name, sizeof name, c->name, run, row);
+        if (c->builtin_only && vfy_external(run->o)) {
+            snprintf(why, sizeof why, "built-in engine only: %s", c->builtin_only);
+            vfy_skip(r, name, why);
+            continue;
+        }
         const char *gone = NULL;   /* an operand an external solver did not report */
         if (row != NULL && vfy_external(run->o) && row_incomplete(row))
             gone = operand_missing(run, row, c->value)      ? c->value

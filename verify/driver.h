@@ -151,6 +151,9 @@ struct vfy_check_spec {
     size_t from;               /* series rules: the first output judged */
     const char *out;           /* a value the rule defines (e.g. its max |z|), or NULL */
     vfy_guard guard;
+    const char *builtin_only;  /* judged only for the built-in engine, and why: the check
+                                  models its own arithmetic or random streams (an
+                                  external solver's run is a SKIP saying so), or NULL */
 };
 
 /* A table column: header, the value it prints (NULL: the header's name) and
