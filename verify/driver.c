@@ -668,6 +668,22 @@ static int operand_missing(const vfy_case_run *run, const vfy_row *row, const ch
     return missing;
 }
 
+/* Whether name is a quantity a result file reports itself (an observable,
+ * of a variant too, a steady quantity or a count), not one made from them. */
+static int reported_quantity(const char *name)
+{
+    const size_t len = strcspn(name, "@");
+    if (sim_observable_find(name, len) >= 0 || strcmp(name, "violations") == 0
+        || strcmp(name, "events") == 0)
+        return 1;
+    for (size_t k = 0; k < SIM_STEADY_BIN0; k++) {
+        char q[32];
+        if (strcmp(sim_steady_name(k, q, sizeof q), name) == 0)
+            return 1;
+    }
+    return 0;
+}
+
 /* The checks of a row, or of the case (row NULL: no guards). */
 static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *checks,
                        vfy_report *r)
@@ -689,7 +705,10 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
                    : operand_missing(run, row, c->expected) ? c->expected
                                                             : NULL;
         if (gone != NULL) {
-            snprintf(why, sizeof why, "%s not reported by the solver", gone);
+            snprintf(why, sizeof why,
+                     reported_quantity(gone) ? "%s not reported by the solver"
+                                             : "%s needs quantities the solver did not report",
+                     gone);
             vfy_skip(r, name, why);
             continue;
         }

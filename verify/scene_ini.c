@@ -834,11 +834,35 @@ static int section_present(const sim_scene *s, int section)
            || *(const int *)((const char *)s + sections[section].present);
 }
 
-/* Whether key d of s was set or differs from its default (so it is written). */
+/* Whether key `full` means anything in s, by check_scene()'s rules on
+ * which keys go together: a scene changed in code after parsing (a jump
+ * row made from a timestep scene, say) keeps the record of keys that no
+ * longer apply, and writing them would make a scene the parser refuses. */
+static int key_applies(const sim_scene *s, const char *full)
+{
+    const int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
+    if (strcmp(full, "scene.splitting") == 0)
+        return s->scheme == SIM_SCHEME_TIMESTEP;
+    if (strcmp(full, "heating.strength") == 0)
+        return !s->heating.keep_temperature;
+    if (strcmp(full, "particles.mass") == 0 || strcmp(full, "particles.temperature") == 0
+        || strcmp(full, "particles.velocity") == 0)
+        return !mix;
+    if (strcmp(full, "particles.fraction") == 0 || strncmp(full, "particles.mass", 14) == 0
+        || strncmp(full, "particles.velocity", 18) == 0
+        || strncmp(full, "particles.temperature", 21) == 0)
+        return mix;   /* the keys ending in 1 and 2 */
+    return 1;
+}
+
+/* Whether key d of s is written: it applies, and it was set or differs from
+ * its default. */
 static int key_written(const key_desc *d, const sim_scene *s, const sim_scene *def)
 {
     char full[64];
     snprintf(full, sizeof full, "%s.%s", sections[d->section].name, d->name);
+    if (!key_applies(s, full))
+        return 0;
     const char *a, *b;
     size_t na = field_of(d, s, &a), nb = field_of(d, def, &b);
     return is_set(s, full) || na != nb || memcmp(a, b, na) != 0;

@@ -69,8 +69,11 @@ void vfy_scene_format_error(const sim_scene *scene, const sim_error *err, char *
  * [particles] always), in the table's order, and in each the keys that were
  * set or differ from their defaults (sim_scene_defaults), numbers with 17
  * significant digits, so that parsing the text gives the same scene (the
- * same value for every key; vfy_scene_differs finds none).  Returns 0, or -1
- * when f reports an error. */
+ * same value for every key; vfy_scene_differs finds none).  Keys that no
+ * longer apply after a change in code (splitting once the scheme is jump,
+ * the other initial state's keys, the strength with keep_temperature) are
+ * left out, as the parser would refuse them.  Returns 0, or -1 when f
+ * reports an error. */
 int vfy_scene_write(FILE *f, const sim_scene *s);
 
 /* Whether scenes a and b differ in a section's presence or a key's value;
