@@ -479,23 +479,23 @@ set_tests_properties(cli_out_fifo PROPERTIES TIMEOUT 60 LABELS unit)
 set(SB ${CMAKE_CURRENT_BINARY_DIR}/solver-bad)
 gdsmc_add_no_output_test(cli_solver_not_found 2
     "^gdsmc verify: grw-ex4 n=64: the solver cannot be started: 'nosuch-solver': No such file or directory \\(--solver 'nosuch-solver {scene} {out}'\\)\n$"
-    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    ${SB}-not_found/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-not_found
     --solver "nosuch-solver {scene} {out}")
 gdsmc_add_no_output_test(cli_solver_exit_status 2
     "^gdsmc verify: grw-ex4 n=64: the solver exited with status 3 \\(--solver 'sh -c \"echo boom >&2 && exit 3\"'\\); the last lines of its output \\([^\n]*/\\.solver/[0-9a-f]+\\.log\\):\n    boom\n$"
-    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    ${SB}-exit_status/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-exit_status
     --solver "sh -c \"echo boom >&2 && exit 3\"")
 gdsmc_add_no_output_test(cli_solver_timeout 2
     "^gdsmc verify: grw-ex4 n=64: the solver took more than 0.5 s \\(--solver-timeout\\) and was killed \\(--solver 'sleep 30'\\)\n$"
-    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    ${SB}-timeout/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-timeout
     --solver "sleep 30" --solver-timeout 0.5)
 gdsmc_add_no_output_test(cli_solver_no_result 2
     "^gdsmc verify: grw-ex4 n=64: the solver exited with status 0 but wrote no result [^\n]*/\\.solver/[0-9a-f]+\\.result \\(--solver 'true {scene} {out}'\\)\n$"
-    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    ${SB}-no_result/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-no_result
     --solver "true {scene} {out}")
 gdsmc_add_no_output_test(cli_solver_bad_result 2
     "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:1: the first line must be '# gdsmc-result 1' \\(the protocol version\\), got '\\[scene\\]'\n$"
-    ${SB}/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}
+    ${SB}-bad_result/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-bad_result
     --solver "cp {scene} {out}")
 gdsmc_add_cli_exact(cli_x_verify_solver_timeout_bad 2
                     "gdsmc verify: --solver-timeout 'soon': allowed 0 < S <= 1e6 seconds (see gdsmc verify --help)"
@@ -546,3 +546,59 @@ gdsmc_add_cli_test(cli_solver_builtin_only 0
     "SKIP  vro-grw-ex3 n=64 sampled vs conditional T_raw: built-in engine only: both variants follow the same trajectories of this engine's random streams\n"
     verify --suite quick --case vro-grw-ex3 --out ${CMAKE_CURRENT_BINARY_DIR}/solver-vro
     --solver "$<TARGET_FILE:gdsmc> run {scene} --result {out} --quiet")
+
+# Each kind of malformed result (tests/solvers/corrupt.sh edits the built-in
+# engine's): exit 2, the result file and line in the exact message, nothing on
+# standard output and no table.
+gdsmc_add_no_output_test(cli_solver_result_version 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:1: protocol version '2', this gdsmc reads version 1\n$"
+    ${SB}-result_version/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_version
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '1s/.*/# gdsmc-result 2/'")
+gdsmc_add_no_output_test(cli_solver_result_n 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:3: n = 65 does not match the scene's particles.n = 64\n$"
+    ${SB}-result_n/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_n
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '3s/.*/# n = 65/'")
+gdsmc_add_no_output_test(cli_solver_result_ensembles 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:4: ensembles = 1999 does not match the scene's particles.ensembles = 2000\n$"
+    ${SB}-result_ensembles/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_ensembles
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '4s/.*/# ensembles = 1999/'")
+gdsmc_add_no_output_test(cli_solver_result_no_t 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:8: column 1 is 'time', expected t\n$"
+    ${SB}-result_no_t/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_no_t
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '8s/^t,/time,/'")
+gdsmc_add_no_output_test(cli_solver_result_no_var 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:8: column 2: T must be followed by T_var\n$"
+    ${SB}-result_no_var/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_no_var
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '8s/T,T_var/T,T_sd/'")
+gdsmc_add_no_output_test(cli_solver_result_nan 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:9: column 2 \\(T\\): 'nan' is not finite\n$"
+    ${SB}-result_nan/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_nan
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '9s/^0,[^,]*/0,nan/'")
+gdsmc_add_no_output_test(cli_solver_result_negative_var 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:10: column 3 \\(T_var\\): -1 is a negative variance\n$"
+    ${SB}-result_negative_var/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_negative_var
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '10s/^\\([^,]*,[^,]*\\),[^,]*/\\1,-1/'")
+gdsmc_add_no_output_test(cli_solver_result_time 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:11: t = 0.25, but the scene's output time 2 is 0.20000000000000001 \\(allowed relative difference 1e-9\\)\n$"
+    ${SB}-result_time/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_time
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '11s/^[^,]*/0.25/'")
+gdsmc_add_no_output_test(cli_solver_result_fields 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:12: 32 fields, the header has 33\n$"
+    ${SB}-result_fields/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_fields
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '12s/,[^,]*$//'")
+gdsmc_add_no_output_test(cli_solver_result_short 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:88: the file ends after 80 rows, the scene has 81 output times\n$"
+    ${SB}-result_short/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_short
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '89d'")
+gdsmc_add_no_output_test(cli_solver_result_long 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:90: more rows than the scene's 81 output times, or text after them: '8.1,1,0'\n$"
+    ${SB}-result_long/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_long
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '$a 8.1,1,0'")
+gdsmc_add_no_output_test(cli_solver_result_trailing 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:90: unexpected line after the rows: '# trailing' \\(allowed: the steady section, '# steady'\\)\n$"
+    ${SB}-result_trailing/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_trailing
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '$a # trailing'")
+gdsmc_add_no_output_test(cli_solver_result_empty 2
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result: empty result \\(the solver wrote nothing\\)\n$"
+    ${SB}-result_empty/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_empty
+    --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} 'empty'")

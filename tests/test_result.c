@@ -198,8 +198,11 @@ static void trap_results(void **state)
     expect(0, HEAD "t,T,T_ci\n", "bad.csv:4: column 2: T must be followed by T_var");
     expect(0, HEAD "t,T\n", "bad.csv:4: column 2: T must be followed by T_var");
     expect(0, HEAD "t,T,T_var,T,T_var\n", "bad.csv:4: column 4: T appears twice");
-    expect(0, HEAD COLS, "bad.csv:4: 0 rows, the scene has 3 output times");
-    expect(0, HEAD COLS "0,1,0.1\n4,1,0.1\n", "bad.csv:6: 2 rows, the scene has 3 output times");
+    expect(0, HEAD COLS, "bad.csv:4: the file ends after 0 rows, the scene has 3 output times");
+    expect(0, HEAD COLS "0,1,0.1\n4,1,0.1\n",
+           "bad.csv:6: the file ends after 2 rows, the scene has 3 output times");
+    expect(0, HEAD COLS "0,1,0.1\n# x\n", "bad.csv:6: 1 rows before this line, the scene has 3 "
+           "output times");
     expect(0, HEAD COLS "0,1,0.1\n4,1\n", "bad.csv:6: 2 fields, the header has 3");
     expect(0, HEAD COLS "0,1,0.1,7\n", "bad.csv:5: 4 fields, the header has 3");
     expect(0, HEAD COLS "0,1,0.1\n4.0001,1,0.1\n", "bad.csv:6: t = 4.0001, but the scene's "

@@ -383,8 +383,12 @@ static sim_status parse(reader *r, const sim_scene *scene, sim_ensemble_result *
     if (status == SIM_OK)
         status = column_header(r, obs, &nobs, info);
     for (size_t m = 0; m < res->outputs && status == SIM_OK; m++) {
-        if (!next_line(r) || r->at[0] == '#' || blank(r->at, r->len))
-            return fail(r, r->line, "%zu rows, the scene has %zu output times", m, res->outputs);
+        if (!next_line(r))
+            return fail(r, r->line, "the file ends after %zu rows, the scene has %zu output "
+                        "times", m, res->outputs);
+        if (r->at[0] == '#' || blank(r->at, r->len))
+            return fail(r, r->line, "%zu rows before this line, the scene has %zu output times",
+                        m, res->outputs);
         status = series_row(r, scene, m, obs, nobs, res);
     }
     while (status == SIM_OK && next_line(r)) {
