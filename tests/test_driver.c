@@ -81,6 +81,14 @@ static void test_pure_metrics(void **state)
     assert_close(vfy_max_rel_ci(ci, exact, 3), 0.05, 1e-12, 0);
     const double ux[2] = {0.0, 3.0}, uy[2] = {1.0, 4.0}, uz[2] = {0.0, 0.0};
     assert_close(vfy_max_norm3(ux, uy, uz, 2), 5.0, 1e-15, 0);
+    /* a term that is NaN (not reported) makes the maximum NaN, wherever it is */
+    mean[0] = NAN;
+    assert_true(isnan(vfy_max_rel_err(mean, exact, 3)));
+    mean[0] = 1.01;
+    mean[2] = NAN;
+    assert_true(isnan(vfy_max_rel_err(mean, exact, 3)));
+    assert_true(isnan(vfy_max_ratio_dev(mean, exact, 3)));
+    mean[2] = 4.2;
     assert_close(vfy_fictitious_fraction(25.0, 100.0), 0.75, 1e-15, 0);
     assert_close(vfy_fictitious_fraction(0.0, 0.0), 0.0, 0, 0);   /* no events */
     /* the first point (t = 0) is not counted: its variances are equal or 0 */

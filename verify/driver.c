@@ -645,6 +645,15 @@ static int row_incomplete(const vfy_row *row)
     return gap;
 }
 
+/* Whether some row's result lacks something. */
+static int run_incomplete(const vfy_case_run *run)
+{
+    for (size_t i = 0; i < run->nrows; i++)
+        if (row_incomplete(&run->rows[i]))
+            return 1;
+    return 0;
+}
+
 /* Whether operand `name` of a check on an incomplete row is missing (NaN
  * somewhere): a quantity the solver did not report, or one made from it.
  * The paper's own numbers are not the solver's. */
@@ -704,6 +713,10 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
             gone = operand_missing(run, row, c->value)      ? c->value
                    : operand_missing(run, row, c->expected) ? c->expected
                                                             : NULL;
+        if (row == NULL && vfy_external(run->o) && run_incomplete(run))   /* case checks */
+            gone = c->value && isnan(lookup(run, NULL, c->value))          ? c->value
+                   : c->expected && isnan(lookup(run, NULL, c->expected)) ? c->expected
+                                                                          : NULL;
         if (gone != NULL) {
             snprintf(why, sizeof why,
                      reported_quantity(gone) ? "%s not reported by the solver"

@@ -10,11 +10,19 @@
 
 #include "observe.h"
 
+/* max(worst, x), NaN when either is: a maximum over output times is NaN if
+ * any term is (a quantity an external solver did not report), never the
+ * maximum of the others. */
+static double max_or_nan(double worst, double x)
+{
+    return isnan(worst) || isnan(x) ? NAN : fmax(worst, x);
+}
+
 double vfy_max_rel_err(const double *mean, const double *exact, size_t count)
 {
     double worst = 0.0;
     for (size_t m = 0; m < count; m++)
-        worst = fmax(worst, fabs(exact[m] - mean[m]) / exact[m]);
+        worst = max_or_nan(worst, fabs(exact[m] - mean[m]) / exact[m]);
     return worst;
 }
 
@@ -22,7 +30,7 @@ double vfy_max_ratio_dev(const double *mean, const double *ref, size_t count)
 {
     double worst = 0.0;
     for (size_t m = 0; m < count; m++)
-        worst = fmax(worst, fabs(mean[m] / ref[m] - 1.0));
+        worst = max_or_nan(worst, fabs(mean[m] / ref[m] - 1.0));
     return worst;
 }
 
@@ -38,7 +46,7 @@ void vfy_variance_ratio(const double *var_a, const double *var_b, size_t count, 
     for (size_t m = 1; m < count; m++) {
         double ratio = var_a[m] / var_b[m];
         sum += ratio;
-        lo = fmin(lo, ratio);
+        lo = isnan(ratio) || isnan(lo) ? NAN : fmin(lo, ratio);
     }
     *mean = sum / (double)(count - 1);
     *min = lo;
@@ -48,7 +56,7 @@ double vfy_max_rel_ci(const double *ci, const double *exact, size_t count)
 {
     double worst = 0.0;
     for (size_t m = 0; m < count; m++)
-        worst = fmax(worst, ci[m] / exact[m]);
+        worst = max_or_nan(worst, ci[m] / exact[m]);
     return worst;
 }
 
@@ -56,7 +64,7 @@ double vfy_max_norm3(const double *x, const double *y, const double *z, size_t c
 {
     double worst = 0.0;
     for (size_t m = 0; m < count; m++)
-        worst = fmax(worst, sqrt(x[m] * x[m] + y[m] * y[m] + z[m] * z[m]));
+        worst = max_or_nan(worst, sqrt(x[m] * x[m] + y[m] * y[m] + z[m] * z[m]));
     return worst;
 }
 
@@ -97,7 +105,7 @@ double vfy_max_abs_diff(const double *a, const double *b, size_t count)
 {
     double worst = 0.0;
     for (size_t m = 0; m < count; m++)
-        worst = fmax(worst, fabs(a[m] - b[m]));
+        worst = max_or_nan(worst, fabs(a[m] - b[m]));
     return worst;
 }
 
@@ -413,7 +421,7 @@ double vfy_metric_max_rel_diff(const vfy_case_run *run, const vfy_row *row, cons
         && vfy_row_series(row, slash + 1, buf + 2 * M, NULL) == 0) {
         worst = 0.0;
         for (size_t k = 0; k < M; k++)
-            worst = fmax(worst, fabs(buf[k] - buf[M + k]) / buf[2 * M + k]);
+            worst = max_or_nan(worst, fabs(buf[k] - buf[M + k]) / buf[2 * M + k]);
     }
     free(buf);
     return worst;

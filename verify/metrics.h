@@ -1,8 +1,10 @@
 /* Metrics of the verification cases (SPEC §9), as pure functions of arrays,
  * and the adapters that let a case description name them (driver.h).
  *
- * Each pure function has a test in tests/test_metrics.c that hands it a
- * wrong answer and sees the metric move.
+ * Each pure function has a test in tests/test_driver.c that hands it a
+ * wrong answer and sees the metric move.  A maximum or minimum over output
+ * times is NaN when any term is (a quantity an external solver did not
+ * report), never the extreme of the others.
  */
 #ifndef GDSMC_VFY_METRICS_H
 #define GDSMC_VFY_METRICS_H
