@@ -546,6 +546,8 @@ gdsmc_add_cli_test(cli_solver_builtin_only 0
     "SKIP  vro-grw-ex3 n=64 sampled vs conditional T_raw: built-in engine only: both variants follow the same trajectories of this engine's random streams\n"
     verify --suite quick --case vro-grw-ex3 --out ${CMAKE_CURRENT_BINARY_DIR}/solver-vro
     --solver "$<TARGET_FILE:gdsmc> run {scene} --result {out} --quiet")
+set_tests_properties(cli_solver_not_reported cli_solver_builtin_only
+                     PROPERTIES LABELS regression TIMEOUT 180)
 
 # Each kind of malformed result (tests/solvers/corrupt.sh edits the built-in
 # engine's): exit 2, the result file and line in the exact message, nothing on
