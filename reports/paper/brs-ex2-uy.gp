@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/brs-ex2.ini, seed 20100402, n = 4, 16, 64, 256, 1024 (by row), N = 64, 256, 1024, 4096, 16384 ensembles (by row), 513 outputs on [0, 1]
 # brs-ex2: paper B Table 2 (paper sizes): gnuplot reports/paper/brs-ex2-uy.gp
 set terminal pngcairo size 1200,900 font ',10'
 set termoption noenhanced

@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/brs-ex3.ini, seed 20100403, n = 4, 16, 64, 256, 1024 (by row), N = 64, 256, 1024, 4096, 16384 ensembles (by row), 513 outputs on [0, 1]
 # brs-ex3: paper B Maxwell kernels, relaxation (paper sizes): gnuplot reports/paper/brs-ex3-uy.gp
 set terminal pngcairo size 1200,900 font ',10'
 set termoption noenhanced

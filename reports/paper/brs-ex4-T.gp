@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/brs-ex4.ini, seed 20101435, 20102435, 20103435 (by row), n = 64, 256, 1024 (by row), N = 1024, 256, 64 ensembles (by row), 513 outputs on [0, 2]
 # brs-ex4: paper B, hard spheres, steady temperature (paper sizes): gnuplot reports/paper/brs-ex4-T.gp
 set terminal pngcairo size 1200,700 font ',10'
 set termoption noenhanced

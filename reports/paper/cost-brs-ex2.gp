@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/brs-ex2.ini, seed 20100402, n = 16, 16, 16, 64, 64, 64, 256, 256, 256, 1024, 1024, 1024, 4096, 4096, 4096, 16384, 16384, 16384 (by row), N = 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048 ensembles (by row), 513 outputs on [0, 1]
 # cost-brs-ex2: gnuplot reports/paper/cost-brs-ex2.gp
 set terminal pngcairo size 1100,750 font ',10'
 set termoption noenhanced

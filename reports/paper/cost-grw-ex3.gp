@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/grw-ex3.ini, seed 20030328, n = 64, 64, 64, 256, 256, 256, 1024, 1024, 1024, 4096, 4096, 4096, 16384, 16384, 16384 (by row), N = 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048 ensembles (by row), 81 outputs on [0, 8]
 # cost-grw-ex3: gnuplot reports/paper/cost-grw-ex3.gp
 set terminal pngcairo size 1100,750 font ',10'
 set termoption noenhanced

@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/split-ex5.ini, seed 20100906, n = 64, 256, 1024, 4096, 64, 256, 1024, 256, 256, 256, 256, 1024, 1024, 1024, 1024, 1024, 1024, 1024, 1024 (by row), N = 256, 256, 256, 256, 1024, 1024, 1024, 256, 256, 256, 256, 256, 256, 256, 256, 256, 256, 256, 256 ensembles (by row), 21 outputs on [0, 32]
 # cost-split-ex5: gnuplot reports/paper/cost-split-ex5.gp
 set terminal pngcairo size 1100,750 font ',10'
 set termoption noenhanced

@@ -1,4 +1,5 @@
-# grw-ex3: paper A Table 1 reproduced (paper sizes): gnuplot reports/grw-ex3.gp
+# gdsmc 0.2.0 verify: scene verify/scenes/grw-ex3.ini, seed 20030328, n = 64, 256, 1024, 4096, 16384 (by row), N = 10000 ensembles, 81 outputs on [0, 8]
+# grw-ex3: paper A Table 1 reproduced (paper sizes): gnuplot reports/paper/grw-ex3.gp
 set terminal pngcairo size 1200,900 font ',10'
 set termoption noenhanced
 set output 'reports/paper/grw-ex3.png'

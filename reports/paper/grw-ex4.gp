@@ -1,4 +1,5 @@
-# grw-ex4: paper A Table 2 reproduced (paper sizes): gnuplot reports/grw-ex4.gp
+# gdsmc 0.2.0 verify: scene verify/scenes/grw-ex4.ini, seed 20030329, n = 64, 256, 1024, 4096, 16384 (by row), N = 10000 ensembles, 81 outputs on [0, 8]
+# grw-ex4: paper A Table 2 reproduced (paper sizes): gnuplot reports/paper/grw-ex4.gp
 set terminal pngcairo size 1200,900 font ',10'
 set termoption noenhanced
 set output 'reports/paper/grw-ex4.png'

@@ -1,4 +1,5 @@
-# grw-ex5: paper A Ex 5, heated hard spheres (paper sizes): gnuplot reports/grw-ex5.gp
+# gdsmc 0.2.0 verify: scene verify/scenes/grw-ex5.ini, seed 20030330, n = 64, 256, 1024, 4096 (by row), N = 1000 ensembles, 81 outputs on [0, 4]
+# grw-ex5: paper A Ex 5, heated hard spheres (paper sizes): gnuplot reports/paper/grw-ex5.gp
 set terminal pngcairo size 1200,700 font ',10'
 set termoption noenhanced
 set output 'reports/paper/grw-ex5.png'

@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/ms-gaussian.ini, seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
 # ms-a2-gaussian: a3 against alpha, Gaussian thermostat (paper C Figure 6): gnuplot reports/paper/ms-a2-gaussian-a3.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced

@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/ms-gaussian.ini, seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
 # ms-a2-gaussian: a2 against alpha, Gaussian thermostat (HCS in scaled variables) (paper C Figure 4): gnuplot reports/paper/ms-a2-gaussian.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced

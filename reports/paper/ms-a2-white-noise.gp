@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/ms-white-noise.ini, seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
 # ms-a2-white-noise: a2 against alpha, white noise (stochastic thermostat) (paper C Figure 1): gnuplot reports/paper/ms-a2-white-noise.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced

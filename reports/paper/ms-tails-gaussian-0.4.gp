@@ -1,9 +1,10 @@
-# ms-tails: G(c) = exp(4.413 c^1.0) f(c), gaussian, alpha = 0.4: gnuplot reports/paper/ms-tails-gaussian-0.4.gp
+# gdsmc 0.2.0 verify: scene verify/scenes/ms-white-noise.ini, verify/scenes/ms-white-noise.ini, verify/scenes/ms-gaussian.ini, verify/scenes/ms-gaussian.ini (by row), seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
+# ms-tails: G(c) = exp(4.415 c^1.0) f(c), gaussian, alpha = 0.4: gnuplot reports/paper/ms-tails-gaussian-0.4.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced
 set output 'reports/paper/ms-tails-gaussian-0.4.png'
 set datafile separator ','
-set title 'ms-tails: G(c) = exp(4.413 c^1.0) f(c), gaussian, alpha = 0.4'
+set title 'ms-tails: G(c) = exp(4.415 c^1.0) f(c), gaussian, alpha = 0.4'
 set xlabel 'c'
 set ylabel 'G(c)'
 set key top right

@@ -1,3 +1,4 @@
+# gdsmc 0.2.0 verify: scene verify/scenes/ms-white-noise.ini, verify/scenes/ms-white-noise.ini, verify/scenes/ms-gaussian.ini, verify/scenes/ms-gaussian.ini (by row), seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
 # ms-tails: G(c) = exp(1.988 c^1.5) f(c), white, alpha = 0.4: gnuplot reports/paper/ms-tails-white-0.4.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced
