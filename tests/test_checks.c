@@ -86,6 +86,34 @@ static void test_zscore(void **state)
     vfy_report_free(&r);
 }
 
+/* NaN fails every check, unless the report says the data may be
+ * incomplete (an external solver's result): then it is a SKIP with that
+ * reason, and a finite wrong value still fails. */
+static void test_missing_is_skip(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    const double nan_series[2] = {1.0, NAN}, ci[2] = {0.1, 0.1}, exact[2] = {1.0, 1.0};
+    assert_int_equal(vfy_check_range(&r, "range", NAN, 3.2, 5.0), VFY_FAIL);
+    assert_int_equal(vfy_check_zscore(&r, "z", nan_series, ci, exact, 2, 4.5, NULL), VFY_FAIL);
+    r.missing = "needs quantities the solver did not report";
+    assert_int_equal(vfy_check_range(&r, "range", NAN, 3.2, 5.0), VFY_SKIP);
+    assert_string_equal(r.checks[r.count - 1].detail, "needs quantities the solver did not report");
+    assert_int_equal(vfy_check_relative(&r, "relative", NAN, 1.0, 0.35), VFY_SKIP);
+    assert_int_equal(vfy_check_absolute(&r, "absolute", 1.0, NAN, 0.1), VFY_SKIP);
+    assert_int_equal(vfy_check_printed(&r, "printed", NAN, 0.0, 0.953, 3), VFY_SKIP);
+    assert_int_equal(vfy_check_zscore(&r, "z", nan_series, ci, exact, 2, 4.5, NULL), VFY_SKIP);
+    assert_int_equal(vfy_check_range(&r, "range", 2.0, 3.2, 5.0), VFY_FAIL);
+    assert_int_equal(vfy_check_zero(&r, "violations", NAN), VFY_SKIP);
+    assert_int_equal(vfy_check_zero(&r, "violations", 3.0), VFY_FAIL);
+    assert_int_equal(vfy_check_zero(&r, "violations", 0.0), VFY_PASS);
+    r.missing = NULL;
+    assert_int_equal(vfy_check_zero(&r, "violations", NAN), VFY_FAIL);
+    assert_int_equal(r.failed, 5);
+    vfy_report_free(&r);
+}
+
 static void test_skip_is_not_failure(void **state)
 {
     (void)state;
@@ -107,6 +135,7 @@ int main(void)
         cmocka_unit_test(test_range_and_absolute),
         cmocka_unit_test(test_zscore),
         cmocka_unit_test(test_skip_is_not_failure),
+        cmocka_unit_test(test_missing_is_skip),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -8,6 +8,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "result.h"
 #include "scene_ini.h"
@@ -152,6 +153,26 @@ static void test_split_command(void **state)
     assert_string_equal(msg, "more than 2 words");
 }
 
+/* The solver's identity changes with the command and with the contents of
+ * the files it names, not with anything else. */
+static void test_solver_identity(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/gdsmc-solver-XXXXXX", command[128];
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    assert_int_equal(write(fd, "print(1)\n", 9), 9);
+    snprintf(command, sizeof command, "python3 %s {scene} {out}", path);
+    const uint64_t a = vfy_solver_identity(command), again = vfy_solver_identity(command);
+    assert_true(a == again);
+    assert_int_equal(write(fd, "print(2)\n", 9), 9);   /* the script changed */
+    assert_true(vfy_solver_identity(command) != a);
+    snprintf(command, sizeof command, "python3 %s {scene} {out} --fast", path);
+    assert_true(vfy_solver_identity(command) != a);
+    close(fd);
+    unlink(path);
+}
+
 /* ---- traps: each bad result, its status and exact message ------------- */
 
 static void expect(int steady, const char *text, const char *message)
@@ -248,6 +269,7 @@ int main(void)
         cmocka_unit_test(test_round_trip),
         cmocka_unit_test(test_partial_result),
         cmocka_unit_test(test_split_command),
+        cmocka_unit_test(test_solver_identity),
         cmocka_unit_test(trap_results),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -127,8 +127,8 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
     double chi2_max = 0.0;
     for (size_t m = 0; m < M; m++) {
         const double *T = run->extra_mean, *Tci = run->extra_ci;
-        if (m > 0)
-            chi2_max = fmax(chi2_max, chi2[m]);
+        if (m > 0)   /* NaN (a quantity not reported) stays NaN */
+            chi2_max = isnan(chi2[m]) ? NAN : fmax(chi2_max, chi2[m]);
         vfy_table_cell(&xtable, "%.4g", t[m]);
         vfy_table_cell(&xtable, "%.6f", T[m]);
         vfy_table_cell(&xtable, "%.6f", Tci[m]);

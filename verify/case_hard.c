@@ -379,7 +379,19 @@ enum { HARD_FINITE, HARD_VIOLATIONS, HARD_MOMENTUM, HARD_ENERGY, HARD_COOLING };
 static vfy_verdict hard_rule(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
                              const vfy_check_spec *c)
 {
-    (void)run;
+    if (vfy_external(run->o)) {   /* what the protocol already decides, or left out */
+        const char *why = NULL;
+        if (c->x == HARD_FINITE)
+            why = "the result reader refuses NaN and infinity in what a solver reports";
+        else if (c->x == HARD_VIOLATIONS && (row->res.missing & SIM_MISSING_VIOLATIONS))
+            why = "violations not reported by the solver";
+        else if (c->x != HARD_VIOLATIONS && isnan(sim_result_mean(&row->res, 0, SIM_OBS_T)))
+            why = "T not reported by the solver";
+        if (why != NULL) {
+            vfy_skip(r, name, why);
+            return VFY_SKIP;
+        }
+    }
     vfy_hard_summary sum;
     vfy_hard_summarize(&row->res, 1.0, &sum);
     const double count = c->value ? vfy_values_get(&row->values, c->value) : 0.0;

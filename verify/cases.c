@@ -274,6 +274,52 @@ static sim_status finish_simulation(const sim_scene *scene, const vfy_options *o
     return SIM_OK;
 }
 
+/* The solvers behind vfy_simulate (issue 14), one signature: the built-in
+ * engine, and an external command speaking the solver protocol (solver.h).
+ * label names the run in progress lines and messages; checkpoint_label (in
+ * cap bytes) receives what the checkpoint calls it. */
+typedef sim_status (*simulate_fn)(const sim_scene *scene, const vfy_options *o,
+                                  const char *label, sim_ensemble_result *res,
+                                  char *checkpoint_label, size_t cap, char *msg, size_t msglen);
+
+static sim_status simulate_engine(const sim_scene *scene, const vfy_options *o,
+                                  const char *label, sim_ensemble_result *res,
+                                  char *checkpoint_label, size_t cap, char *msg, size_t msglen)
+{
+    sim_engine *engine = NULL;
+    sim_error err = {{0}, {0}};
+    snprintf(checkpoint_label, cap, "%s", label);
+    sim_status status = sim_engine_create(scene, &engine, &err);
+    if (status == SIM_OK) {
+        progress_state p = {o->progress, label, wall_now(), wall_now()};
+        status = sim_ensemble_run(engine, o->progress ? print_progress : NULL, &p, res, &err);
+    }
+    sim_engine_free(engine);
+    if (status == SIM_ECANCELED)
+        snprintf(msg, msglen, "%s: %s", label, err.msg);
+    else if (status != SIM_OK)
+        vfy_scene_format_error(scene, &err, msg, msglen);
+    return status;
+}
+
+static sim_status simulate_external(const sim_scene *scene, const vfy_options *o,
+                                    const char *label, sim_ensemble_result *res,
+                                    char *checkpoint_label, size_t cap, char *msg,
+                                    size_t msglen)
+{
+    vfy_result_info info;
+    if (o->progress)
+        fprintf(o->progress, "   %s: running the solver\n", label);
+    sim_status status = vfy_solver_run(o->solver, scene, label, res, &info, msg, msglen);
+    if (status != SIM_OK)
+        return status;
+    res->missing = (info.has_events ? 0u : SIM_MISSING_EVENTS)
+                   | (info.has_violations ? 0u : SIM_MISSING_VIOLATIONS);
+    snprintf(checkpoint_label, cap, "%s (solver: %s)", label,   /* which solver made it */
+             info.solver[0] ? info.solver : "no solver line");
+    return SIM_OK;
+}
+
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen)
 {
@@ -282,35 +328,11 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
             fprintf(o->progress, "   %s: taken from its checkpoint (--resume)\n", label);
         return SIM_OK;
     }
-    sim_engine *engine = NULL;
-    sim_error err = {{0}, {0}};
     memset(res, 0, sizeof *res);
-    if (o->solver != NULL) {
-        vfy_result_info info;
-        if (o->progress)
-            fprintf(o->progress, "   %s: running the solver\n", label);
-        sim_status status = vfy_solver_run(o->solver, scene, label, res, &info, msg, msglen);
-        if (status != SIM_OK)
-            return status;
-        res->missing = (info.has_events ? 0u : SIM_MISSING_EVENTS)
-                       | (info.has_violations ? 0u : SIM_MISSING_VIOLATIONS);
-        return finish_simulation(scene, o, label, res, msg, msglen);
-    }
-    sim_status status = sim_engine_create(scene, &engine, &err);
-    if (status == SIM_OK) {
-        progress_state p = {o->progress, label, wall_now(), wall_now()};
-        status = sim_ensemble_run(engine, o->progress ? print_progress : NULL, &p, res, &err);
-    }
-    sim_engine_free(engine);
-    if (status == SIM_ECANCELED) {
-        snprintf(msg, msglen, "%s: %s", label, err.msg);
-        return status;
-    }
-    if (status != SIM_OK) {
-        vfy_scene_format_error(scene, &err, msg, msglen);
-        return status;
-    }
-    return finish_simulation(scene, o, label, res, msg, msglen);
+    const simulate_fn simulate = vfy_external(o) ? simulate_external : simulate_engine;
+    char named[512];
+    sim_status status = simulate(scene, o, label, res, named, sizeof named, msg, msglen);
+    return status == SIM_OK ? finish_simulation(scene, o, named, res, msg, msglen) : status;
 }
 
 int vfy_external(const vfy_options *o)

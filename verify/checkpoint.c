@@ -10,7 +10,7 @@
 
 #define CHECKPOINT_MAGIC "gdsmc-checkpoint 1"
 
-static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
+uint64_t vfy_hash(uint64_t h, const void *data, size_t len)
 {
     const unsigned char *p = data;
     for (size_t i = 0; i < len; i++) {
@@ -18,11 +18,6 @@ static uint64_t fnv1a(uint64_t h, const void *data, size_t len)
         h *= UINT64_C(0x100000001b3);
     }
     return h;
-}
-
-uint64_t vfy_text_hash(const char *text)
-{
-    return fnv1a(UINT64_C(0xcbf29ce484222325), text, strlen(text));
 }
 
 uint64_t vfy_checkpoint_key(const sim_scene *s)
@@ -37,8 +32,8 @@ uint64_t vfy_checkpoint_key(const sim_scene *s)
     memset(numbers.title, 0, sizeof numbers.title);
     memset(numbers.keys, 0, sizeof numbers.keys);
     numbers.nkeys = 0;
-    uint64_t h = fnv1a(UINT64_C(0xcbf29ce484222325), GDSMC_VERSION, sizeof GDSMC_VERSION);
-    return fnv1a(h, &numbers, sizeof numbers);
+    uint64_t h = vfy_hash(VFY_HASH_START, GDSMC_VERSION, sizeof GDSMC_VERSION);
+    return vfy_hash(h, &numbers, sizeof numbers);
 }
 
 static const char *checkpoint_path(const char *dir, uint64_t key, char *buf, size_t len)

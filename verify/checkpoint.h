@@ -25,8 +25,9 @@
 /* The key of scene s (see above). */
 uint64_t vfy_checkpoint_key(const sim_scene *s);
 
-/* A 64-bit hash of text (FNV-1a), e.g. of an external solver's command. */
-uint64_t vfy_text_hash(const char *text);
+/* FNV-1a: h updated with len bytes of data; start from VFY_HASH_START. */
+#define VFY_HASH_START UINT64_C(0xcbf29ce484222325)
+uint64_t vfy_hash(uint64_t h, const void *data, size_t len);
 
 /* Save res, the result of simulating s, as dir/<key>.ckpt (dir is created
  * if missing); label names the run for readers.  SIM_EIO with msg

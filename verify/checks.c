@@ -55,9 +55,19 @@ static vfy_verdict record(vfy_report *r, vfy_verdict v, const char *name, const 
     return v;
 }
 
+/* A NaN where the data may be incomplete (r->missing): a SKIP saying so. */
+#define SKIP_IF_MISSING(r, name, x)                        \
+    do {                                                   \
+        if ((r)->missing != NULL && isnan(x)) {            \
+            vfy_skip((r), (name), (r)->missing);           \
+            return VFY_SKIP;                               \
+        }                                                  \
+    } while (0)
+
 vfy_verdict vfy_check_relative(vfy_report *r, const char *name, double value, double expected,
                                double rtol)
 {
+    SKIP_IF_MISSING(r, name, value);
     double dev = value / expected - 1.0;
     vfy_verdict v = isfinite(dev) && fabs(dev) <= rtol ? VFY_PASS : VFY_FAIL;
     return record(r, v, name, "%.4g vs %.4g (%+.1f%%, allowed ±%.0f%%)", value, expected,
@@ -66,6 +76,7 @@ vfy_verdict vfy_check_relative(vfy_report *r, const char *name, double value, do
 
 vfy_verdict vfy_check_range(vfy_report *r, const char *name, double value, double lo, double hi)
 {
+    SKIP_IF_MISSING(r, name, value);
     vfy_verdict v = value >= lo && value <= hi ? VFY_PASS : VFY_FAIL;
     return record(r, v, name, "%.4g (allowed [%g, %g])", value, lo, hi);
 }
@@ -73,6 +84,7 @@ vfy_verdict vfy_check_range(vfy_report *r, const char *name, double value, doubl
 vfy_verdict vfy_check_absolute(vfy_report *r, const char *name, double value, double expected,
                                double atol)
 {
+    SKIP_IF_MISSING(r, name, value - expected);
     vfy_verdict v = fabs(value - expected) <= atol ? VFY_PASS : VFY_FAIL;
     return record(r, v, name, "%.6g vs %.6g (|diff| %.2g, allowed %.2g)", value, expected,
                   fabs(value - expected), atol);
@@ -82,6 +94,8 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
                              const double *ci, const double *exact, size_t count, double zmax,
                              double *max_z)
 {
+    for (size_t m = 0; m < count; m++)
+        SKIP_IF_MISSING(r, name, mean[m] - exact[m]);
     double worst = 0.0;
     size_t at = 0;
     int exact_mismatch = 0;
@@ -111,6 +125,7 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
 vfy_verdict vfy_check_printed(vfy_report *r, const char *name, double value, double ci,
                               double printed, int digits)
 {
+    SKIP_IF_MISSING(r, name, value);
     double rounding = 0.5 * pow(10.0, -digits), dev = fabs(value - printed);
     vfy_verdict v = dev <= rounding + ci ? VFY_PASS : VFY_FAIL;
     return record(r, v, name, "%.6g vs %.*f printed (|diff| %.2g, allowed %.2g: rounding %.2g "
@@ -122,6 +137,14 @@ vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uin
     vfy_verdict v = value == expected ? VFY_PASS : VFY_FAIL;
     return record(r, v, name, "%llu (expected %llu)", (unsigned long long)value,
                   (unsigned long long)expected);
+}
+
+vfy_verdict vfy_check_zero(vfy_report *r, const char *name, double count)
+{
+    SKIP_IF_MISSING(r, name, count);
+    if (!(count >= 0.0))
+        return record(r, VFY_FAIL, name, "%g (expected 0)", count);
+    return vfy_check_count(r, name, (uint64_t)count, 0);
 }
 
 vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *fmt, ...)

@@ -27,6 +27,8 @@ typedef struct vfy_report {
     size_t failed;
     FILE *echo;   /* if not NULL, each verdict is printed here as it is made */
     const char *group;  /* the case being judged (vfy_run sets it), or NULL */
+    const char *missing;  /* if not NULL: a NaN value is a SKIP with this reason, not a FAIL
+                             (data an external solver did not report; the driver sets it) */
 } vfy_report;
 
 void vfy_report_init(vfy_report *r, FILE *echo);
@@ -65,6 +67,10 @@ vfy_verdict vfy_check_printed(vfy_report *r, const char *name, double value, dou
 
 /* value == expected: counters such as majorant violations. */
 vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uint64_t expected);
+
+/* count == 0 for a count summed from the rows' values (NaN where a solver
+ * did not report it: a SKIP with r->missing's reason, else a FAIL). */
+vfy_verdict vfy_check_zero(vfy_report *r, const char *name, double count);
 
 /* A condition judged by the caller (e.g. a pure check over a run's summary,
  * verify/case_hard.h): PASS when ok, FAIL otherwise, with the detail. */

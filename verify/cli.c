@@ -680,7 +680,7 @@ static int cmd_verify(int argc, char **argv)
         /* another solver's results are never resumed as this one's */
         snprintf(work, sizeof work, "%s/.solver", o.out_dir);
         snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint/solver-%016llx", o.out_dir,
-                 (unsigned long long)vfy_text_hash(a.solver));
+                 (unsigned long long)vfy_solver_identity(a.solver));
         o.solver = &solver;
     }
     o.checkpoint_dir = checkpoints;

@@ -693,10 +693,16 @@ static int reported_quantity(const char *name)
     return 0;
 }
 
-/* The checks of a row, or of the case (row NULL: no guards). */
+/* The checks of a row, or of the case (row NULL: no guards).  On an
+ * external solver's incomplete result, a NaN any rule meets is a SKIP. */
 static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *checks,
                        vfy_report *r)
 {
+    const int incomplete =
+        vfy_external(run->o) && (row != NULL ? row_incomplete(row) : run_incomplete(run));
+    const char *const was = r->missing;
+    if (incomplete)
+        r->missing = "needs quantities the solver did not report";
     for (const vfy_check_spec *c = checks; c && c->name; c++) {
         vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
         if (g == VFY_OMIT)
@@ -709,11 +715,11 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
             continue;
         }
         const char *gone = NULL;   /* an operand an external solver did not report */
-        if (row != NULL && vfy_external(run->o) && row_incomplete(row))
+        if (row != NULL && incomplete)
             gone = operand_missing(run, row, c->value)      ? c->value
                    : operand_missing(run, row, c->expected) ? c->expected
                                                             : NULL;
-        if (row == NULL && vfy_external(run->o) && run_incomplete(run))   /* case checks */
+        if (row == NULL && incomplete)   /* case checks */
             gone = c->value && isnan(lookup(run, NULL, c->value))          ? c->value
                    : c->expected && isnan(lookup(run, NULL, c->expected)) ? c->expected
                                                                           : NULL;
@@ -730,6 +736,7 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
         else
             c->rule(r, name, run, row, c);
     }
+    r->missing = was;
 }
 
 int vfy_parse_columns(const char *spec, vfy_column **cols, size_t *ncols, char **text,
@@ -1052,7 +1059,11 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     vfy_values_set(&run->values, "rows", (double)run->nrows);
     vfy_values_set(&run->values, "outputs", (double)last->res.outputs);
     run_provenance(run);
+    /* the hook's own checks on what an incomplete external result left NaN */
+    if (vfy_external(run->o) && run_incomplete(run))
+        r->missing = "needs quantities the solver did not report";
     sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
+    r->missing = NULL;
     if (status != SIM_OK)
         return status;
     run_checks(run, NULL, d->case_checks, r);

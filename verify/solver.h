@@ -32,6 +32,12 @@ typedef struct vfy_solver {
 int vfy_solver_split(const char *command, char **words, size_t max, char *buf, size_t bufsize,
                      char *msg, size_t msglen);
 
+/* The solver's identity for checkpoints: a hash of the command and of the
+ * contents of every file its words name (the program, found on PATH when
+ * the first word has no '/', and a script or input it is given), so that a
+ * changed solver's results are never resumed as the old one's. */
+uint64_t vfy_solver_identity(const char *command);
+
 /* Simulate scene with the solver: res as vfy_result_read fills it, its
  * cpu_seconds the child's (and its children's) CPU time unless the result
  * reports them, its wall_seconds the run's.  label names the run in
