@@ -317,6 +317,7 @@ static sim_status simulate_external(const sim_scene *scene, const vfy_options *o
                    | (info.has_violations ? 0u : SIM_MISSING_VIOLATIONS);
     snprintf(checkpoint_label, cap, "%s (solver: %s)", label,   /* which solver made it */
              info.solver[0] ? info.solver : "no solver line");
+    snprintf(o->solver->line, sizeof o->solver->line, "%s", info.solver);
     return SIM_OK;
 }
 

@@ -32,7 +32,7 @@ typedef struct vfy_options {
     const char *checkpoint_dir;        /* save every finished simulation there
                                           (checkpoint.h), or NULL */
     int resume;                        /* reuse the matching checkpoints */
-    const struct vfy_solver *solver;   /* an external solver (solver.h: --solver), or
+    struct vfy_solver *solver;         /* an external solver (solver.h: --solver), or
                                           NULL for the built-in engine */
     size_t *stop_countdown;            /* if not NULL and > 0: counts finished
                                           simulations down and requests a stop at 0, as

@@ -1004,8 +1004,10 @@ static void run_provenance(vfy_case_run *run)
     append_field(run, buf, len, ", n = ", field_n, "");
     append_field(run, buf, len, ", N = ", field_ensembles, " ensembles");
     append_field(run, buf, len, ", ", field_outputs, "");
-    if (vfy_external(run->o))
-        snprintf(buf + strlen(buf), len - strlen(buf), "; solver '%s'", run->o->solver->command);
+    if (vfy_external(run->o))   /* the command, and what the solver said it is */
+        snprintf(buf + strlen(buf), len - strlen(buf), "; solver '%s'%s%s%s",
+                 run->o->solver->command, run->o->solver->line[0] ? " (" : "",
+                 run->o->solver->line, run->o->solver->line[0] ? ")" : "");
 }
 
 /* ------------------------------------------------------------ extrapolation */
