@@ -540,17 +540,29 @@ static int is_set(const sim_scene *s, const char *key)
     return sim_scene_key_line(s, key) != 0;
 }
 
+/* The keys of the initial states: two-maxwellians needs all of `two` and
+ * refuses `one`; the other initial states refuse `two`. */
+static const char *const two[] = {"particles.fraction", "particles.mass1",
+                                  "particles.velocity1", "particles.temperature1",
+                                  "particles.mass2", "particles.velocity2",
+                                  "particles.temperature2"};
+static const char *const one[] = {"particles.mass", "particles.temperature",
+                                  "particles.velocity"};
+#define N_TWO (sizeof two / sizeof two[0])
+#define N_ONE (sizeof one / sizeof one[0])
+
+static int in_list(const char *const *list, size_t n, const char *key)
+{
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(list[i], key) == 0)
+            return 1;
+    return 0;
+}
+
 /* Cross-key checks, after the file and the overrides; also sets the exponent
  * that kernel = maxwell (0) or hard-spheres (1) implies. */
 static sim_status check_scene(sim_scene *s, sim_error *err)
 {
-    static const char *const two[] = {"particles.fraction", "particles.mass1",
-                                      "particles.velocity1", "particles.temperature1",
-                                      "particles.mass2", "particles.velocity2",
-                                      "particles.temperature2"};
-    static const char *const one[] = {"particles.mass", "particles.temperature",
-                                      "particles.velocity"};
-
     if (s->scheme == SIM_SCHEME_TIMESTEP && !is_set(s, "scene.dt"))
         return sim_error_set(err, SIM_EINVAL, "scene.scheme",
                              "timestep needs scene.dt (allowed dt > 0)");
@@ -565,7 +577,7 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
                              "averages over the heating's pending Brownian increments)");
 
     int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
-    for (size_t i = 0; i < sizeof two / sizeof two[0]; i++) {
+    for (size_t i = 0; i < N_TWO; i++) {
         if (!mix && is_set(s, two[i]))
             return sim_error_set(err, SIM_EINVAL, two[i],
                                  "only used with initial = two-maxwellians (initial is %s)",
@@ -577,7 +589,7 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
                                  "temperature1, mass2, velocity2, temperature2, all set)",
                                  two[i]);
     }
-    for (size_t i = 0; mix && i < sizeof one / sizeof one[0]; i++)
+    for (size_t i = 0; mix && i < N_ONE; i++)
         if (is_set(s, one[i]))
             return sim_error_set(err, SIM_EINVAL, one[i],
                                  "not used with initial = two-maxwellians (allowed the keys "
@@ -845,13 +857,10 @@ static int key_applies(const sim_scene *s, const char *full)
         return s->scheme == SIM_SCHEME_TIMESTEP;
     if (strcmp(full, "heating.strength") == 0)
         return !s->heating.keep_temperature;
-    if (strcmp(full, "particles.mass") == 0 || strcmp(full, "particles.temperature") == 0
-        || strcmp(full, "particles.velocity") == 0)
+    if (in_list(one, N_ONE, full))
         return !mix;
-    if (strcmp(full, "particles.fraction") == 0 || strncmp(full, "particles.mass", 14) == 0
-        || strncmp(full, "particles.velocity", 18) == 0
-        || strncmp(full, "particles.temperature", 21) == 0)
-        return mix;   /* the keys ending in 1 and 2 */
+    if (in_list(two, N_TWO, full))
+        return mix;
     return 1;
 }
 
