@@ -671,8 +671,8 @@ static int cmd_verify(int argc, char **argv)
                              a.solver_timeout);
     }
     if (a.solver != NULL) {
-        char *words[64], buf[4096], why[128];
-        if (vfy_solver_split(a.solver, words, 64, buf, sizeof buf, why, sizeof why) < 0) {
+        char why[128];
+        if (!vfy_solver_command_ok(a.solver, why, sizeof why)) {
             char text[300];
             snprintf(text, sizeof text, "--solver '%s': %s", a.solver, why);
             return bad_usage("verify", "%s", text);

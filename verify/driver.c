@@ -578,7 +578,7 @@ static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const 
                                                             : (double)res->counts.candidates;
     const double v[] = {(double)res->ensembles, (double)res->outputs, res->cpu_seconds,
                         res->wall_seconds, events,
-                        events > 0 ? 1e9 * res->cpu_seconds / events : isnan(events) ? NAN : 0.0,
+                        events > 0 || isnan(events) ? 1e9 * res->cpu_seconds / events : 0.0,
                         (double)res->counts.collisions, (double)res->counts.background,
                         res->missing & SIM_MISSING_VIOLATIONS ? NAN
                                                               : (double)res->counts.violations,

@@ -19,6 +19,7 @@
 #include "table.h"
 
 #define MAX_WORDS 64
+#define SPLIT_BYTES 4096   /* the words of a command, NUL-separated */
 
 int vfy_solver_split(const char *command, char **words, size_t max, char *buf, size_t bufsize,
                      char *msg, size_t msglen)
@@ -83,7 +84,7 @@ static uint64_t hash_file(uint64_t h, const char *path)
 uint64_t vfy_solver_identity(const char *command)
 {
     uint64_t h = vfy_hash(VFY_HASH_START, command, strlen(command));
-    char *words[MAX_WORDS], buf[4096], why[64];
+    char *words[MAX_WORDS], buf[SPLIT_BYTES], why[64];
     const int n = vfy_solver_split(command, words, MAX_WORDS, buf, sizeof buf, why, sizeof why);
     for (int k = 0; k < n; k++) {
         if (k > 0 || strchr(words[k], '/') != NULL) {
@@ -103,6 +104,12 @@ uint64_t vfy_solver_identity(const char *command)
         }
     }
     return h;
+}
+
+int vfy_solver_command_ok(const char *command, char *msg, size_t msglen)
+{
+    char *words[MAX_WORDS], buf[SPLIT_BYTES];
+    return vfy_solver_split(command, words, MAX_WORDS, buf, sizeof buf, msg, msglen) > 0;
 }
 
 /* word with every {scene} and {out} replaced, in dst; -1 if it does not fit. */
@@ -227,7 +234,7 @@ sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, cons
     snprintf(out_path, sizeof out_path, "%s/%016" PRIx64 ".result", solver->work_dir, key);
     snprintf(log_path, sizeof log_path, "%s/%016" PRIx64 ".log", solver->work_dir, key);
 
-    char *words[MAX_WORDS + 1], buf[4096], expanded[MAX_WORDS][1200];
+    char *words[MAX_WORDS + 1], buf[SPLIT_BYTES], expanded[MAX_WORDS][1200];
     int n = vfy_solver_split(solver->command, words, MAX_WORDS, buf, sizeof buf, why,
                              sizeof why);
     if (n < 0) {
