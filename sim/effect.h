@@ -110,5 +110,6 @@ struct sim_effect {
 sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim_error *err);
+sim_status sim_effect_heat_flux(const sim_scene *scene, sim_effect *effect, sim_error *err);
 
 #endif

@@ -39,7 +39,7 @@
  * ahead, their memory prefetched) with a 32-bit uniform each for the
  * acceptance test that follows (rng.h: exact Bernoulli trials).
  *
- * The time-step scheme (SPEC §5, paper C §3), hard spheres only: a collision
+ * The time-step scheme (SPEC §5, paper C §3), hard spheres: a collision
  * stage of length h draws candidates at the rate R_c = 8 pi gamma C (n - 1) U_max
  * (Bird's (1/2) n omega_max h per stage with omega_max = 16 pi gamma C
  * (n - 1)/n U_max; the fractional remainder is kept for the next stage), each an
@@ -57,6 +57,9 @@
  * bound, so the paper's "omega_max updated when exceeded" never has to act;
  * a drawn particle beyond R would still be counted as a violation.  When R
  * grows within the stage, the remaining stage time is spent at the new rate.
+ * Maxwell molecules and VHS (issue 15: the heat-flux force on any kernel):
+ * the stage fires the jump scheme's candidates (uniform pair, paper A's rule)
+ * at its majorant rate for the stage time, with the same remainder.
  */
 #include <math.h>
 #include <stdint.h>
@@ -476,10 +479,56 @@ static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, 
     run->bound_grew = 0;   /* followed above; no other process shares the bound */
 }
 
+/* One collision stage of the time-step scheme for Maxwell molecules and VHS
+ * (paper A's rule: a uniform pair, accepted with (|g|/U_max)^lambda, e
+ * uniform): floor(credit x rate) candidates at the jump scheme's majorant
+ * rate, fired as the jump scheme fires them; when a collision grows the bound
+ * (VHS), the stage time left is spent at the new rate. */
+static inline void stage_uniform_pair(const sim_effect *e, sim_run *run, void *vstate, double h,
+                                      const enum kernel_case kernel)
+{
+    const collisions_params *p = e->params;
+    collisions_state *s = vstate;
+    double credit = s->credit + h;
+    for (;;) {
+        const double rate = kernel == KERNEL_MAXWELL ? p->prefactor : follow_bound(p, s, run);
+        if (!(rate > 0.0)) {   /* every velocity equal: no collision can happen */
+            credit = 0.0;
+            break;
+        }
+        const double count = floor(credit * rate);
+        if (!(count >= 1.0))
+            break;
+        uint64_t done = 0;
+        while (done < (uint64_t)count) {
+            done++;
+            if (kernel == KERNEL_MAXWELL)
+                fire_maxwell(e, run, vstate, 0.0);
+            else if (fire_vhs(e, run, vstate, 0.0) != rate)
+                break;
+        }
+        credit -= (double)done / rate;
+        if (done == (uint64_t)count)
+            break;
+    }
+    s->credit = fmax(credit, 0.0);
+    run->bound_grew = 0;   /* followed above; no other process shares the bound */
+}
+
+static void stage_maxwell(const sim_effect *e, sim_run *run, void *vstate, double h)
+{
+    stage_uniform_pair(e, run, vstate, h, KERNEL_MAXWELL);
+}
+
+static void stage_vhs(const sim_effect *e, sim_run *run, void *vstate, double h)
+{
+    stage_uniform_pair(e, run, vstate, h, KERNEL_VHS);
+}
+
 static sim_event_stage_fn collisions_select_stage(const sim_effect *e)
 {
     const collisions_params *p = e->params;
-    return p->lambda == 1.0 ? stage_hard_spheres : NULL;
+    return p->lambda == 1.0 ? stage_hard_spheres : p->lambda == 0.0 ? stage_maxwell : stage_vhs;
 }
 
 static const sim_effect_type collisions_type = {
@@ -498,11 +547,6 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
     if (scene->collisions.model != SIM_MODEL_IHS)
         return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.model",
                              "model ehs is not implemented yet (supported: ihs)");
-    if (scene->scheme == SIM_SCHEME_TIMESTEP && scene->collisions.exponent != 1.0)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.kernel",
-                             "the time-step scheme implements hard spheres only (the contact "
-                             "rule of paper C; kernel exponent is %g)",
-                             scene->collisions.exponent);
     collisions_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");

@@ -233,9 +233,6 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
                              scene->particles.first.mass);
     if (scene->shear.present)
         return sim_error_set(err, SIM_EUNSUPPORTED, "shear", "shear flow is not implemented yet");
-    if (scene->heat_flux.present)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "heat-flux",
-                             "the heat-flux force is not implemented yet");
     if (scene->particles.n < 2 || scene->outputs < 2 || !(scene->t_end > 0.0))
         return sim_error_set(err, SIM_EINVAL, "",
                              "scene not validated: n = %zu, outputs = %zu, t_end = %g",
@@ -270,6 +267,13 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         if (status == SIM_OK) {
             e->has_flow = 1;
             e->lazy_flow = !timestep;
+            append_name(e, e->flow.type->name);
+        }
+    }
+    if (status == SIM_OK && scene->heat_flux.present) {   /* refuses [heating] */
+        status = sim_effect_heat_flux(scene, &e->flow, err);
+        if (status == SIM_OK) {
+            e->has_flow = 1;
             append_name(e, e->flow.type->name);
         }
     }
@@ -699,6 +703,7 @@ void sim_engine_evolve(const sim_engine *e, sim_workspace *ws, double *obs, sim_
         double *avg = obs + scene->outputs * e->observables;
         for (size_t k = 0; k < e->nsteady; k++)
             avg[k] = ws->steady_sum[k] / (double)ws->samples;
+        sim_steady_finish(scene, avg);
     }
     if (counts) {
         run->counts.normals = sim_rng_state_of(run->rng)->normals;

@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "rng.h"
 
@@ -9,18 +10,54 @@ static const char *const names[SIM_STEADY_BIN0] = {
     "T", "a2", "a3", "c1", "c3", "mu2", "mu4", "mu4_white", "mu4_gaussian", "mu4_nongaussian",
 };
 
+static const char *const heat_flux_names[SIM_HF_SCALARS] = {
+    "qx", "kappa_prime", "b1", "b2", "b3", "b1_x", "b2_x", "b3_x", "b1_x_outer",
+};
+
 size_t sim_steady_count(const sim_scene *scene)
 {
-    return scene->steady.present ? SIM_STEADY_BIN0 + scene->steady.bins : 0;
+    if (!scene->steady.present)
+        return 0;
+    const size_t bins = scene->steady.bins;
+    return SIM_STEADY_BIN0 + bins + (scene->heat_flux.present ? SIM_HF_SCALARS + 2 * bins : 0);
 }
 
-const char *sim_steady_name(size_t k, char *buf, size_t len)
+size_t sim_steady_heat_flux_first(const sim_scene *scene)
 {
+    return SIM_STEADY_BIN0 + scene->steady.bins;
+}
+
+const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t len)
+{
+    const size_t bins = scene->steady.bins, hf = sim_steady_heat_flux_first(scene);
     if (k < SIM_STEADY_BIN0)
         snprintf(buf, len, "%s", names[k]);
-    else
+    else if (k < hf)
         snprintf(buf, len, "f_%zu", k - SIM_STEADY_BIN0);
+    else if (k < hf + SIM_HF_SCALARS)
+        snprintf(buf, len, "%s", heat_flux_names[k - hf]);
+    else if (k < hf + SIM_HF_SCALARS + bins)
+        snprintf(buf, len, "g1_%zu", k - hf - SIM_HF_SCALARS);
+    else
+        snprintf(buf, len, "beta1_%zu", k - hf - SIM_HF_SCALARS - bins);
     return buf;
+}
+
+int sim_steady_scalar(const sim_scene *scene, size_t k)
+{
+    const size_t hf = sim_steady_heat_flux_first(scene);
+    return k < SIM_STEADY_BIN0 || (k >= hf && k < hf + SIM_HF_SCALARS);
+}
+
+long sim_steady_find(const sim_scene *scene, const char *name)
+{
+    const size_t count = sim_steady_count(scene);
+    for (size_t k = 0; k < count; k++) {
+        char buf[32];
+        if (strcmp(sim_steady_name(scene, k, buf, sizeof buf), name) == 0)
+            return (long)k;
+    }
+    return -1;
 }
 
 double sim_steady_bin_lower(const sim_scene *scene, size_t k)
@@ -78,6 +115,65 @@ static inline void speed_moments(const sim_particles *p, const double V[3], doub
         }
     }
     m[0] = m1, m[1] = m3, m[2] = m4, m[3] = m6;
+}
+
+/* The generalised Laguerre polynomial L_k^{(a)}(x) for k = 1, 2, 3 into
+ * L[0..2] (the three-term recurrence from L_0 = 1, L_1 = 1 + a - x). */
+static inline void laguerre3(double a, double x, double L[3])
+{
+    L[0] = 1.0 + a - x;
+    L[1] = ((3.0 + a - x) * L[0] - (1.0 + a)) / 2.0;
+    L[2] = ((5.0 + a - x) * L[1] - (2.0 + a) * L[0]) / 3.0;
+}
+
+/* Paper D's heat-flux quantities of one sample (steady.h), added to
+ * sum[hf ...] (hf = sim_steady_heat_flux_first). */
+static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, double mass,
+                             const double V[3], double theta, double *sum)
+{
+    static const double P[3] = {4.0 / 5.0, 16.0 / 35.0, 32.0 / 105.0};   /* D Eq. 3.10 */
+    static const double Q[3] = {4.0 / 3.0, 16.0 / 15.0, 32.0 / 35.0};    /* D Eq. 3.12 */
+    const size_t n = p->n, bins = scene->steady.bins;
+    const double w = 1.0 / (double)n, v0 = sqrt(2.0 * theta), inv_v0 = 1.0 / v0;
+    /* eps* = lambda eps, lambda = 1/(sqrt(2) pi n sigma^2), n sigma^2 = 4 gamma C (SPEC §6) */
+    const double lambda = 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate
+                                 * scene->collisions.constant);
+    const double inv_eps = 1.0 / (lambda * scene->heat_flux.strength);
+    const double delta = bins > 0 ? scene->steady.c_max / (double)bins : 1.0;
+    double *hf = sum + sim_steady_heat_flux_first(scene);
+    double *g1 = hf + SIM_HF_SCALARS, *beta1 = g1 + bins;
+    double q = 0.0, b[3] = {0, 0, 0}, bx[3] = {0, 0, 0}, outer = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double c[3] = {(p->v[i][0] - V[0]) * inv_v0, (p->v[i][1] - V[1]) * inv_v0,
+                             (p->v[i][2] - V[2]) * inv_v0};
+        const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2], cx2 = c[0] * c[0];
+        double L[3], Lx[3];
+        laguerre3(1.5, c2, L);
+        laguerre3(0.5, cx2, Lx);
+        q += c2 * c[0];
+        for (int k = 0; k < 3; k++) {
+            b[k] += c[0] * L[k];
+            bx[k] += c[0] * Lx[k];
+        }
+        if (cx2 > 6.0)
+            outer += c[0] * Lx[0];
+        const double ax = fabs(c[0]);
+        if (ax < scene->steady.c_max && bins > 0) {
+            size_t k = (size_t)(ax / delta);
+            if (k >= bins)   /* round-off at the last edge */
+                k = bins - 1;
+            g1[k] += (c[0] > 0.0 ? 1.0 : -1.0) * 0.5 * w / delta * inv_eps;
+            /* per bin here; sim_steady_finish makes it cumulative */
+            beta1[k] += Q[0] * c[0] * Lx[0] * w * inv_eps;
+        }
+    }
+    hf[SIM_HF_QX] += 0.5 * mass * v0 * v0 * v0 * q * w;
+    hf[SIM_HF_KAPPA_PRIME] += -64.0 / (75.0 * sqrt(M_PI)) * q * w * inv_eps;
+    for (int k = 0; k < 3; k++) {
+        hf[SIM_HF_B1 + k] += P[k] * b[k] * w * inv_eps;
+        hf[SIM_HF_B1_X + k] += Q[k] * bx[k] * w * inv_eps;
+    }
+    hf[SIM_HF_B1_X_OUTER] += Q[0] * outer * w * inv_eps;
 }
 
 void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
@@ -141,4 +237,16 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
     sum[SIM_STEADY_MU4_WHITE] += 5.0 * mu2;                   /* (d + 2) mu2 */
     sum[SIM_STEADY_MU4_GAUSSIAN] += 5.0 * (1.0 + a2) * mu2;
     sum[SIM_STEADY_MU4_NONGAUSSIAN] += 2.0 * mu2 * m3 / m1;
+    if (scene->heat_flux.present)
+        heat_flux_sample(scene, p, mass, V, theta, sum);
+}
+
+void sim_steady_finish(const sim_scene *scene, double *avg)
+{
+    if (!scene->heat_flux.present)
+        return;
+    const size_t bins = scene->steady.bins;
+    double *beta1 = avg + sim_steady_heat_flux_first(scene) + SIM_HF_SCALARS + bins;
+    for (size_t k = 1; k < bins; k++)   /* the prefix sum is linear: per bin, then cumulate */
+        beta1[k] += beta1[k - 1];
 }

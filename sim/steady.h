@@ -25,6 +25,29 @@
  * The relations are computed per sample so that the difference between a
  * direct mu4 and an indirect one has its own confidence interval.
  *
+ * With a [heat-flux] section (paper D, SPEC §6), eps* = lambda eps with
+ * lambda = 1/(sqrt(2) pi n sigma^2) and n sigma^2 = 4 gamma C (the hard-sphere
+ * convention, used for every kernel), these follow the bins:
+ *   qx                         (m/2) <|C|^2 C_x>
+ *   kappa_prime                kappa'/kappa0 = -(64/(75 sqrt(pi))) <c^2 c_x>/eps*
+ *                              (kappa' = -q_x/(T eps), kappa0 the elastic first
+ *                              Sonine conductivity; D Eq. 2.47)
+ *   b1, b2, b3                 P_k <c_x L_k^{(3/2)}(c^2)>/eps*, P_k = 4/5, 16/35, 32/105
+ *                              (D Eq. 3.10)
+ *   b1_x, b2_x, b3_x           Q_k <c_x L_k^{(1/2)}(c_x^2)>/eps*, Q_k = 4/3, 16/15, 32/35
+ *                              (D Eq. 3.12)
+ *   b1_x_outer                 b1_x restricted to c_x^2 > 6 (the heat flux carried
+ *                              beyond c_x^2 = 6: D §4 prints 13% at alpha = 1)
+ *   g1_0 ... g1_{bins-1}       g^(1)(c_x)/eps* = [g(c_x) - g(-c_x)]/(2 eps*) averaged
+ *                              over |c_x| in bin k of [0, c_max) (D Eq. 3.15; g the
+ *                              reduced marginal of c_x, ∫ g = 1), so that
+ *                              phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x (D Eq. 4.3)
+ *   beta1_0 ... beta1_{bins-1} beta_1 at the upper edge of bin k: b1_x restricted to
+ *                              |c_x| below it (D Eq. 4.6: beta_1/b'_1 is the part of
+ *                              b'_1, hence of the heat flux, carried by those c_x)
+ * The time averages divide by eps* only once the sample is taken, so eps = 0
+ * gives NaN for everything but qx.
+ *
  * Pair sampling draws from its own random substream (rng.h), so observing
  * never changes the simulated trajectory.
  */
@@ -45,12 +68,30 @@ typedef enum sim_steady_quantity {
     SIM_STEADY_BIN0   /* the first histogram bin; bins follow */
 } sim_steady_quantity;
 
-/* Number of steady quantities of the scene: SIM_STEADY_BIN0 + steady.bins, or
- * 0 without a [steady] section. */
+/* The heat-flux quantities, in order after the bins (offsets from
+ * sim_steady_heat_flux_first); then the g1 bins, then the beta1 bins. */
+typedef enum sim_steady_heat_flux {
+    SIM_HF_QX, SIM_HF_KAPPA_PRIME, SIM_HF_B1, SIM_HF_B2, SIM_HF_B3,
+    SIM_HF_B1_X, SIM_HF_B2_X, SIM_HF_B3_X, SIM_HF_B1_X_OUTER,
+    SIM_HF_SCALARS   /* the first g1 bin */
+} sim_steady_heat_flux;
+
+/* Number of steady quantities of the scene: SIM_STEADY_BIN0 + steady.bins,
+ * plus SIM_HF_SCALARS + 2 steady.bins with [heat-flux]; 0 without [steady]. */
 size_t sim_steady_count(const sim_scene *scene);
 
-/* Name of quantity k ("T", "a2", ..., "mu4_nongaussian", "f_0", ...), in buf. */
-const char *sim_steady_name(size_t k, char *buf, size_t len);
+/* Index of the first heat-flux quantity (qx): SIM_STEADY_BIN0 + steady.bins. */
+size_t sim_steady_heat_flux_first(const sim_scene *scene);
+
+/* Name of quantity k of the scene ("T", "a2", ..., "f_0", ..., "qx", ...,
+ * "g1_0", ..., "beta1_0", ...), in buf. */
+const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t len);
+
+/* Whether quantity k is a single value rather than a bin of a profile. */
+int sim_steady_scalar(const sim_scene *scene, size_t k);
+
+/* The index of the quantity named `name`, or -1. */
+long sim_steady_find(const sim_scene *scene, const char *name);
 
 /* The reduced speed at the lower edge and the centre of bin k. */
 double sim_steady_bin_lower(const sim_scene *scene, size_t k);
@@ -61,5 +102,10 @@ double sim_steady_bin_centre(const sim_scene *scene, size_t k);
  * steady.pairs = 0).  Allocates nothing. */
 void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
                        gsl_rng *rng, double *sum);
+
+/* Turn one ensemble's time averages avg[sim_steady_count(scene)] into the
+ * quantities above (the beta1 bins are sampled per bin and made cumulative
+ * here).  The engine calls it once per ensemble. */
+void sim_steady_finish(const sim_scene *scene, double *avg);
 
 #endif

@@ -216,14 +216,14 @@ gdsmc_add_cli_exact(cli_x_run_shear 2
                     "gdsmc run: tests/scenes/shear.ini: shear: shear flow is not implemented yet"
                     run ${B}/shear.ini)
 gdsmc_add_cli_exact(cli_x_run_heat_flux 2
-                    "gdsmc run: verify/scenes/grw-ex3.ini: heat-flux: the heat-flux force is not implemented yet"
+                    "gdsmc run: verify/scenes/grw-ex3.ini:10: scene.scheme: the heat-flux force couples the particles (through the mean and the temperature) and needs scheme = timestep"
                     run ${S}/grw-ex3.ini --set heat-flux.strength=0.025)
 gdsmc_add_cli_exact(cli_x_run_ehs 2
                     "gdsmc run: verify/scenes/grw-ex3.ini: --set collisions.model: model ehs is not implemented yet (supported: ihs)"
                     run ${S}/grw-ex3.ini --set collisions.model=ehs)
-gdsmc_add_cli_exact(cli_x_run_timestep_maxwell 2
-                    "gdsmc run: verify/scenes/grw-ex3.ini:24: collisions.kernel: the time-step scheme implements hard spheres only (the contact rule of paper C; kernel exponent is 0)"
-                    run ${S}/grw-ex3.ini --set scene.scheme=timestep --set scene.dt=0.01)
+gdsmc_add_cli_exact(cli_x_run_heat_flux_heating 2
+                    "gdsmc run: verify/scenes/ms-gaussian.ini:46: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"
+                    run ${S}/ms-gaussian.ini --set heat-flux.strength=0.025)
 gdsmc_add_cli_exact(cli_x_run_gaussian_jump 2
                     "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise)"
                     run ${S}/grw-ex5.ini --set heating.type=gaussian)

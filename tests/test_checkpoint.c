@@ -77,7 +77,7 @@ static void test_result_file(void **state)
     size_t len = 0;
     FILE *f = open_memstream(&text, &len);
     assert_non_null(f);
-    assert_int_equal(vfy_result_write(f, "test solver 1.0", &a), 0);
+    assert_int_equal(vfy_result_write(f, "test solver 1.0", &s, &a), 0);
     assert_int_equal(fclose(f), 0);
     assert_non_null(strstr(text, "# gdsmc-result 1\n# solver = test solver 1.0\n# n = 8\n"
                                  "# ensembles = 5\n# cpu_seconds = 1.2345678901234567\n"

@@ -57,13 +57,13 @@ static void fill(const sim_scene *s, sim_ensemble_result *r)
     r->cpu_seconds = 0.25;
 }
 
-static char *written(const sim_ensemble_result *r)
+static char *written(const sim_scene *s, const sim_ensemble_result *r)
 {
     char *text = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&text, &len);
     assert_non_null(f);
-    assert_int_equal(vfy_result_write(f, "mine 2.3", r), 0);
+    assert_int_equal(vfy_result_write(f, "mine 2.3", s, r), 0);
     assert_int_equal(fclose(f), 0);
     return text;
 }
@@ -75,7 +75,7 @@ static void round_trip(int steady)
     vfy_result_info info;
     char msg[512];
     fill(&s, &a);
-    char *text = written(&a);
+    char *text = written(&s, &a);
     sim_status st = vfy_result_parse(text, strlen(text), "r.csv", &s, &b, &info, msg, sizeof msg);
     if (st != SIM_OK)
         print_error("%s\n", msg);

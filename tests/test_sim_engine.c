@@ -540,13 +540,7 @@ static void test_unsupported(void **state)
     sim_scene s = heated_maxwell_scene(8, 1);
     sim_engine *e = NULL;
     sim_error err;
-    s.scheme = SIM_SCHEME_TIMESTEP;   /* Maxwell molecules: hard spheres only */
-    s.dt = 0.01;
-    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
-    assert_string_equal(err.key, "collisions.kernel");
-    assert_null(e);
-    s = heated_maxwell_scene(8, 1);   /* the jump scheme runs white noise only */
-    s.heating.type = SIM_HEATING_GAUSSIAN;
+    s.heating.type = SIM_HEATING_GAUSSIAN;   /* the jump scheme runs white noise only */
     assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
     assert_string_equal(err.key, "heating.type");
     s.heating.type = SIM_HEATING_NON_GAUSSIAN;

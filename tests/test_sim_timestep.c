@@ -478,7 +478,7 @@ static void test_steady_maxwellian(void **state)
         double z = (mean - q[i].exact) / sigma, zw = (mean - q[i].wrong) / sigma;
         char name[32];
         print_message("%-10s %.6f (exact %.6f, z = %.2f; wrong z = %.1f)\n",
-                      sim_steady_name((size_t)q[i].k, name, sizeof name), mean, q[i].exact, z,
+                      sim_steady_name(&s, (size_t)q[i].k, name, sizeof name), mean, q[i].exact, z,
                       zw);
         assert_true(fabs(z) < ZMAX);
         assert_true(fabs(zw) > ZMAX);

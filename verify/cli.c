@@ -18,6 +18,7 @@
 #include "scene_ini.h"
 #include "references.h"
 #include "result.h"
+#include "steady.h"
 #include "scene_refs.h"
 #include "checkpoint.h"
 #include "solver.h"
@@ -48,6 +49,7 @@ static const char usage_main[] =
 
 static const char usage_run[] =
     "usage: gdsmc run SCENE [--set SECTION.KEY=VALUE]... [--out FILE.csv] [--result FILE]\n"
+    "                 [--steady FILE.csv]\n"
     "\n"
     "Simulate the scene's N ensembles of n particles and write one CSV row per\n"
     "output time: t, then for each observable its ensemble mean NAME and its\n"
@@ -57,9 +59,15 @@ static const char usage_run[] =
     "version, scene, seed and run counters.\n"
     "\n"
     "  --set S.K=V   override a scene key (same checks as the file), repeatable\n"
-    "  --out FILE    write the CSV to FILE (default: standard output, unless --result)\n"
+    "  --out FILE    write the CSV to FILE (default: standard output, unless --result\n"
+    "                or --steady)\n"
     "  --result FILE write the solver protocol's result file (docs/solver-protocol.md):\n"
     "                every observable's mean and sample variance, 17 digits\n"
+    "  --steady FILE write the scene's steady averages ([steady]: time averages over\n"
+    "                t >= steady.from, per ensemble) as name,mean,ci rows: T, a2, a3, c1,\n"
+    "                c3, mu2, mu4, mu4_*, the speed shells f_K; with [heat-flux] (paper D)\n"
+    "                qx, kappa_prime (kappa'/kappa0), b1 b2 b3, b1_x b2_x b3_x, b1_x_outer,\n"
+    "                g1_K (odd c_x marginal / eps*), beta1_K (docs/cases.md)\n"
     "  --quiet       no progress or summary on standard error\n"
     "\n"
     "Threads: OMP_NUM_THREADS; the numbers do not depend on it.\n";
@@ -187,6 +195,7 @@ static const char usage_sonine[] =
 typedef struct args {
     const char *scene, *out, *suite, *case_name, *scenes;
     const char *result;                      /* run: a solver-protocol result file */
+    const char *steady;                      /* run: the steady averages */
     const char *solver, *solver_timeout;     /* verify: an external solver */
     const char *junit;                       /* verify: a JUnit XML report */
     const char *alpha, *d;                   /* sonine */
@@ -209,6 +218,7 @@ static const option_spec options[] = {
     {"--out", "run reference verify sonine bench", OPT_VALUE, offsetof(args, out)},
     {"--set", "run reference verify", OPT_SET, 0},
     {"--result", "run", OPT_VALUE, offsetof(args, result)},
+    {"--steady", "run", OPT_VALUE, offsetof(args, steady)},
     {"--quiet", "run reference verify", OPT_FLAG, offsetof(args, quiet)},
     {"--list", "reference verify", OPT_FLAG, offsetof(args, list)},
     {"--suite", "verify", OPT_VALUE, offsetof(args, suite)},
@@ -388,6 +398,72 @@ static void print_summary(const args *a, const sim_ensemble_result *res)
                 res->wall_seconds, res->threads);
 }
 
+/* What `gdsmc run` writes, and its writers (each returns nonzero on a
+ * write error, which close_out reports). */
+typedef struct run_output {
+    const sim_scene *scene;
+    const sim_ensemble_result *res;
+    const char *effects;
+} run_output;
+
+static void write_provenance(FILE *f, const run_output *o)
+{
+    fprintf(f, "# gdsmc %s run %s: seed %llu, n = %zu, N = %zu, effects: %s\n", GDSMC_VERSION,
+            o->scene->file, (unsigned long long)o->scene->seed, o->res->n, o->res->ensembles,
+            o->effects[0] ? o->effects : "none (free flight)");
+}
+
+static void write_result(FILE *f, const run_output *o)
+{
+    char solver[64];
+    snprintf(solver, sizeof solver, "gdsmc %s (built-in engine)", GDSMC_VERSION);
+    vfy_result_write(f, solver, o->scene, o->res);
+}
+
+/* --steady: the steady averages (steady.h) as name,mean,ci rows. */
+static void write_steady(FILE *f, const run_output *o)
+{
+    write_provenance(f, o);
+    fputs("name,mean,ci\n", f);
+    for (size_t k = 0; k < o->res->nsteady; k++) {
+        char name[32];
+        fprintf(f, "%s,%.12g,%.6g\n", sim_steady_name(o->scene, k, name, sizeof name),
+                o->res->steady_mean[k], o->res->steady_ci[k]);
+    }
+}
+
+static void write_series(FILE *f, const run_output *o)
+{
+    const sim_ensemble_result *res = o->res;
+    write_provenance(f, o);
+    fprintf(f, "# candidate events %llu, collisions %llu, majorant violations %llu\n",
+            (unsigned long long)res->counts.candidates,
+            (unsigned long long)res->counts.collisions,
+            (unsigned long long)res->counts.violations);
+    fputs("t", f);
+    for (int k = 0; k < SIM_OBS_BASE; k++)
+        fprintf(f, ",%s,%s_ci", sim_observable_name(k), sim_observable_name(k));
+    fputc('\n', f);
+    for (size_t m = 0; m < res->outputs; m++) {
+        fprintf(f, "%.10g", res->t[m]);
+        for (int k = 0; k < SIM_OBS_BASE; k++)
+            fprintf(f, ",%.12g,%.6g", sim_result_mean(res, m, k), sim_result_ci(res, m, k));
+        fputc('\n', f);
+    }
+}
+
+/* Write path (NULL: standard output) with writer, atomically. */
+static int write_output(const char *path, void (*writer)(FILE *, const run_output *),
+                        const run_output *o)
+{
+    char tmp[1100];
+    FILE *f = open_out("run", path, tmp, sizeof tmp);
+    if (f == NULL)
+        return EXIT_BAD_INPUT;
+    writer(f, o);
+    return close_out("run", f, path, tmp);
+}
+
 static int cmd_run(int argc, char **argv)
 {
     args a;
@@ -410,7 +486,13 @@ static int cmd_run(int argc, char **argv)
     char effects[64];
     snprintf(effects, sizeof effects, "%s", sim_engine_effects(engine));
     sim_engine_free(engine);
-    if ((rc = probe_out("run", a.out)) != EXIT_OK || (rc = probe_out("run", a.result)) != EXIT_OK)
+    if (a.steady != NULL && !scene.steady.present) {
+        fprintf(stderr, "gdsmc run: --steady %s: %s has no [steady] section (steady averages "
+                "need one: from, bins, c_max, pairs)\n", a.steady, scene.file);
+        return EXIT_BAD_INPUT;
+    }
+    if ((rc = probe_out("run", a.out)) != EXIT_OK || (rc = probe_out("run", a.result)) != EXIT_OK
+        || (rc = probe_out("run", a.steady)) != EXIT_OK)
         return rc;
 
     vfy_options o = {.progress = a.quiet ? NULL : stderr};
@@ -424,44 +506,17 @@ static int cmd_run(int argc, char **argv)
         return status == SIM_ECANCELED ? EXIT_STOPPED : EXIT_BAD_INPUT;
     }
 
-    if (a.result != NULL) {
-        char tmp[1100], solver[64];
-        snprintf(solver, sizeof solver, "gdsmc %s (built-in engine)", GDSMC_VERSION);
-        FILE *f = open_out("run", a.result, tmp, sizeof tmp);
-        if (f != NULL)
-            vfy_result_write(f, solver, &res);
-        rc = f ? close_out("run", f, a.result, tmp) : EXIT_BAD_INPUT;
-        if (rc != EXIT_OK || a.out == NULL) {
-            print_summary(&a, &res);
-            sim_ensemble_result_free(&res);
-            return rc;
-        }
-    }
-    char tmp[1100];
-    FILE *f = open_out("run", a.out, tmp, sizeof tmp);
-    if (f == NULL) {
-        sim_ensemble_result_free(&res);
-        return EXIT_BAD_INPUT;
-    }
-    fprintf(f, "# gdsmc %s run %s: seed %llu, n = %zu, N = %zu, effects: %s\n", GDSMC_VERSION,
-            scene.file, (unsigned long long)scene.seed, res.n, res.ensembles,
-            effects[0] ? effects : "none (free flight)");
-    fprintf(f, "# candidate events %llu, collisions %llu, majorant violations %llu\n",
-            (unsigned long long)res.counts.candidates, (unsigned long long)res.counts.collisions,
-            (unsigned long long)res.counts.violations);
-    fputs("t", f);
-    for (int k = 0; k < SIM_OBS_BASE; k++)
-        fprintf(f, ",%s,%s_ci", sim_observable_name(k), sim_observable_name(k));
-    fputc('\n', f);
-    for (size_t m = 0; m < res.outputs; m++) {
-        fprintf(f, "%.10g", res.t[m]);
-        for (int k = 0; k < SIM_OBS_BASE; k++)
-            fprintf(f, ",%.12g,%.6g", sim_result_mean(&res, m, k), sim_result_ci(&res, m, k));
-        fputc('\n', f);
-    }
+    const run_output out = {&scene, &res, effects};
+    rc = EXIT_OK;
+    if (a.result != NULL)
+        rc = write_output(a.result, write_result, &out);
+    if (rc == EXIT_OK && a.steady != NULL)
+        rc = write_output(a.steady, write_steady, &out);
+    if (rc == EXIT_OK && (a.out != NULL || (a.result == NULL && a.steady == NULL)))
+        rc = write_output(a.out, write_series, &out);
     print_summary(&a, &res);
     sim_ensemble_result_free(&res);
-    return close_out("run", f, a.out, tmp);
+    return rc;
 }
 
 static int cmd_reference(int argc, char **argv)

@@ -588,9 +588,11 @@ static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const 
         snprintf(name, sizeof name, "%s%s", names[k], suffix);
         vfy_values_set(&row->values, name, v[k]);
     }
-    for (size_t k = 0; suffix[0] == '\0' && k < res->nsteady && k < SIM_STEADY_BIN0; k++) {
+    for (size_t k = 0; suffix[0] == '\0' && k < res->nsteady; k++) {
         char name[32], ci[40];
-        sim_steady_name(k, name, sizeof name);
+        if (!sim_steady_scalar(&row->solver, k))
+            continue;
+        sim_steady_name(&row->solver, k, name, sizeof name);
         snprintf(ci, sizeof ci, "%s_ci", name);
         vfy_values_set(&row->values, name, res->steady_mean[k]);
         vfy_values_set(&row->values, ci, res->steady_ci[k]);
@@ -679,18 +681,13 @@ static int operand_missing(const vfy_case_run *run, const vfy_row *row, const ch
 
 /* Whether name is a quantity a result file reports itself (an observable,
  * of a variant too, a steady quantity or a count), not one made from them. */
-static int reported_quantity(const char *name)
+static int reported_quantity(const vfy_row *row, const char *name)
 {
     const size_t len = strcspn(name, "@");
     if (sim_observable_find(name, len) >= 0 || strcmp(name, "violations") == 0
         || strcmp(name, "events") == 0)
         return 1;
-    for (size_t k = 0; k < SIM_STEADY_BIN0; k++) {
-        char q[32];
-        if (strcmp(sim_steady_name(k, q, sizeof q), name) == 0)
-            return 1;
-    }
-    return 0;
+    return row != NULL && sim_steady_find(&row->solver, name) >= 0;
 }
 
 /* The checks of a row, or of the case (row NULL: no guards).  On an
@@ -725,7 +722,7 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
                                                                           : NULL;
         if (gone != NULL) {
             snprintf(why, sizeof why,
-                     reported_quantity(gone) ? "%s not reported by the solver"
+                     reported_quantity(row, gone) ? "%s not reported by the solver"
                                              : "%s needs quantities the solver did not report",
                      gone);
             vfy_skip(r, name, why);

@@ -18,7 +18,8 @@ static double sample_variance(double var, size_t N)
     return N > 1 ? var * (double)N / (double)(N - 1) : 0.0;
 }
 
-int vfy_result_write(FILE *f, const char *solver, const sim_ensemble_result *res)
+int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
+                     const sim_ensemble_result *res)
 {
     const size_t N = res->ensembles;
     fprintf(f, "# gdsmc-result %d\n# solver = %s\n# n = %zu\n# ensembles = %zu\n",
@@ -40,7 +41,7 @@ int vfy_result_write(FILE *f, const char *solver, const sim_ensemble_result *res
         fputs("# steady\nname,mean,var\n", f);
         for (size_t k = 0; k < res->nsteady; k++) {
             char name[32];
-            fprintf(f, "%s,%.17g,%.17g\n", sim_steady_name(k, name, sizeof name),
+            fprintf(f, "%s,%.17g,%.17g\n", sim_steady_name(scene, k, name, sizeof name),
                     res->steady_mean[k], sample_variance(res->steady_var[k], N));
         }
     }
@@ -309,7 +310,7 @@ static sim_status steady_section(reader *r, const sim_scene *scene, sim_ensemble
             break;
         }
         size_t k = 0;
-        while (k < res->nsteady && strcmp(sim_steady_name(k, qname, sizeof qname), name) != 0)
+        while (k < res->nsteady && strcmp(sim_steady_name(scene, k, qname, sizeof qname), name) != 0)
             k++;
         if (k == res->nsteady)
             status = fail(r, r->line, "'%s' is not a steady quantity of this scene (allowed "

@@ -44,7 +44,8 @@ typedef struct vfy_result_info {
  * seconds.  The engine's population variances become sample variances
  * (times N/(N - 1); 0 for N = 1).  Returns 0, or -1 when f reports an
  * error. */
-int vfy_result_write(FILE *f, const char *solver, const sim_ensemble_result *res);
+int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
+                     const sim_ensemble_result *res);
 
 /* Read the result file at path for scene (its output times, n, N and steady
  * quantities) into res: the means as reported, the variances as the
