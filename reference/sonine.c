@@ -5,6 +5,8 @@
 
 #include <math.h>
 
+#include "transport.h"
+
 static const double PI = 3.14159265358979323846;
 
 static int alpha_ok(double alpha) { return alpha >= 0.0 && alpha <= 1.0; }
@@ -218,6 +220,7 @@ size_t ref_sonine_all(double alpha, double d, ref_sonine_value *out, size_t cap)
     const double a2_ga = ref_sonine_a2_gaussian_alt(alpha, d);
     const double a2_ng = ref_sonine_a2_nongaussian(alpha, d);
     const double a2_ngf = ref_sonine_a2_nongaussian_fit(alpha, d);
+    const int elastic = d == 3.0; /* the exact elastic solution is for hard spheres */
     const ref_sonine_value all[REF_SONINE_ALL_COUNT] = {
         {"beta_1", ref_sonine_beta(1.0, d), "(A.7)"},
         {"beta_3", ref_sonine_beta(3.0, d), "(A.7)"},
@@ -251,6 +254,31 @@ size_t ref_sonine_all(double alpha, double d, ref_sonine_value *out, size_t cap)
          "(42), mu2^(0)"},
         {"Aprime_nongaussian", ref_sonine_tail_Aprime_nongaussian(alpha, d),
          "(52), loss term only, a2 = 0"},
+        /* Paper D (SPEC §6), transport.h. */
+        {"zeta_star", ref_transport_zeta_star(alpha, d), "D (2.14) at a2 (40) = D (2.16)"},
+        {"nu_kappa_star", ref_transport_nu_kappa_star(alpha, d), "D (2.46)"},
+        {"kappa_over_kappa0", ref_transport_kappa_star(alpha, d), "D (2.41), (2.47)"},
+        {"kappa_prime_over_kappa0", ref_transport_kappa_prime_star(alpha, d),
+         "D (2.42), (2.47)"},
+        {"mu_star", ref_transport_mu_star(alpha, d), "D (2.38)"},
+        {"zeta_star_modified", ref_transport_zeta_star_modified(alpha, d),
+         "D (2.14), modified first Sonine (D ref. [28])"},
+        {"nu_kappa_star_modified", ref_transport_nu_kappa_star_modified(alpha, d),
+         "modified first Sonine (D ref. [28])"},
+        {"kappa_over_kappa0_modified", ref_transport_kappa_star_modified(alpha, d),
+         "D (2.41), modified first Sonine (D ref. [28])"},
+        {"kappa_prime_over_kappa0_modified", ref_transport_kappa_prime_star_modified(alpha, d),
+         "D (2.42), modified first Sonine (D ref. [28])"},
+        {"mu_star_modified", ref_transport_mu_star_modified(alpha, d),
+         "D (2.38), modified first Sonine (D ref. [28])"},
+        {"kappa_elastic_exact", elastic ? ref_transport_kappa_elastic_exact() : NAN,
+         "elastic Sonine expansion to convergence (D ref. [37]), d = 3 only"},
+        {"b1_elastic_exact", elastic ? ref_transport_b_elastic_exact(1) : NAN,
+         "D (3.10), elastic exact, d = 3 only"},
+        {"b2_elastic_exact", elastic ? ref_transport_b_elastic_exact(2) : NAN,
+         "D (3.10), elastic exact, d = 3 only"},
+        {"b3_elastic_exact", elastic ? ref_transport_b_elastic_exact(3) : NAN,
+         "D (3.10), elastic exact, d = 3 only"},
     };
     for (size_t i = 0; i < REF_SONINE_ALL_COUNT && i < cap; i++)
         out[i] = all[i];

@@ -141,8 +141,8 @@ double ref_sonine_tail_Aprime_nongaussian(double alpha, double d);
 /* ------------------------------------------------------ the full listing */
 
 /* One named value of the listing: name (a C identifier, used as the CSV key
- * by `gdsmc sonine`), value, and source (paper C equation numbers, static
- * strings). */
+ * by `gdsmc sonine`), value, and source (paper C or paper D equation numbers,
+ * static strings). */
 typedef struct ref_sonine_value {
     const char *name;
     double value;
@@ -150,7 +150,7 @@ typedef struct ref_sonine_value {
 } ref_sonine_value;
 
 /* Number of values ref_sonine_all lists; an array of this size holds them. */
-#define REF_SONINE_ALL_COUNT 27
+#define REF_SONINE_ALL_COUNT 41
 
 /* Every Sonine value at (alpha, d), in a fixed order: beta_1, beta_3, mu2_0,
  * mu2_1, mu4_0, mu4_1, the six a2 estimates (a2_white_noise (10),
@@ -161,8 +161,15 @@ typedef struct ref_sonine_value {
  * mu2_nongaussian, mu4_nongaussian at (50); mu2_nongaussian_fit,
  * mu4_nongaussian_fit by (72), (73) at (76)), and the tails A_white_noise,
  * A_gaussian, A_white_noise_mu2_0 and A_gaussian_mu2_0 (with mu2^(0)), and
- * Aprime_nongaussian.  d = 3-only values are NaN at other d; tail amplitudes
- * are +inf at alpha = 1.
+ * Aprime_nongaussian; then paper D's heat-flux coefficients (SPEC §6,
+ * transport.h): the first Sonine approximation zeta_star, nu_kappa_star,
+ * kappa_over_kappa0, kappa_prime_over_kappa0, mu_star (D (2.14), (2.46),
+ * (2.41), (2.42), (2.38) at a2 (40) = D (2.16)), the same five with the
+ * suffix _modified (the modified first Sonine approximation of D ref. [28]),
+ * and the exact elastic solution kappa_elastic_exact, b1_elastic_exact,
+ * b2_elastic_exact, b3_elastic_exact (independent of alpha; d = 3 only;
+ * computed at the first call, about 0.6 s, then cached).  d = 3-only
+ * values are NaN at other d; tail amplitudes are +inf at alpha = 1.
  *
  * Writes min(REF_SONINE_ALL_COUNT, cap) values to out (out may be NULL when
  * cap is 0) and returns REF_SONINE_ALL_COUNT; returns 0 and writes nothing

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sonine.h"
+#include "transport.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -390,13 +391,29 @@ static void test_all(void **state)
             {"A_white_noise_mu2_0", ref_sonine_tail_A_white_noise_mu2(ref_sonine_mu2_0(a, d), d)},
             {"A_gaussian_mu2_0", ref_sonine_tail_A_gaussian_mu2(ref_sonine_mu2_0(a, d), d)},
             {"Aprime_nongaussian", ref_sonine_tail_Aprime_nongaussian(a, d)},
+            /* paper D (transport.h); the exact elastic values are d = 3 only */
+            {"zeta_star", ref_transport_zeta_star(a, d)},
+            {"nu_kappa_star", ref_transport_nu_kappa_star(a, d)},
+            {"kappa_over_kappa0", ref_transport_kappa_star(a, d)},
+            {"kappa_prime_over_kappa0", ref_transport_kappa_prime_star(a, d)},
+            {"mu_star", ref_transport_mu_star(a, d)},
+            {"zeta_star_modified", ref_transport_zeta_star_modified(a, d)},
+            {"nu_kappa_star_modified", ref_transport_nu_kappa_star_modified(a, d)},
+            {"kappa_over_kappa0_modified", ref_transport_kappa_star_modified(a, d)},
+            {"kappa_prime_over_kappa0_modified", ref_transport_kappa_prime_star_modified(a, d)},
+            {"mu_star_modified", ref_transport_mu_star_modified(a, d)},
+            {"kappa_elastic_exact", d == 3.0 ? ref_transport_kappa_elastic_exact() : NAN},
+            {"b1_elastic_exact", d == 3.0 ? ref_transport_b_elastic_exact(1) : NAN},
+            {"b2_elastic_exact", d == 3.0 ? ref_transport_b_elastic_exact(2) : NAN},
+            {"b3_elastic_exact", d == 3.0 ? ref_transport_b_elastic_exact(3) : NAN},
         };
         assert_int_equal(sizeof want / sizeof want[0], REF_SONINE_ALL_COUNT);
         for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
             assert_same(lookup(v, n, want[i].name), want[i].value, 0, 0);
         /* d = 3-only values are NaN at d = 2, the others finite. */
         for (size_t i = 0; i < n; i++) {
-            if (d == 2.0 && strstr(v[i].name, "nongaussian_fit"))
+            if (d == 2.0 && (strstr(v[i].name, "nongaussian_fit")
+                             || strstr(v[i].name, "elastic_exact")))
                 assert_true(isnan(v[i].value));
             else
                 assert_true(isfinite(v[i].value));
