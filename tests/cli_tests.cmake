@@ -32,6 +32,18 @@ gdsmc_add_cli_test(cli_verify_gate_right_solver 0
                    verify --suite quick --case grw-ex3 --out ${CMAKE_CURRENT_BINARY_DIR}/gate-right)
 set_tests_properties(cli_verify_gate_wrong_solver cli_verify_gate_right_solver
                      PROPERTIES LABELS verification)
+# Paper D: a heat-flux force of the wrong sign, or half the force (the
+# factor 1/2 of D Eq. 4.1 applied twice), fails msg-kappa at quick sizes.
+gdsmc_add_cli_test(cli_verify_msg_wrong_sign 1
+                   "\nFAIL  msg-kappa alpha=1.0 eps\\*=0.025 kappa' within 5% of first Sonine: -"
+                   verify --suite quick --case msg-kappa --solver-set heat-flux.strength=-0.025
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/msg-wrong-sign)
+gdsmc_add_cli_test(cli_verify_msg_half_force 1
+                   "\nFAIL  msg-kappa alpha=1.0 eps\\*=0.025 kappa' within 5% of first Sonine: 0\\.[3-6]"
+                   verify --suite quick --case msg-kappa --solver-set heat-flux.strength=0.0125
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/msg-half-force)
+set_tests_properties(cli_verify_msg_wrong_sign cli_verify_msg_half_force
+                     PROPERTIES LABELS verification)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 # at t = 0: T_exact = 1, E T_n = 1 - 1/n = 63/64, E T_raw = 1
 gdsmc_add_cli_test(cli_reference_ex3 0 "\nt,T_exact,T_finite_n,T_raw_finite_n\n0,1,0\\.984375,1\n0\\.1,1\\.12042752"
@@ -84,6 +96,16 @@ gdsmc_add_cli_test(cli_sonine_mu4_0 0 "name,value.*mu4_0,10\\.9248886721"
                    sonine --alpha 0.2)
 gdsmc_add_cli_test(cli_sonine_tails 0 "A_white_noise,1\\.98767.*A_gaussian,4\\.41153"
                    sonine --alpha 0.4)
+# paper D at alpha = 0.5 (SPEC §6: 1.31870, 1.90108) and the exact elastic value
+gdsmc_add_cli_test(cli_sonine_kappa 0
+                   "kappa_over_kappa0,1\\.90108.*kappa_prime_over_kappa0,1\\.31870.*kappa_elastic_exact,1\\.025218"
+                   sonine --alpha 0.5)
+# --steady: paper D's steady averages as name,mean,ci (T stays T0 = 1/2 exactly)
+gdsmc_add_cli_test(cli_run_steady 0
+                   "name,mean,ci\nT,0\\.5,[^\n]*\n.*\nkappa_prime,[01]\\.[0-9]+,.*\nb1_x_outer,.*\ng1_0,.*\nbeta1_49,"
+                   run ${S}/msg.ini --set particles.n=2000 --set particles.ensembles=2
+                   --set scene.t_end=3 --set scene.outputs=7 --set steady.from=1
+                   --set heat-flux.strength=0.2 --quiet --steady /dev/stdout)
 gdsmc_add_cli_test(cli_sonine_out 0 "^$"
                    sonine --alpha 0.2 --out ${CMAKE_CURRENT_BINARY_DIR}/sonine-0.2.csv)
 gdsmc_add_cli_test(cli_sonine_d2 0 "beta_1,2[^.0-9].*a2_nongaussian_fit,nan"
@@ -215,6 +237,9 @@ gdsmc_add_cli_exact(cli_x_run_bad_override 2
 gdsmc_add_cli_exact(cli_x_run_shear 2
                     "gdsmc run: tests/scenes/shear.ini: shear: shear flow is not implemented yet"
                     run ${B}/shear.ini)
+gdsmc_add_cli_exact(cli_x_run_steady_without 2
+                    "gdsmc run: --steady s.csv: verify/scenes/grw-ex3.ini has no [steady] section (steady averages need one: from, bins, c_max, pairs)"
+                    run ${S}/grw-ex3.ini --steady s.csv)
 gdsmc_add_cli_exact(cli_x_run_heat_flux 2
                     "gdsmc run: verify/scenes/grw-ex3.ini:10: scene.scheme: the heat-flux force couples the particles (through the mean and the temperature) and needs scheme = timestep"
                     run ${S}/grw-ex3.ini --set heat-flux.strength=0.025)

@@ -19,6 +19,8 @@ extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3, vfy_brs_ex4, v
 /* case_ms.c (paper C) */
 extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
     vfy_ms_table1, vfy_ms_tails;
+/* case_msg.c (paper D) */
+extern const vfy_case_desc vfy_msg_kappa, vfy_msg_sonine, vfy_msg_distribution;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
@@ -59,6 +61,12 @@ static const vfy_case cases[] = {
      &vfy_ms_table1},
     {"ms-tails", "ms", "paper C Figs. 3, 7: high-energy tails G(c), fitted A vs theory", 0,
      &vfy_ms_tails},
+    {"msg-kappa", "msg", "paper D Figs. 1, 3: kappa'/kappa0 vs alpha from the heat-flux force,"
+     " first Sonine, eps* -> 0 at alpha = 1 vs the exact elastic value", 1, &vfy_msg_kappa},
+    {"msg-sonine", "msg", "paper D Figs. 2, 4: Sonine coefficients b'_1..b'_3 from both"
+     " estimators vs alpha", 1, &vfy_msg_sonine},
+    {"msg-distribution", "msg", "paper D Figs. 5-7: phi(c_x^2), its truncations, beta_1/b'_1,"
+     " the heat flux from c_x^2 <= 6", 1, &vfy_msg_distribution},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"

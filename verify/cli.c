@@ -39,7 +39,8 @@ static const char usage_main[] =
     "  run SCENE        simulate a scene; CSV of ensemble means and confidence half-widths\n"
     "  reference SCENE  the deterministic references that apply to a scene, as CSV\n"
     "  verify           run verification cases and write tables and figures to reports/\n"
-    "  sonine           Sonine-approximation values of paper C (a2, mu2, mu4, tails), CSV\n"
+    "  sonine           Sonine-approximation values of papers C and D (a2, mu2, mu4, tails;\n"
+    "                   kappa', kappa, mu, the exact elastic conductivity), CSV\n"
     "  bench            throughput of the engine against a bare floor loop, one core\n"
     "\n"
     "  gdsmc COMMAND --help   options of a command\n"
@@ -88,7 +89,7 @@ static const char usage_reference[] =
     "\n"
     "  --list   every reference the verification cases name, as CSV name,kind,what:\n"
     "           the series above and the values at a scene's restitution (paper C's\n"
-    "           Sonine estimates)\n";
+    "           and D's Sonine estimates, the exact elastic conductivity)\n";
 
 static const char usage_verify[] =
     "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME] [--out DIR]\n"
@@ -170,7 +171,7 @@ static const char usage_bench[] =
 static const char usage_sonine[] =
     "usage: gdsmc sonine --alpha A [--d D] [--out FILE.csv]\n"
     "\n"
-    "Print every Sonine-approximation value of paper C (SPEC section 5) at\n"
+    "Print every Sonine-approximation value of papers C and D (SPEC sections 5, 6) at\n"
     "restitution coefficient A as CSV: a '#' line, the header 'name,value', then one\n"
     "row per value (15 significant digits). Paper C's equation numbers:\n"
     "  beta_1 beta_3             beta_n, (A.7)\n"
@@ -180,6 +181,12 @@ static const char usage_sonine[] =
     "  mu2_X, mu4_X              mu2, mu4 = mu^(0) + mu^(1) a2, (26), at a2_X for X =\n"
     "                            white_noise, gaussian, gaussian_alt, nongaussian;\n"
     "                            mu2/mu4_nongaussian_fit by (72), (73) at (76)\n"
+    "Paper D (SPEC section 6), first Sonine with a2 of (C.40): zeta_star (2.14),\n"
+    "nu_kappa_star (2.46), kappa_over_kappa0 (2.41), kappa_prime_over_kappa0 (2.42),\n"
+    "mu_star (2.38); the same with the HCS weight, *_modified (D ref. [28]); and,\n"
+    "d = 3 only, the linearised elastic Boltzmann equation solved by a Sonine\n"
+    "expansion to convergence: kappa_elastic_exact (1.025218), b1_elastic_exact ...\n"
+    "b3_elastic_exact (D Eq. 3.10)\n"
     "  A_white_noise             tail f ~ exp(-A c^1.5), (36), mu2 at a2 (10)\n"
     "  A_gaussian                tail f ~ exp(-A c), (42), mu2 at a2 (40)\n"
     "  A_white_noise_mu2_0, A_gaussian_mu2_0   the same with mu2^(0)\n"
@@ -619,7 +626,7 @@ static int cmd_sonine(int argc, char **argv)
     FILE *f = open_out("sonine", out, tmp, sizeof tmp);
     if (f == NULL)
         return EXIT_BAD_INPUT;
-    fprintf(f, "# gdsmc %s sonine: alpha = %.15g, d = %.15g (paper C, Sonine approximation)\n",
+    fprintf(f, "# gdsmc %s sonine: alpha = %.15g, d = %.15g (papers C and D, Sonine approximation)\n",
             GDSMC_VERSION, alpha, d);
     fputs("name,value\n", f);
     for (size_t i = 0; i < n; i++)

@@ -22,6 +22,24 @@ int vfy_gnuplot(const char *script_path)
 
 /* Report file `name` `suffix` of o (its path into path), begun as
  * vfy_file_begin does, the provenance comment lines first. */
+
+/* s as the inside of a gnuplot single-quoted string ('' is a quote), in one
+ * of four rotating buffers (a script line names up to four texts). */
+static const char *gp_text(const char *s)
+{
+    static char ring[4][512];
+    static unsigned next;
+    char *out = ring[next++ % 4];
+    size_t k = 0;
+    for (; *s && k + 2 < sizeof ring[0]; s++) {
+        if (*s == '\'')
+            out[k++] = '\'';
+        out[k++] = *s;
+    }
+    out[k] = '\0';
+    return out;
+}
+
 static FILE *begin_file(const vfy_options *o, const char *name, const char *suffix,
                         const char *comment, char *path, size_t pathlen, char *tmp,
                         size_t tmplen)
@@ -100,18 +118,18 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
         return -1;
     fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
                  "plot",
-            f->title, f->xlabel, f->ylabel,
+            gp_text(f->title), gp_text(f->xlabel), gp_text(f->ylabel),
             f->logx && f->logy ? "set logscale xy\n"
             : f->logy          ? "set logscale y\n"
             : f->logx          ? "set logscale x\n"
                                : "");
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, "%s '%s' skip 1 using 1:%zu with lines lw 2 dt %zu title '%s'",
-                j ? "," : "", theory, j + 2, j + 1, f->curves[j]);
+                j ? "," : "", theory, j + 2, j + 1, gp_text(f->curves[j]));
     for (size_t j = 0; j < f->nseries; j++)
         fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %zu title '%s ± c'",
                 f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j, 5 + 2 * j,
-                f->series[j]);
+                gp_text(f->series[j]));
     fputc('\n', out);
     return finish_script(o, out, tmp, gp);
 }
@@ -150,13 +168,13 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
                "set ylabel '%s'\nset logscale xy\nset format y '%%.0e'\n"
                "set grid\nset key outside right top\n"
                "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
-            title, ylabel);
+            gp_text(title), gp_text(ylabel));
     for (size_t s = 0; s < nseries; s++)
         fprintf(f, "%s '%s' index %zu using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc %zu "
                    "title '%s', '' index %zu using 1:3 with lines dt 3 lw 2 lc %zu notitle, "
                    "'' index %zu using 1:2:4 with labels offset 0.6,0.7 font ',7' left "
                    "tc lt %zu notitle",
-                s ? "," : "", data, s, s + 1, series[s].title, s, s + 1, s, s + 1);
+                s ? "," : "", data, s, s + 1, gp_text(series[s].title), s, s + 1, s, s + 1);
     if (pred->count > 0)
         fprintf(f, ", '%s' index %zu using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' "
                    "title 'predicted cheapest per target (model)', '' index %zu using 1:2:4 "
@@ -206,12 +224,12 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
     if (f == NULL)
         return -1;
     fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key top right\n",
-            x_from, quantity);
+            x_from, gp_text(quantity));
     size_t panels = one_panel_per_row ? (rows < 4 ? rows : 4) : 1;
     if (one_panel_per_row)
-        fprintf(f, "set multiplot layout 2,2 title '%s'\n", title);
+        fprintf(f, "set multiplot layout 2,2 title '%s'\n", gp_text(title));
     else
-        fprintf(f, "set title '%s'\n", title);
+        fprintf(f, "set title '%s'\n", gp_text(title));
     for (size_t p = 0; p < panels; p++) {
         size_t first = one_panel_per_row ? p : 0, last = one_panel_per_row ? p + 1 : rows;
         if (one_panel_per_row)
@@ -219,7 +237,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
         fprintf(f, "plot");
         for (size_t j = 0; j < nref; j++)
             fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt 2 lw 2 title '%s'",
-                    j ? "," : "", path, 2 + j, ref_names[j]);
+                    j ? "," : "", path, 2 + j, gp_text(ref_names[j]));
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
             char label[64];

@@ -7,6 +7,7 @@
 #include "heated.h"
 #include "scene_refs.h"
 #include "sonine.h"
+#include "transport.h"
 
 /* Paper C's estimates in d = 3 at the scene's restitution coefficient. */
 #define SONINE(fn)                                                              \
@@ -27,6 +28,34 @@ SONINE(mu4_1)
 SONINE(tail_A_white_noise)
 SONINE(tail_A_gaussian)
 #undef SONINE
+
+/* Paper D's first Sonine approximations in d = 3 at the scene's alpha, and
+ * the exact elastic solution (reference/transport.h). */
+#define TRANSPORT(fn)                                                           \
+    static double fn##_at(const sim_scene *s)                                   \
+    {                                                                           \
+        return ref_transport_##fn(s->collisions.restitution, 3.0);              \
+    }
+TRANSPORT(kappa_prime_star)
+TRANSPORT(kappa_prime_star_modified)
+TRANSPORT(kappa_star)
+TRANSPORT(mu_star)
+#undef TRANSPORT
+static double kappa_elastic_at(const sim_scene *s)
+{
+    (void)s;
+    return ref_transport_kappa_elastic_exact();
+}
+#define ELASTIC_B(k)                                                            \
+    static double b##k##_elastic_at(const sim_scene *s)                         \
+    {                                                                           \
+        (void)s;                                                                \
+        return ref_transport_b_elastic_exact(k);                                \
+    }
+ELASTIC_B(1)
+ELASTIC_B(2)
+ELASTIC_B(3)
+#undef ELASTIC_B
 
 /* Paper B's hard-sphere closures' steady temperature (GSL Brent root of
  * dT/dt at u = u_B), for hard spheres in a hard-sphere background. */
@@ -85,6 +114,23 @@ static const vfy_reference registry[] = {
      tail_A_gaussian_at},
     {"T_steady_sonine", VFY_REF_VALUE,
      "paper A Ex 5: steady T of the first-Sonine closure (a2 from C.10)", T_steady_sonine_at},
+    /* values at the scene's alpha: paper D, d = 3 */
+    {"kappa_prime_sonine", VFY_REF_VALUE,
+     "paper D Eqs. (2.42), (2.46)-(2.47): kappa'/kappa0, first Sonine (a2 from C.40)",
+     kappa_prime_star_at},
+    {"kappa_prime_modified", VFY_REF_VALUE,
+     "paper D ref. [28]: kappa'/kappa0, modified first Sonine (HCS weight)",
+     kappa_prime_star_modified_at},
+    {"kappa_sonine", VFY_REF_VALUE, "paper D Eq. (2.41): kappa/kappa0, first Sonine",
+     kappa_star_at},
+    {"mu_star_sonine", VFY_REF_VALUE, "paper D Eq. (2.38): mu* = 2 (kappa - kappa')/kappa0",
+     mu_star_at},
+    {"kappa_elastic_exact", VFY_REF_VALUE,
+     "kappa/kappa0 of elastic hard spheres, converged Sonine expansion (1.025218)",
+     kappa_elastic_at},
+    {"b1_elastic_exact", VFY_REF_VALUE, "b'_1 of the exact elastic solution", b1_elastic_at},
+    {"b2_elastic_exact", VFY_REF_VALUE, "b'_2 of the exact elastic solution", b2_elastic_at},
+    {"b3_elastic_exact", VFY_REF_VALUE, "b'_3 of the exact elastic solution", b3_elastic_at},
     /* values of paper B's hard-sphere scenes */
     {"T_star_le", VFY_REF_VALUE, "paper B (B.21): steady T of the local-equilibrium closure",
      T_star_le_at},

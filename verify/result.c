@@ -315,7 +315,9 @@ static sim_status steady_section(reader *r, const sim_scene *scene, sim_ensemble
         if (k == res->nsteady)
             status = fail(r, r->line, "'%s' is not a steady quantity of this scene (allowed "
                           "T, a2, a3, c1, c3, mu2, mu4, mu4_white, mu4_gaussian, "
-                          "mu4_nongaussian, f_0 to f_%zu)", name, scene->steady.bins - 1);
+                          "mu4_nongaussian, f_0 to f_%zu%s)", name, scene->steady.bins - 1,
+                          scene->heat_flux.present ? ", and the heat-flux quantities of "
+                                                     "docs/solver-protocol.md" : "");
         else if (seen[k])
             status = fail(r, r->line, "%s appears twice", name);
         else if (field(r, 1, text, sizeof text), (why = number(text, &mean)) != NULL)
