@@ -1,7 +1,7 @@
 /* Unit tests of the Sonine-approximation formulas of paper C (sonine.h).
  * Every known answer names its source: SPEC = /work/shared/SPEC.md §5, "(N)"
  * = paper C's Eq. (N), "Table 1" = paper C's Table 1. */
-#include "test_util.h"
+#include "test_reference_util.h"
 
 #include <string.h>
 
@@ -332,15 +332,6 @@ static void test_tails(void **state)
 }
 
 /* ------------------------------------------------------ the listing */
-
-static double lookup(const ref_sonine_value *v, size_t n, const char *name)
-{
-    for (size_t i = 0; i < n; i++)
-        if (strcmp(v[i].name, name) == 0)
-            return v[i].value;
-    fail_msg("no value named %s", name);
-    return NAN;
-}
 
 static void test_all(void **state)
 {

@@ -418,15 +418,6 @@ static void test_elastic_exact(void **state)
 
 /* ------------------------------------------------------ the listing */
 
-static double lookup(const ref_sonine_value *v, size_t n, const char *name)
-{
-    for (size_t i = 0; i < n; i++)
-        if (strcmp(v[i].name, name) == 0)
-            return v[i].value;
-    fail_msg("no value named %s", name);
-    return NAN;
-}
-
 static void test_listing(void **state)
 {
     (void)state;

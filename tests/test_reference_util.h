@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "ode.h"
+#include "sonine.h"
 #include "test_util.h"
 
 static inline void grid(double *t, size_t n, double t_end)
@@ -34,6 +35,17 @@ static inline void assert_failure(ref_status st, ref_status expected, const char
     assert_non_null(strstr(msg, frag1));
     if (frag2)
         assert_non_null(strstr(msg, frag2));
+}
+
+/* The value named `name` of a listing (ref_sonine_all); fails the test if
+ * there is none. */
+static inline double lookup(const ref_sonine_value *v, size_t n, const char *name)
+{
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(v[i].name, name) == 0)
+            return v[i].value;
+    fail_msg("no value named %s", name);
+    return NAN;
 }
 
 #endif

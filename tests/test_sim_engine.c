@@ -16,7 +16,7 @@
  *   4 pi C1 rho_B (Maxwell) and E1(v) (hard spheres, Algorithm 2), the
  *   equilibrium with the background preserved, and for Maxwell kernels the
  *   exact finite-n expectations of u and T (reference/background.h). */
-#include "test_util.h"
+#include "test_sim_util.h"
 
 #include <omp.h>
 #include <stdlib.h>
@@ -46,15 +46,6 @@ static sim_scene heated_maxwell_scene(size_t n, size_t ensembles)
     s.heating.present = 1;
     s.heating.strength = 1.0;
     return s;
-}
-
-static void run(const sim_scene *s, sim_ensemble_result *res)
-{
-    sim_engine *e = NULL;
-    sim_error err;
-    assert_int_equal(sim_engine_create(s, &e, &err), SIM_OK);
-    assert_int_equal(sim_ensemble_run(e, NULL, NULL, res, &err), SIM_OK);
-    sim_engine_free(e);
 }
 
 /* Largest |mean - exact| / sigma over the output times (sigma = ci / lambda_p). */

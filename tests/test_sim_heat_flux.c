@@ -14,7 +14,7 @@
  *   rate 2 pi gamma C (n - 1) E|g|^lambda and keep energy and momentum when
  *   elastic.
  * Every statistical check also meets a wrong answer and must fail it. */
-#include "test_util.h"
+#include "test_sim_util.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -29,18 +29,6 @@
 #include "steady.h"
 
 #define ZMAX 4.5
-
-static void run(const sim_scene *s, sim_ensemble_result *res)
-{
-    sim_engine *e = NULL;
-    sim_error err;
-    sim_status st = sim_engine_create(s, &e, &err);
-    if (st != SIM_OK)
-        print_error("%s: %s\n", err.key, err.msg);
-    assert_int_equal(st, SIM_OK);
-    assert_int_equal(sim_ensemble_run(e, NULL, NULL, res, &err), SIM_OK);
-    sim_engine_free(e);
-}
 
 /* Paper D's scene in its units (verify/scenes/msg.ini): T0 = 1/2, m = 1,
  * lambda = tau = 1, so eps* = eps. */

@@ -19,7 +19,7 @@
  *   mu4^(0), the shell histogram), their time averages, and that pair
  *   sampling never changes the trajectory.
  * Every statistical check also meets a wrong answer and must fail it. */
-#include "test_util.h"
+#include "test_sim_util.h"
 
 #include <omp.h>
 #include <stdlib.h>
@@ -34,18 +34,6 @@
 #include "steady.h"
 
 #define ZMAX 4.5   /* max over output times of |mean - exact| / sigma */
-
-static void run(const sim_scene *s, sim_ensemble_result *res)
-{
-    sim_engine *e = NULL;
-    sim_error err;
-    sim_status st = sim_engine_create(s, &e, &err);
-    if (st != SIM_OK)
-        print_error("%s: %s\n", err.key, err.msg);
-    assert_int_equal(st, SIM_OK);
-    assert_int_equal(sim_ensemble_run(e, NULL, NULL, res, &err), SIM_OK);
-    sim_engine_free(e);
-}
 
 /* Paper A Ex 5's gas (SPEC §3): hard spheres, alpha = 1/2, gamma = 4,
  * C1 = 1/(4 pi), white noise beta = 1/8, in the time-step scheme. */
