@@ -933,7 +933,7 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
                  (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
                  f->quantity);
         rc = vfy_write_curves(run->o, name, title, run->comment, last->res.t, M, nref,
-                              names, refs, rows, n, mean, ci, quantity, f->x_from,
+                              names, refs, rows, n, NULL, mean, ci, quantity, f->x_from,
                               f->panel_per_row);
     }
     free(buf);

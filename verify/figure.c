@@ -191,8 +191,8 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
                         const double *t, size_t M, size_t nref, const char *const *ref_names,
                         const double *const *refs, size_t rows, const size_t *n,
-                        const double *mean, const double *ci, const char *quantity,
-                        double x_from, int one_panel_per_row)
+                        const char *const *labels, const double *mean, const double *ci,
+                        const char *quantity, double x_from, int one_panel_per_row)
 {
     char path[PATH_LEN], tmp[TMP_LEN];
     FILE *f = begin_file(o, name, "-curves.csv", comment, path, sizeof path, tmp, sizeof tmp);
@@ -240,14 +240,17 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                     j ? "," : "", path, 2 + j, gp_text(ref_names[j]));
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
-            char label[64];
-            if (n[i] == 0)
+            char label[160];
+            if (labels != NULL)
+                snprintf(label, sizeof label, "%s: mean ± c", labels[i]);
+            else if (n[i] == 0)
                 snprintf(label, sizeof label, "n = infinity (O(1/n) extrapolation) ± c");
             else
                 snprintf(label, sizeof label, "n = %zu: mean ± c", n[i]);
-            fprintf(f, ", '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
+            fprintf(f, "%s '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
                        "fs transparent solid 0.25 lc %zu title '%s'",
-                    path, col, col + 1, col, col + 1, i + 1, label);
+                    nref || i > first ? "," : "", path, col, col + 1, col, col + 1, i + 1,
+                    gp_text(label));
         }
         fputc('\n', f);
     }

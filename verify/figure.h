@@ -15,13 +15,14 @@ int vfy_gnuplot(const char *script_path);
  * each row; n[i] = 0 marks the O(1/n) extrapolation) and out_dir/<name>.gp
  * drawing each row's confidence band beside the references (one panel per row
  * for the first four rows, or all in one), rendered to <name>.png when gnuplot
- * is installed.  mean and ci are rows x M.  Returns 0 or -1 (errno). */
+ * is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
+ * or "n = N" when labels is NULL.  Returns 0 or -1 (errno). */
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
                      const double *t, size_t M, size_t nref, const char *const *ref_names,
                      const double *const *refs, size_t rows, const size_t *n,
-                     const double *mean, const double *ci, const char *quantity,
-                     double x_from, int one_panel_per_row);
+                     const char *const *labels, const double *mean, const double *ci,
+                     const char *quantity, double x_from, int one_panel_per_row);
 
 /* Points against a parameter with error bars, beside theory curves (paper C's
  * figures of a2 against alpha, G(c) against c). */
