@@ -111,5 +111,7 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
 sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_heat_flux(const sim_scene *scene, sim_effect *effect, sim_error *err);
+sim_status sim_effect_shear(const sim_scene *scene, sim_effect *effect, sim_error *err);
+sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_effect *effect, sim_error *err);
 
 #endif

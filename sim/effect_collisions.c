@@ -57,6 +57,8 @@
  * bound, so the paper's "omega_max updated when exceeded" never has to act;
  * a drawn particle beyond R would still be counted as a violation.  When R
  * grows within the stage, the remaining stage time is spent at the new rate.
+ * Paper E's frictional elastic hard spheres (collisions.model = ehs) collide
+ * elastically at beta = (1 + alpha)/2 times this rate.
  * Maxwell molecules and VHS (issue 15: the heat-flux force on any kernel):
  * the stage fires the jump scheme's candidates (uniform pair, paper A's rule)
  * at its majorant rate for the stage time, with the same remainder.
@@ -544,16 +546,17 @@ static const sim_effect_type collisions_type = {
 
 sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err)
 {
-    if (scene->collisions.model != SIM_MODEL_IHS)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.model",
-                             "model ehs is not implemented yet (supported: ihs)");
     collisions_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    /* model ehs (paper E, SPEC §7): elastic collisions at beta = (1 + alpha)/2
+     * times the rate; the engine adds its drag (effect_drag.c) */
+    const int ehs = scene->collisions.model == SIM_MODEL_EHS;
+    const double alpha = scene->collisions.restitution;
     p->lambda = scene->collisions.exponent;
-    p->alpha = scene->collisions.restitution;
+    p->alpha = ehs ? 1.0 : alpha;
     p->prefactor = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
-                   * (double)(scene->particles.n - 1);
+                   * (double)(scene->particles.n - 1) * (ehs ? 0.5 * (1.0 + alpha) : 1.0);
     p->stage_time = 1.0 / (4.0 * p->prefactor);
     *effect = (sim_effect){.type = &collisions_type, .params = p};
     return SIM_OK;

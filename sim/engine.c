@@ -58,6 +58,7 @@
 #include "steady.h"
 
 #define MAX_EVENTS 4
+#define MAX_FLOWS 4
 
 /* Candidates between two recomputations of the velocity bound in runs
  * without a lazy flow, in units of n: one pass over the particles every 4 n
@@ -85,9 +86,10 @@ struct sim_engine {
     sim_scene scene;
     double mass;          /* the grain mass */
     char effects[64];
-    int has_flow;
-    int lazy_flow;        /* jump scheme: the flow is applied lazily (stamps) */
-    sim_effect flow;
+    size_t nflows;        /* the flows in the order a step applies them: shear, the EHS
+                             drag, then a thermostat or the heat-flux force */
+    sim_effect flows[MAX_FLOWS];
+    int lazy_flow;        /* jump scheme: flows[0] is applied lazily (stamps) */
     double pending_spread;/* scene.observation = conditional: the lazy flow's variance per
                              unit time (observe.h, sim_observe_pending), else 0 */
     int bounded;          /* some event needs the velocity bound (run.h) */
@@ -120,12 +122,20 @@ struct sim_workspace {
     gsl_rng *observer_rng;   /* pair sampling (steady observers), or NULL */
     double *steady_sum;      /* [nsteady] sums of the samples of the current run */
     size_t samples;          /* how many samples those sums hold */
+    size_t steps;            /* time-step scheme: steps in the current output interval */
+    double h;                /* ... and their length */
 };
 
 static void append_name(sim_engine *e, const char *name)
 {
     size_t len = strlen(e->effects);
     snprintf(e->effects + len, sizeof e->effects - len, "%s%s", len ? " " : "", name);
+}
+
+static void add_flow(sim_engine *e, sim_effect effect)
+{
+    e->flows[e->nflows++] = effect;
+    append_name(e, effect.type->name);
 }
 
 static void add_event(sim_engine *e, sim_effect effect)
@@ -145,10 +155,17 @@ static void stages(const sim_engine *e, sim_workspace *ws, double h)
         e->stage[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], h);
 }
 
+/* Every flow's step of length h, in order. */
+static void flow_steps(const sim_engine *e, sim_workspace *ws, double h)
+{
+    for (size_t k = 0; k < e->nflows; k++)
+        e->flows[k].type->step(&e->flows[k], &ws->run, h);
+}
+
 static void step_euler(const sim_engine *e, sim_workspace *ws, double h)
 {
     stages(e, ws, h);
-    e->flow.type->step(&e->flow, &ws->run, h);
+    flow_steps(e, ws, h);
 }
 
 static void step_no_flow(const sim_engine *e, sim_workspace *ws, double h)
@@ -156,11 +173,11 @@ static void step_no_flow(const sim_engine *e, sim_workspace *ws, double h)
     stages(e, ws, h);
 }
 
-/* One output interval of `steps` steps. */
+/* One output interval of ws->steps steps of ws->h. */
 static void interval_lie(const sim_engine *e, sim_workspace *ws)
 {
-    for (size_t k = 0; k < e->steps; k++)
-        e->step(e, ws, e->h);
+    for (size_t k = 0; k < ws->steps; k++)
+        e->step(e, ws, ws->h);
 }
 
 /* Strang: flow h/2, collisions h, flow h/2 per step, with the two half flows
@@ -170,17 +187,19 @@ static void interval_lie(const sim_engine *e, sim_workspace *ws)
  * Euler.  For the non-Gaussian flow the merged step differs from two half
  * steps by O(h^2 |k|), k = the mean direction (about 0 in an isotropic gas);
  * the keep-T rescaling is a projection, for which Strang and Euler coincide.
+ * Several flows are applied in order in each (merged) half: for flows that do
+ * not commute (shear and drag) that is a splitting of its own, O(h^2) per step.
  * The output times see whole steps. */
 static void interval_strang(const sim_engine *e, sim_workspace *ws)
 {
-    const sim_effect *flow = &e->flow;
-    flow->type->step(flow, &ws->run, 0.5 * e->h);
-    for (size_t k = 1; k < e->steps; k++) {
-        stages(e, ws, e->h);
-        flow->type->step(flow, &ws->run, e->h);
+    const double h = ws->h;
+    flow_steps(e, ws, 0.5 * h);
+    for (size_t k = 1; k < ws->steps; k++) {
+        stages(e, ws, h);
+        flow_steps(e, ws, h);
     }
-    stages(e, ws, e->h);
-    flow->type->step(flow, &ws->run, 0.5 * e->h);
+    stages(e, ws, h);
+    flow_steps(e, ws, 0.5 * h);
 }
 
 /* Resolve the time-step scheme: stages, the step function, h. */
@@ -195,12 +214,13 @@ static sim_status build_timestep(sim_engine *e, sim_error *err)
                                  "%s is not implemented in the time-step scheme",
                                  ev->type->name);
     }
-    if (e->has_flow && e->flow.type->step == NULL)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
-                             "this thermostat has no time-step form");
-    e->step = e->has_flow ? step_euler : step_no_flow;
-    e->interval = e->has_flow && scene->splitting == SIM_SPLIT_STRANG ? interval_strang
-                                                                      : interval_lie;
+    for (size_t k = 0; k < e->nflows; k++)
+        if (e->flows[k].type->step == NULL)
+            return sim_error_set(err, SIM_EUNSUPPORTED, e->flows[k].type->name,
+                                 "%s has no time-step form", e->flows[k].type->name);
+    e->step = e->nflows ? step_euler : step_no_flow;
+    e->interval = e->nflows && scene->splitting == SIM_SPLIT_STRANG ? interval_strang
+                                                                    : interval_lie;
     if (!(scene->dt > 0.0) || !isfinite(scene->dt))
         return sim_error_set(err, SIM_EINVAL, "scene.dt", "%g is not a positive step",
                              scene->dt);
@@ -231,8 +251,6 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
                              "the engine simulates one species: mass2 = %g must equal "
                              "mass1 = %g", scene->particles.second.mass,
                              scene->particles.first.mass);
-    if (scene->shear.present)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "shear", "shear flow is not implemented yet");
     if (scene->particles.n < 2 || scene->outputs < 2 || !(scene->t_end > 0.0))
         return sim_error_set(err, SIM_EINVAL, "",
                              "scene not validated: n = %zu, outputs = %zu, t_end = %g",
@@ -262,28 +280,30 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         if (status == SIM_OK)
             add_event(e, background);
     }
-    if (status == SIM_OK && scene->heating.present) {
-        status = sim_effect_heating(scene, &e->flow, err);
-        if (status == SIM_OK) {
-            e->has_flow = 1;
-            e->lazy_flow = !timestep;
-            append_name(e, e->flow.type->name);
-        }
+    /* the flows, in the order of a step */
+    sim_effect flow;
+    if (status == SIM_OK && scene->shear.present
+        && (status = sim_effect_shear(scene, &flow, err)) == SIM_OK)
+        add_flow(e, flow);
+    if (status == SIM_OK && scene->collisions.present && scene->collisions.model == SIM_MODEL_EHS
+        && scene->collisions.restitution < 1.0   /* elastic: no drag, nothing to pay */
+        && (status = sim_effect_ehs_drag(scene, &flow, err)) == SIM_OK)
+        add_flow(e, flow);
+    if (status == SIM_OK && scene->heating.present
+        && (status = sim_effect_heating(scene, &flow, err)) == SIM_OK) {
+        e->lazy_flow = !timestep;   /* the jump scheme's one flow (white noise only) */
+        add_flow(e, flow);
     }
-    if (status == SIM_OK && scene->heat_flux.present) {   /* refuses [heating] */
-        status = sim_effect_heat_flux(scene, &e->flow, err);
-        if (status == SIM_OK) {
-            e->has_flow = 1;
-            append_name(e, e->flow.type->name);
-        }
-    }
+    if (status == SIM_OK && scene->heat_flux.present   /* refuses [heating] */
+        && (status = sim_effect_heat_flux(scene, &flow, err)) == SIM_OK)
+        add_flow(e, flow);
     if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
-        if (!e->lazy_flow || e->flow.type->spread == NULL)
+        if (!e->lazy_flow || e->flows[0].type->spread == NULL)
             status = sim_error_set(err, SIM_EUNSUPPORTED, "scene.observation",
                                    "conditional needs a lazily applied Gaussian flow "
                                    "(white-noise heating, scheme = jump)");
         else
-            e->pending_spread = e->flow.type->spread(&e->flow);
+            e->pending_spread = e->flows[0].type->spread(&e->flows[0]);
     }
     if (status == SIM_OK && timestep)
         status = build_timestep(e, err);
@@ -334,7 +354,8 @@ void sim_engine_free(sim_engine *engine)
         return;
     for (size_t k = 0; k < engine->nevents; k++)
         free(engine->events[k].params);
-    free(engine->flow.params);
+    for (size_t k = 0; k < engine->nflows; k++)
+        free(engine->flows[k].params);
     free(engine);
 }
 
@@ -382,7 +403,7 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
         sim_workspace_free(w);
         return status;
     }
-    w->run.flow = engine->lazy_flow ? &engine->flow : NULL;
+    w->run.flow = engine->lazy_flow ? &engine->flows[0] : NULL;
     *ws = w;
     return SIM_OK;
 }
@@ -651,6 +672,25 @@ static void run_jump_counted(const sim_engine *e, sim_workspace *ws, double *obs
     }
 }
 
+/* The steps of the output interval that starts at output m - 1: the
+ * engine's, or with step_follows_temperature the largest h <= dt sqrt(T0/T)
+ * that divides the interval, T the centred temperature just observed (the
+ * mean free time scales as T^{-1/2}; paper E's dt = 1e-3 tau0 sqrt(T0/T)). */
+static void interval_steps(const sim_engine *e, sim_workspace *ws, const double *obs, size_t m)
+{
+    const sim_scene *scene = &e->scene;
+    ws->steps = e->steps;
+    ws->h = e->h;
+    const double T = obs[(m - 1) * e->observables + SIM_OBS_T];
+    if (!scene->step_follows_temperature || !(T > 0.0))
+        return;
+    const double interval = sim_scene_output_time(scene, 1);
+    const double dt = scene->dt * sqrt(scene->particles.maxwellian.temperature / T);
+    const double steps = fmin(fmax(ceil(interval / dt * (1.0 - 1e-9)), 1.0), 1e12);
+    ws->steps = (size_t)steps;
+    ws->h = interval / steps;
+}
+
 /* The time-step scheme from t = 0 to t_end. */
 static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
 {
@@ -659,6 +699,7 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
     double rates[MAX_EVENTS] = {0};
     reset_events(e, ws, rates, interval);
     for (size_t m = 1; m < scene->outputs; m++) {
+        interval_steps(e, ws, obs, m);
         e->interval(e, ws);
         observe_at(e, ws, m, obs, samples);
         if (m + 1 < scene->outputs)

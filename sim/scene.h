@@ -88,6 +88,10 @@ typedef struct sim_scene {
     double dt;          /* timestep only: the largest step; the engine uses the largest
                            h <= dt that divides the interval between output times */
     sim_splitting splitting;   /* timestep only (default euler) */
+    int step_follows_temperature; /* timestep only: the step is dt sqrt(T0/T), T the
+                                     centred temperature at the start of each output
+                                     interval, T0 = particles.temperature (paper E: the
+                                     step follows the mean free time; default false) */
     sim_observation observation; /* how output times observe a lazy flow (default
                                     sampled) */
     double t_end;

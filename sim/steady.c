@@ -14,12 +14,21 @@ static const char *const heat_flux_names[SIM_HF_SCALARS] = {
     "qx", "kappa_prime", "b1", "b2", "b3", "b1_x", "b2_x", "b3_x", "b1_x_outer",
 };
 
+static const char *const shear_names[SIM_SHEAR_SCALARS] = {
+    "Pxy_reduced", "N1", "N2", "a_star", "v12_ratio",
+};
+
+size_t sim_steady_shear_first(const sim_scene *scene)
+{
+    const size_t bins = scene->steady.bins;
+    return SIM_STEADY_BIN0 + bins + (scene->heat_flux.present ? SIM_HF_SCALARS + 2 * bins : 0);
+}
+
 size_t sim_steady_count(const sim_scene *scene)
 {
     if (!scene->steady.present)
         return 0;
-    const size_t bins = scene->steady.bins;
-    return SIM_STEADY_BIN0 + bins + (scene->heat_flux.present ? SIM_HF_SCALARS + 2 * bins : 0);
+    return sim_steady_shear_first(scene) + (scene->shear.present ? SIM_SHEAR_SCALARS : 0);
 }
 
 size_t sim_steady_heat_flux_first(const sim_scene *scene)
@@ -30,7 +39,10 @@ size_t sim_steady_heat_flux_first(const sim_scene *scene)
 const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t len)
 {
     const size_t bins = scene->steady.bins, hf = sim_steady_heat_flux_first(scene);
-    if (k < SIM_STEADY_BIN0)
+    const size_t sh = sim_steady_shear_first(scene);
+    if (k >= sh)
+        snprintf(buf, len, "%s", k - sh < SIM_SHEAR_SCALARS ? shear_names[k - sh] : "?");
+    else if (k < SIM_STEADY_BIN0)
         snprintf(buf, len, "%s", names[k]);
     else if (k < hf)
         snprintf(buf, len, "f_%zu", k - SIM_STEADY_BIN0);
@@ -46,7 +58,8 @@ const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t 
 int sim_steady_scalar(const sim_scene *scene, size_t k)
 {
     const size_t hf = sim_steady_heat_flux_first(scene);
-    return k < SIM_STEADY_BIN0 || (k >= hf && k < hf + SIM_HF_SCALARS);
+    return k < SIM_STEADY_BIN0 || (k >= hf && k < hf + SIM_HF_SCALARS)
+           || k >= sim_steady_shear_first(scene);
 }
 
 long sim_steady_find(const sim_scene *scene, const char *name)
@@ -176,6 +189,48 @@ static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, dou
     hf[SIM_HF_B1_X_OUTER] += Q[0] * outer * w * inv_eps;
 }
 
+/* Paper E's shear-flow quantities of one sample (steady.h), added to
+ * sum[sim_steady_shear_first ...]; pairs from rng (may be NULL). */
+static void shear_sample(const sim_scene *scene, const sim_particles *p, const double V[3],
+                         double theta, gsl_rng *rng, double *sum)
+{
+    const size_t n = p->n;
+    double P[4] = {0, 0, 0, 0};   /* xx, yy, zz, xy of <C_i C_j> */
+    for (size_t i = 0; i < n; i++) {
+        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
+        P[0] += c[0] * c[0];
+        P[1] += c[1] * c[1];
+        P[2] += c[2] * c[2];
+        P[3] += c[0] * c[1];
+    }
+    const double norm = 1.0 / ((double)n * theta);   /* P/(nT) with T = m theta */
+    /* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2T/m), SPEC §7 */
+    const double lambda0 = 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate
+                                  * scene->collisions.constant);
+    const double tau_eta = 1.016 * 5.0 * sqrt(M_PI) / 8.0 * lambda0 / sqrt(2.0 * theta);
+    double v12 = NAN;
+    const size_t pairs = scene->steady.pairs;
+    if (pairs > 0 && rng != NULL) {
+        double s3 = 0.0;
+        for (size_t q = 0; q < pairs; q++) {
+            size_t i = (size_t)sim_rng_index(rng, n);
+            size_t j = (size_t)sim_rng_index(rng, n - 1);
+            j += (j >= i);
+            const double g[3] = {p->v[i][0] - p->v[j][0], p->v[i][1] - p->v[j][1],
+                                 p->v[i][2] - p->v[j][2]};
+            const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+            s3 += g2 * sqrt(g2);
+        }
+        v12 = s3 / (double)pairs / (32.0 / sqrt(M_PI) * theta * sqrt(theta));
+    }
+    double *sh = sum + sim_steady_shear_first(scene);
+    sh[SIM_SHEAR_PXY] += -P[3] * norm;
+    sh[SIM_SHEAR_N1] += (P[0] - P[1]) * norm;
+    sh[SIM_SHEAR_N2] += (P[2] - P[1]) * norm;
+    sh[SIM_SHEAR_A_STAR] += scene->shear.rate * tau_eta;
+    sh[SIM_SHEAR_V12] += v12;
+}
+
 void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
                        gsl_rng *rng, double *sum)
 {
@@ -239,6 +294,8 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
     sum[SIM_STEADY_MU4_NONGAUSSIAN] += 2.0 * mu2 * m3 / m1;
     if (scene->heat_flux.present)
         heat_flux_sample(scene, p, mass, V, theta, sum);
+    if (scene->shear.present)
+        shear_sample(scene, p, V, theta, rng, sum);
 }
 
 void sim_steady_finish(const sim_scene *scene, double *avg)

@@ -48,6 +48,14 @@
  * The time averages divide by eps* only once the sample is taken, so eps = 0
  * gives NaN for everything but qx.
  *
+ * With a [shear] section (paper E, SPEC §7), with tau_eta = 1.016 (5 sqrt(pi)/8)
+ * lambda0/sqrt(2T/m) (lambda0 as above) and T the centred temperature, last:
+ *   Pxy_reduced                -Pxy/(nT)
+ *   N1, N2                     (Pxx - Pyy)/(nT), (Pzz - Pyy)/(nT)
+ *   a_star                     a tau_eta(T), the reduced shear rate
+ *   v12_ratio                  <|V12|^3>/<|V12|^3>_0 over steady.pairs random pairs,
+ *                              <|V12|^3>_0 = (32/sqrt(pi)) (T/m)^{3/2} (NaN without pairs)
+ *
  * Pair sampling draws from its own random substream (rng.h), so observing
  * never changes the simulated trajectory.
  */
@@ -76,12 +84,22 @@ typedef enum sim_steady_heat_flux {
     SIM_HF_SCALARS   /* the first g1 bin */
 } sim_steady_heat_flux;
 
+/* The shear-flow quantities, last (offsets from sim_steady_shear_first). */
+typedef enum sim_steady_shear {
+    SIM_SHEAR_PXY, SIM_SHEAR_N1, SIM_SHEAR_N2, SIM_SHEAR_A_STAR, SIM_SHEAR_V12,
+    SIM_SHEAR_SCALARS
+} sim_steady_shear;
+
 /* Number of steady quantities of the scene: SIM_STEADY_BIN0 + steady.bins,
- * plus SIM_HF_SCALARS + 2 steady.bins with [heat-flux]; 0 without [steady]. */
+ * plus SIM_HF_SCALARS + 2 steady.bins with [heat-flux], plus SIM_SHEAR_SCALARS
+ * with [shear]; 0 without [steady]. */
 size_t sim_steady_count(const sim_scene *scene);
 
 /* Index of the first heat-flux quantity (qx): SIM_STEADY_BIN0 + steady.bins. */
 size_t sim_steady_heat_flux_first(const sim_scene *scene);
+
+/* Index of the first shear quantity (Pxy_reduced). */
+size_t sim_steady_shear_first(const sim_scene *scene);
 
 /* Name of quantity k of the scene ("T", "a2", ..., "f_0", ..., "qx", ...,
  * "g1_0", ..., "beta1_0", ...), in buf. */

@@ -413,7 +413,7 @@ static void test_all_scene_files(void **state)
         "brs-ex1", "brs-ex2", "brs-ex3", "brs-ex4", "brs-ex5", "grw-ex3", "grw-ex4",
         "grw-ex5", "hard-dissipation", "hard-extreme", "hard-long-run", "hard-nongaussian",
         "hard-stiff", "hard-tails", "ms-gaussian", "ms-non-gaussian", "ms-white-noise",
-        "msg", "split-ex5"};
+        "as", "msg", "split-ex5"};
     const size_t nshipped = sizeof shipped / sizeof *shipped;
     char dir[1024], path[2048], msg[1024];
     snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
@@ -487,7 +487,7 @@ static void test_write_shipped_scenes(void **state)
         count++;
     }
     closedir(d);
-    assert_int_equal(count, 19);
+    assert_int_equal(count, 20);
 }
 
 /* Random valid scenes: random values for random keys (awkward decimals,
@@ -752,7 +752,7 @@ TRAP_SET(trap_override_unknown_section, "", "collision.rate=4",
          "--set collision.rate=4: [collision]: unknown section (allowed " SECTIONS ")")
 TRAP_SET(trap_override_unknown_key, "", "scene.tend=4",
          "--set scene.tend=4: scene.tend: unknown key (allowed title, scheme, dt, splitting, "
-         "observation, t_end, outputs, seed)")
+         "step_follows_temperature, observation, t_end, outputs, seed)")
 TRAP_SET(trap_override_bad_value, "[collisions]\nrestitution = 0.5\n",
          "collisions.restitution=1.7",
          "--set collisions.restitution=1.7: collisions.restitution: '1.7' is out of range "
@@ -880,7 +880,10 @@ ENGINE_TRAP(engine_two_species,
             "t.ini:7: particles.mass2: the engine simulates one species: mass2 = 2.5 must equal "
             "mass1 = 1")
 ENGINE_TRAP(engine_shear, "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1.5\n",
-            "t.ini: shear: shear flow is not implemented yet")
+            "t.ini: scene.scheme: homogeneous shear needs scheme = timestep")
+ENGINE_TRAP(engine_lees_edwards, "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
+            "t.ini:3: shear.boundary: lees-edwards is not implemented yet (supported: "
+            "homogeneous)")
 ENGINE_TRAP(engine_heat_flux, "[heat-flux]\nstrength = 0.025\n",
             "t.ini: scene.scheme: the heat-flux force couples the particles (through the mean "
             "and the temperature) and needs scheme = timestep")
@@ -893,8 +896,9 @@ ENGINE_TRAP(engine_heat_flux_moving,
             "[scene]\nscheme = timestep\ndt = 0.25\n[heat-flux]\nstrength = 0.025\n",
             "t.ini: particles.zero_momentum: the heat-flux force acts on peculiar velocities: "
             "start from a Maxwellian at rest with zero_momentum = true")
-ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\n",
-            "t.ini:3: collisions.model: model ehs is not implemented yet (supported: ihs)")
+ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\nrestitution = 0.5\n",
+            "t.ini:3: collisions.model: ehs (its drag depends on the temperature) needs scheme "
+            "= timestep")
 ENGINE_TRAP(engine_gaussian_jump, "[heating]\ntype = gaussian\nstrength = 0.5\n",
             "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep (the jump "
             "scheme supports white-noise)")
@@ -1162,6 +1166,7 @@ int main(void)
         cmocka_unit_test(engine_background_timestep),
         cmocka_unit_test(engine_two_species),
         cmocka_unit_test(engine_shear),
+        cmocka_unit_test(engine_lees_edwards),
         cmocka_unit_test(engine_heat_flux),
         cmocka_unit_test(engine_heat_flux_heating),
         cmocka_unit_test(engine_heat_flux_moving),

@@ -316,7 +316,7 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
                  run->c->name, P, nn, nN, GRID_MAX, AXIS_MAX, AXIS_MAX);
         return SIM_EINVAL;
     }
-    double g[G_ARRAYS][GRID_MAX];
+    double g[G_ARRAYS][GRID_MAX] = {{0}};   /* rows 0 .. P - 1 are set below */
     double violations = 0.0;   /* NaN where a solver did not report them */
     static const char *const names[] = {"n", "N", "Err", "Err_sys", "Err_stat", "Conf",
                                         "cpu_s"};

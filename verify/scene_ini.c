@@ -131,6 +131,7 @@ static const key_desc keys[] = {
     WORDS(S_SCENE, "scheme", scheme, scheme_words),
     POSITIVE(S_SCENE, "dt", dt),
     WORDS(S_SCENE, "splitting", splitting, splitting_words),
+    WORDS(S_SCENE, "step_follows_temperature", step_follows_temperature, bool_words),
     WORDS(S_SCENE, "observation", observation, observation_words),
     POSITIVE(S_SCENE, "t_end", t_end),
     COUNT(S_SCENE, "outputs", outputs, 2, 10000000),
@@ -569,6 +570,9 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
     if (s->scheme != SIM_SCHEME_TIMESTEP && is_set(s, "scene.splitting"))
         return sim_error_set(err, SIM_EINVAL, "scene.splitting",
                              "only used with scheme = timestep (scheme is jump)");
+    if (s->scheme != SIM_SCHEME_TIMESTEP && s->step_follows_temperature)
+        return sim_error_set(err, SIM_EINVAL, "scene.step_follows_temperature",
+                             "only used with scheme = timestep (scheme is jump)");
     if (s->observation == SIM_OBSERVE_CONDITIONAL
         && (s->scheme != SIM_SCHEME_JUMP || !s->heating.present
             || s->heating.type != SIM_HEATING_WHITE_NOISE))
@@ -853,7 +857,7 @@ static int section_present(const sim_scene *s, int section)
 static int key_applies(const sim_scene *s, const char *full)
 {
     const int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
-    if (strcmp(full, "scene.splitting") == 0)
+    if (strcmp(full, "scene.splitting") == 0 || strcmp(full, "scene.step_follows_temperature") == 0)
         return s->scheme == SIM_SCHEME_TIMESTEP;
     if (strcmp(full, "heating.strength") == 0)
         return !s->heating.keep_temperature;
