@@ -44,6 +44,12 @@ gdsmc_add_cli_test(cli_verify_msg_half_force 1
                    --out ${CMAKE_CURRENT_BINARY_DIR}/msg-half-force)
 set_tests_properties(cli_verify_msg_wrong_sign cli_verify_msg_half_force
                      PROPERTIES LABELS verification)
+# Paper E: a shear of the wrong sign fails as-steady at quick sizes.
+gdsmc_add_cli_test(cli_verify_as_wrong_sign 1
+                   "\nFAIL  as-steady alpha=0\\.70 ihs a_tau0=4 -Pxy/nT within 10% of BGK"
+                   verify --suite quick --case as-steady --solver-set shear.rate=-4
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/as-wrong-sign)
+set_tests_properties(cli_verify_as_wrong_sign PROPERTIES LABELS verification)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 # at t = 0: T_exact = 1, E T_n = 1 - 1/n = 63/64, E T_raw = 1
 gdsmc_add_cli_test(cli_reference_ex3 0 "\nt,T_exact,T_finite_n,T_raw_finite_n\n0,1,0\\.984375,1\n0\\.1,1\\.12042752"
@@ -293,8 +299,14 @@ gdsmc_add_cli_exact(cli_x_reference_mass 2
 gdsmc_add_cli_exact(cli_x_reference_vhs 2
                     "gdsmc reference: verify/scenes/grw-ex3.ini: --set collisions.exponent: no reference for VHS lambda = 0.5 (only 0 and 1)"
                     reference ${S}/grw-ex3.ini --set collisions.kernel=vhs --set collisions.exponent=0.5)
+# paper E: the BGK model's T and stresses; late times reach its steady state
+# (alpha = 0.9, a tau0 = 4: T_s/T0 = 150.3, T_s = 75.15)
+gdsmc_add_cli_test(cli_reference_bgk 0
+                   "\nt,T_bgk,Pxx_bgk,Pyy_bgk,Pzz_bgk,Pxy_bgk,s0_bgk\n0,0\\.5,0\\.5,0\\.5,0\\.5,0,0\n.*\n40,75\\.15[0-9]*,"
+                   reference ${S}/as.ini --set scene.t_end=40 --set scene.outputs=11
+                   --set steady.from=0)
 gdsmc_add_cli_exact(cli_x_reference_shear 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini: shear: no reference implemented for shear flow yet"
+                    "gdsmc reference: verify/scenes/grw-ex3.ini:24: collisions.kernel: the BGK reference of paper E needs hard spheres"
                     reference ${S}/grw-ex3.ini --set shear.rate=1)
 gdsmc_add_cli_exact(cli_x_reference_background_heating 2
                     "gdsmc reference: verify/scenes/brs-ex1.ini: background: no reference for a background combined with heating, shear or a heat-flux force"

@@ -961,9 +961,13 @@ static void expect_refs_error(const char *text, const char *expected)
 REFS_TRAP(refs_no_collisions, "[heating]\nstrength = 0.5\n",
           "t.ini: collisions: no reference applies: paper A references need [collisions]")
 REFS_TRAP(refs_shear, "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1\n",
-          "t.ini: shear: no reference implemented for shear flow yet")
+          "t.ini: collisions.kernel: the BGK reference of paper E needs hard spheres")
+REFS_TRAP(refs_shear_heating,
+          "[collisions]\nkernel = hard-spheres\n[heating]\nstrength = 1\n[shear]\nrate = 1\n",
+          "t.ini: heating: the BGK reference of paper E is for shear and collisions only")
 REFS_TRAP(refs_heat_flux, "[collisions]\n[heat-flux]\nstrength = 0.025\n",
-          "t.ini: heat-flux: no reference implemented for the heat-flux force yet")
+          "t.ini: heat-flux: no time series reference for the heat-flux force (its references "
+          "are values: gdsmc sonine)")
 REFS_TRAP(refs_gaussian,
           "[scene]\nscheme = timestep\ndt = 0.25\n[collisions]\nkernel = hard-spheres\n"
           "[heating]\ntype = gaussian\nstrength = 0.5\n",
@@ -1179,6 +1183,7 @@ int main(void)
     const struct CMUnitTest refs_trap[] = {
         cmocka_unit_test(refs_no_collisions),
         cmocka_unit_test(refs_shear),
+        cmocka_unit_test(refs_shear_heating),
         cmocka_unit_test(refs_heat_flux),
         cmocka_unit_test(refs_gaussian),
         cmocka_unit_test(refs_two_maxwellians),

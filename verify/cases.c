@@ -21,6 +21,8 @@ extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gauss
     vfy_ms_table1, vfy_ms_tails;
 /* case_msg.c (paper D) */
 extern const vfy_case_desc vfy_msg_kappa, vfy_msg_sonine, vfy_msg_distribution;
+/* case_as.c (paper E) */
+extern const vfy_case_desc vfy_as_steady;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
@@ -67,6 +69,8 @@ static const vfy_case cases[] = {
      " estimators vs alpha", 1, &vfy_msg_sonine},
     {"msg-distribution", "msg", "paper D Figs. 5-7: phi(c_x^2), its truncations, beta_1/b'_1,"
      " the heat flux from c_x^2 <= 6", 1, &vfy_msg_distribution},
+    {"as-steady", "as", "paper E Figs. 14-16: steady uniform shear flow, IHS and EHS at"
+     " a tau0 = 4 and 0.1, beside BGK", 1, &vfy_as_steady},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"

@@ -1,6 +1,7 @@
 #include "references.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "background.h"
@@ -56,6 +57,31 @@ ELASTIC_B(1)
 ELASTIC_B(2)
 ELASTIC_B(3)
 #undef ELASTIC_B
+
+/* Paper E: the BGK model's steady state at the scene (alpha, a tau0), one
+ * member of ref_bgk_steady; NAN where it has none (alpha = 1, no shear). */
+static double bgk_steady(const sim_scene *s, size_t member_offset)
+{
+    if (!s->shear.present || !s->collisions.present)
+        return NAN;
+    const ref_bgk_params p = vfy_bgk_params(s);
+    ref_bgk_steady st;
+    if (ref_bgk_steady_state(&p, &st, NULL, 0) != REF_OK)
+        return NAN;
+    return *(const double *)((const char *)&st + member_offset);
+}
+#define BGK(name, member)                                                       \
+    static double name##_at(const sim_scene *s)                                 \
+    {                                                                           \
+        return bgk_steady(s, offsetof(ref_bgk_steady, member));                 \
+    }
+BGK(a_star_bgk, a_star)
+BGK(Pxy_reduced_bgk, shear_stress)
+BGK(N1_bgk, normal_xy)
+BGK(N2_bgk, normal_zy)
+BGK(eta_star_bgk, eta_star)
+BGK(T_ratio_bgk, T_ratio)
+#undef BGK
 
 /* Paper B's hard-sphere closures' steady temperature (GSL Brent root of
  * dT/dt at u = u_B), for hard spheres in a hard-sphere background. */
@@ -131,6 +157,16 @@ static const vfy_reference registry[] = {
     {"b1_elastic_exact", VFY_REF_VALUE, "b'_1 of the exact elastic solution", b1_elastic_at},
     {"b2_elastic_exact", VFY_REF_VALUE, "b'_2 of the exact elastic solution", b2_elastic_at},
     {"b3_elastic_exact", VFY_REF_VALUE, "b'_3 of the exact elastic solution", b3_elastic_at},
+    /* values of paper E's homogeneous shear scenes: the BGK model's steady state */
+    {"a_star_bgk", VFY_REF_VALUE, "paper E, BGK model: steady a* = a tau_eta (SPEC §7)",
+     a_star_bgk_at},
+    {"Pxy_reduced_bgk", VFY_REF_VALUE, "paper E, BGK model: steady -Pxy/p", Pxy_reduced_bgk_at},
+    {"N1_bgk", VFY_REF_VALUE, "paper E, BGK model: steady (Pxx - Pyy)/p", N1_bgk_at},
+    {"N2_bgk", VFY_REF_VALUE, "paper E, BGK model: steady (Pzz - Pyy)/p (0)", N2_bgk_at},
+    {"eta_star_bgk", VFY_REF_VALUE, "paper E, BGK model: steady eta* = (-Pxy/p)/a*",
+     eta_star_bgk_at},
+    {"T_ratio_bgk", VFY_REF_VALUE, "paper E, BGK model: steady T_s/T0 at the scene's a tau0",
+     T_ratio_bgk_at},
     /* values of paper B's hard-sphere scenes */
     {"T_star_le", VFY_REF_VALUE, "paper B (B.21): steady T of the local-equilibrium closure",
      T_star_le_at},

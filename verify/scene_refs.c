@@ -166,6 +166,61 @@ static sim_status background_references(const sim_scene *scene, const double *t,
     return status;
 }
 
+/* Paper E: the BGK model's parameters of a homogeneous shear scene. */
+ref_bgk_params vfy_bgk_params(const sim_scene *s)
+{
+    ref_bgk_params p = ref_bgk_default_params();
+    p.alpha = s->collisions.restitution;
+    p.shear_rate = s->shear.rate;
+    p.gamma = s->collisions.rate;
+    p.C = s->collisions.constant;
+    p.mass = s->particles.maxwellian.mass;
+    p.T0 = s->particles.maxwellian.temperature;
+    p.model = s->collisions.model == SIM_MODEL_EHS ? REF_BGK_EHS : REF_BGK_IHS;
+    return p;
+}
+
+/* Which BGK references a shear scene admits; the key at fault otherwise. */
+static sim_status check_paper_e(const sim_scene *s, sim_error *err)
+{
+    const double *u = s->particles.maxwellian.velocity;
+    if (s->shear.boundary != SIM_SHEAR_HOMOGENEOUS)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "shear.boundary",
+                             "the BGK reference is for homogeneous shear");
+    if (!s->collisions.present || s->collisions.kernel != SIM_KERNEL_HARD_SPHERES)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.kernel",
+                             "the BGK reference of paper E needs hard spheres");
+    if (s->heating.present || s->heat_flux.present || s->background.present)
+        return sim_error_set(err, SIM_EUNSUPPORTED, s->heating.present ? "heating"
+                                                    : s->heat_flux.present ? "heat-flux"
+                                                                           : "background",
+                             "the BGK reference of paper E is for shear and collisions only");
+    if (s->particles.initial != SIM_INITIAL_MAXWELLIAN || u[0] != 0 || u[1] != 0 || u[2] != 0)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "particles.initial",
+                             "the BGK reference starts from local equilibrium: a Maxwellian "
+                             "at rest");
+    return SIM_OK;
+}
+
+/* Paper E: the BGK model's T and stresses (per unit density) and s0 (CVODE). */
+static sim_status bgk_references(const sim_scene *scene, const double *t, vfy_refs *refs,
+                                 sim_error *err)
+{
+    static const char *const names[] = {"T_bgk",   "Pxx_bgk", "Pyy_bgk",
+                                        "Pzz_bgk", "Pxy_bgk", "s0_bgk"};
+    double *col[6];
+    for (size_t j = 0; j < 6; j++)
+        if ((col[j] = add_column(refs, names[j])) == NULL)
+            return NO_MEMORY(err);
+    const ref_bgk_params p = vfy_bgk_params(scene);
+    const ref_bgk_output out = {.T = col[0], .Pxx = col[1], .Pyy = col[2], .Pzz = col[3],
+                                .Pxy = col[4], .s0 = col[5]};
+    char msg[256];
+    if (ref_bgk_solve(&p, t, scene->outputs, NULL, &out, msg, sizeof msg) != REF_OK)
+        return sim_error_set(err, SIM_EINVAL, "", "T_bgk: %s", msg);
+    return SIM_OK;
+}
+
 /* Which paper A references the scene admits; the key at fault otherwise. */
 static sim_status check_paper_a(const sim_scene *s, sim_error *err)
 {
@@ -173,10 +228,10 @@ static sim_status check_paper_a(const sim_scene *s, sim_error *err)
     if (!s->collisions.present)
         return sim_error_set(err, SIM_EUNSUPPORTED, "collisions",
                              "no reference applies: paper A references need [collisions]");
-    if (s->shear.present || s->heat_flux.present)   /* (a background goes to paper B) */
-        return sim_error_set(err, SIM_EUNSUPPORTED, s->shear.present ? "shear" : "heat-flux",
-                             "no reference implemented for %s yet",
-                             s->shear.present ? "shear flow" : "the heat-flux force");
+    if (s->heat_flux.present)   /* (a background goes to paper B, shear to paper E) */
+        return sim_error_set(err, SIM_EUNSUPPORTED, "heat-flux",
+                             "no time series reference for the heat-flux force (its references "
+                             "are values: gdsmc sonine)");
     if (s->heating.present && s->heating.type != SIM_HEATING_WHITE_NOISE)
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
                              "paper A references need white-noise heating");
@@ -203,8 +258,10 @@ static sim_status check_paper_a(const sim_scene *s, sim_error *err)
 sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_error *err)
 {
     memset(refs, 0, sizeof *refs);
-    const int paper_b = scene->background.present;
-    sim_status status = paper_b ? check_paper_b(scene, err) : check_paper_a(scene, err);
+    const int paper_b = scene->background.present, paper_e = scene->shear.present && !paper_b;
+    sim_status status = paper_b   ? check_paper_b(scene, err)
+                        : paper_e ? check_paper_e(scene, err)
+                                  : check_paper_a(scene, err);
     if (status != SIM_OK)
         return status;
     const size_t M = scene->outputs;
@@ -223,6 +280,8 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
     const double n = (double)scene->particles.n;
     if (paper_b) {
         status = background_references(scene, t, refs, err);
+    } else if (paper_e) {
+        status = bgk_references(scene, t, refs, err);
     } else if (scene->collisions.exponent == 0.0) {   /* Maxwell molecules: exact */
         double *exact = add_column(refs, "T_exact"), *centred = NULL, *raw = NULL;
         if (exact != NULL && !scene->particles.zero_momentum) {

@@ -15,6 +15,12 @@
  *                         T_finite_n (exact E T_n, reference/background.h)
  *   hard-spheres kernels: T_le, ux_le, uy_le, uz_le (B.21) and T_grad,
  *                         ux_grad, uy_grad, uz_grad (B.22), with CVODE
+ *
+ * Paper E scenes (homogeneous shear of hard spheres from a Maxwellian at rest,
+ * model ihs or ehs, nothing else):
+ *   T_bgk, Pxx_bgk, Pyy_bgk, Pzz_bgk, Pxy_bgk (per unit density), s0_bgk (the
+ *   local-equilibrium collision counter, times beta for ehs): the BGK model's
+ *   second-moment system with CVODE (reference/bgk.h)
  */
 #ifndef GDSMC_VFY_SCENE_REFS_H
 #define GDSMC_VFY_SCENE_REFS_H
@@ -23,6 +29,7 @@
 
 #include "error.h"
 #include "background.h"
+#include "bgk.h"
 #include "heated.h"
 #include "scene.h"
 
@@ -56,5 +63,8 @@ ref_heated_params vfy_heated_params(const sim_scene *scene);
  * mixture's, which includes the spread of the two drifts); rho = 1 and
  * C2 = rate x constant of [collisions] (0 without collisions). */
 ref_background_params vfy_background_params(const sim_scene *scene);
+
+/* The paper E BGK parameters of a shear scene (no checks). */
+ref_bgk_params vfy_bgk_params(const sim_scene *scene);
 
 #endif
