@@ -554,8 +554,8 @@ static void test_batches_and_case_checks(void **state)
 }
 
 /* The pure helpers of the steady and cost cases: a time average over the
- * second half, and the largest absolute difference; each moves with a
- * wrong input. */
+ * second half, the largest absolute difference, and two estimates' distance
+ * in joint half-widths; each moves with a wrong input. */
 static void test_time_average_and_abs_diff(void **state)
 {
     (void)state;
@@ -565,6 +565,10 @@ static void test_time_average_and_abs_diff(void **state)
     assert_true(isnan(vfy_time_average(t, x, 5, 5.0)));   /* no time that late */
     assert_close(vfy_max_abs_diff(x, x, 5), 0.0, 0, 0);
     assert_close(vfy_max_abs_diff(x, y, 5), 0.5, 1e-15, 0);
+    /* two estimates 5 apart with half-widths 3 and 4: one joint half-width */
+    assert_close(vfy_z_pair(1.0, 3.0, 6.0, 4.0), 1.0, 1e-15, 0);
+    assert_close(vfy_z_pair(6.0, 3.0, 1.0, 4.0), 1.0, 1e-15, 0);
+    assert_close(vfy_z_pair(1.0, 3.0, 11.0, 4.0), 2.0, 1e-15, 0);
 }
 
 /* The registry names every series vfy_scene_references gives a shipped

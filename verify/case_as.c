@@ -84,9 +84,8 @@ static double as_z_partner(const vfy_case_run *run, const vfy_row *row, const vf
         return NAN;
     char ci[40];
     snprintf(ci, sizeof ci, "%s_ci_t", m->a);
-    const double s1 = vfy_values_get(&row->values, ci), s2 = vfy_values_get(&other->values, ci);
-    return fabs(vfy_values_get(&row->values, m->a) - vfy_values_get(&other->values, m->a))
-           / sqrt(s1 * s1 + s2 * s2);
+    return vfy_z_pair(vfy_values_get(&row->values, m->a), vfy_values_get(&row->values, ci),
+                      vfy_values_get(&other->values, m->a), vfy_values_get(&other->values, ci));
 }
 
 /* 100 (q - q')/q' with q' the value of the row x rows before. */

@@ -107,9 +107,8 @@ static double msg_z_pair(const vfy_case_run *run, const vfy_row *row, const vfy_
     char ca[40], cb[40];
     snprintf(ca, sizeof ca, "%s_ci_t", m->a);
     snprintf(cb, sizeof cb, "%s_ci_t", m->b);
-    const double sa = vfy_values_get(&row->values, ca), sb = vfy_values_get(&row->values, cb);
-    return fabs(vfy_values_get(&row->values, m->a) - vfy_values_get(&row->values, m->b))
-           / sqrt(sa * sa + sb * sb);
+    return vfy_z_pair(vfy_values_get(&row->values, m->a), vfy_values_get(&row->values, ca),
+                      vfy_values_get(&row->values, m->b), vfy_values_get(&row->values, cb));
 }
 
 /* Each reported quantity Q per unit of the case's force ("Qc"), its

@@ -109,6 +109,11 @@ double vfy_max_abs_diff(const double *a, const double *b, size_t count)
     return worst;
 }
 
+double vfy_z_pair(double a, double sa, double b, double sb)
+{
+    return fabs(a - b) / sqrt(sa * sa + sb * sb);
+}
+
 size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t bins, double b,
                     double c_lo, double lambda, double *A, double *A_sd, double *K)
 {

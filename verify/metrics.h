@@ -54,6 +54,10 @@ double vfy_time_average(const double *t, const double *mean, size_t count, doubl
 /* max_m |a[m] - b[m]|. */
 double vfy_max_abs_diff(const double *a, const double *b, size_t count);
 
+/* |a - b| over the quadrature sum of their half-widths sa and sb: how far
+ * apart two independent estimates are, in units of their joint half-width. */
+double vfy_z_pair(double a, double sa, double b, double sb);
+
 /* Weighted least squares of ln f = ln K - A c^b over the bins k with
  * c[k] >= c_lo, f[k] > 0 and ci[k] < f[k]/2 (ci = lambda standard errors):
  * a high-energy tail f ~ K exp(-A c^b) (paper C §4).  Sets A, its standard
