@@ -36,6 +36,8 @@ static void drag_step(const sim_effect *e, sim_run *run, double h)
     }
     for (int k = 0; k < 3; k++)
         u[k] /= (double)n;
+    /* one pass: in the Lagrangian frame u is 0 to round-off, so <v^2> - u^2 loses
+     * nothing to cancellation */
     const double theta = (s2 / (double)n - (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])) / 3.0;
     if (!(theta > 0.0))
         return;
@@ -65,10 +67,9 @@ sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_effect *effect, sim_e
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     const double alpha = scene->collisions.restitution;
-    const double lambda0 = 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate
-                                  * scene->collisions.constant);
     /* zeta0 = (2/(3 sqrt(pi))) (1 - alpha^2) sqrt(2 T/m)/lambda0 */
-    p->zeta_factor = 2.0 / (3.0 * sqrt(M_PI)) * (1.0 - alpha * alpha) * sqrt(2.0) / lambda0;
+    p->zeta_factor = 2.0 / (3.0 * sqrt(M_PI)) * (1.0 - alpha * alpha) * sqrt(2.0)
+                     / sim_scene_mean_free_path(scene);
     *effect = (sim_effect){.type = &drag_type, .params = p};
     return SIM_OK;
 }

@@ -14,7 +14,7 @@
  * sampled K0 differs from 3 n T0/2 by O(n^{-1/2}), the scene's T0 is the
  * value the reduced units use.)  Unlike the keep-T Gaussian thermostat
  * (effect_heating.c), which rescales about the mean, the mean is removed:
- * the force adds a drift (1/2) eps <V_x^2> h per step that the paper's
+ * the force adds a drift -(1/2) eps <V_x^2> h per step that the paper's
  * projection takes away.
  *
  * The force acts on peculiar velocities, so the gas must start at rest

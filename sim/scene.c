@@ -58,3 +58,8 @@ double sim_scene_grain_mass(const sim_scene *scene)
                ? scene->particles.first.mass
                : scene->particles.maxwellian.mass;
 }
+
+double sim_scene_mean_free_path(const sim_scene *scene)
+{
+    return 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate * scene->collisions.constant);
+}

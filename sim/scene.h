@@ -186,6 +186,11 @@ int sim_scene_key_line(const sim_scene *scene, const char *key);
  * simulates one species and refuses mass1 != mass2). */
 double sim_scene_grain_mass(const sim_scene *scene);
 
+/* The mean free path lambda0 = 1/(sqrt(2) pi n sigma^2) with n sigma^2 =
+ * 4 gamma C, the hard-sphere convention of papers D and E (SPEC §6, §7), used
+ * for every kernel: eps* = lambda0 eps, tau = lambda0/sqrt(2T/m). */
+double sim_scene_mean_free_path(const sim_scene *scene);
+
 /* Output time m (0 <= m < outputs): m t_end / (outputs - 1). */
 double sim_scene_output_time(const sim_scene *scene, size_t m);
 

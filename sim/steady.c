@@ -139,6 +139,12 @@ static inline void laguerre3(double a, double x, double L[3])
     L[2] = ((5.0 + a - x) * L[1] - (2.0 + a) * L[0]) / 3.0;
 }
 
+double sim_steady_kappa_per_moment(const sim_scene *scene)
+{
+    return -64.0 / (75.0 * sqrt(M_PI))
+           / (sim_scene_mean_free_path(scene) * scene->heat_flux.strength);
+}
+
 /* Paper D's heat-flux quantities of one sample (steady.h), added to
  * sum[hf ...] (hf = sim_steady_heat_flux_first). */
 static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, double mass,
@@ -148,10 +154,7 @@ static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, dou
     static const double Q[3] = {4.0 / 3.0, 16.0 / 15.0, 32.0 / 35.0};    /* D Eq. 3.12 */
     const size_t n = p->n, bins = scene->steady.bins;
     const double w = 1.0 / (double)n, v0 = sqrt(2.0 * theta), inv_v0 = 1.0 / v0;
-    /* eps* = lambda eps, lambda = 1/(sqrt(2) pi n sigma^2), n sigma^2 = 4 gamma C (SPEC §6) */
-    const double lambda = 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate
-                                 * scene->collisions.constant);
-    const double inv_eps = 1.0 / (lambda * scene->heat_flux.strength);
+    const double inv_eps = 1.0 / (sim_scene_mean_free_path(scene) * scene->heat_flux.strength);
     const double delta = bins > 0 ? scene->steady.c_max / (double)bins : 1.0;
     double *hf = sum + sim_steady_heat_flux_first(scene);
     double *g1 = hf + SIM_HF_SCALARS, *beta1 = g1 + bins;
@@ -181,7 +184,7 @@ static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, dou
         }
     }
     hf[SIM_HF_QX] += 0.5 * mass * v0 * v0 * v0 * q * w;
-    hf[SIM_HF_KAPPA_PRIME] += -64.0 / (75.0 * sqrt(M_PI)) * q * w * inv_eps;
+    hf[SIM_HF_KAPPA_PRIME] += sim_steady_kappa_per_moment(scene) * q * w;
     for (int k = 0; k < 3; k++) {
         hf[SIM_HF_B1 + k] += P[k] * b[k] * w * inv_eps;
         hf[SIM_HF_B1_X + k] += Q[k] * bx[k] * w * inv_eps;
@@ -205,9 +208,8 @@ static void shear_sample(const sim_scene *scene, const sim_particles *p, const d
     }
     const double norm = 1.0 / ((double)n * theta);   /* P/(nT) with T = m theta */
     /* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2T/m), SPEC §7 */
-    const double lambda0 = 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate
-                                  * scene->collisions.constant);
-    const double tau_eta = 1.016 * 5.0 * sqrt(M_PI) / 8.0 * lambda0 / sqrt(2.0 * theta);
+    const double tau_eta = 1.016 * 5.0 * sqrt(M_PI) / 8.0 * sim_scene_mean_free_path(scene)
+                           / sqrt(2.0 * theta);
     double v12 = NAN;
     const size_t pairs = scene->steady.pairs;
     if (pairs > 0 && rng != NULL) {

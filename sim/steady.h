@@ -115,6 +115,10 @@ long sim_steady_find(const sim_scene *scene, const char *name);
 double sim_steady_bin_lower(const sim_scene *scene, size_t k);
 double sim_steady_bin_centre(const sim_scene *scene, size_t k);
 
+/* kappa'/kappa0 per unit of the reduced moment <c^2 c_x>: -(64/(75 sqrt(pi)))/eps*
+ * (the kappa_prime above; D Eq. 2.47 with q_x = (m/2) v0^3 <c^2 c_x>). */
+double sim_steady_kappa_per_moment(const sim_scene *scene);
+
 /* Add one sample of every quantity of p to sum[sim_steady_count(scene)]
  * (particles of mass `mass`; pair sampling with rng, which may be NULL when
  * steady.pairs = 0).  Allocates nothing. */

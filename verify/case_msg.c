@@ -359,10 +359,7 @@ static sim_status msg_kappa_after(vfy_case_run *run, vfy_report *r, char *msg, s
         const sim_scene *s = &row->scene;
         const double m = s->particles.maxwellian.mass, T0 = s->particles.maxwellian.temperature;
         const double v0 = sqrt(2.0 * T0 / m);
-        const double lambda = 1.0 / (sqrt(2.0) * M_PI * 4.0 * s->collisions.rate
-                                     * s->collisions.constant);
-        const double f = -2.0 / (m * v0 * v0 * v0) * 64.0 / (75.0 * sqrt(M_PI))
-                         / (lambda * s->heat_flux.strength);
+        const double f = 2.0 / (m * v0 * v0 * v0) * sim_steady_kappa_per_moment(s);
         n[i] = row->res.n;
         snprintf(label[i], sizeof label[i], "alpha = %.1f, eps* = %g",
                  vfy_values_get(&row->values, "alpha"), vfy_values_get(&row->values, "eps_star"));
@@ -508,7 +505,8 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
         betacs[i] = NULL;
     }
     if (status == SIM_OK) {
-        /* the first Sonine's beta_1/b'_1 at the same edges (midpoint rule, 64 steps a bin) */
+        /* the first Sonine's beta_1/b'_1 at the same edges (midpoint rule, 64 steps a
+         * bin), in phi's storage, which the per-row figures no longer need */
         double *sonine = phi, acc = 0.0, u0 = 0.0;
         for (size_t k = 0; k < bins; k++) {
             const double u1 = sqrt(bx[k]), du = (u1 - u0) / 64.0;
@@ -519,7 +517,7 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
             sonine[k] = 8.0 / (3.0 * sqrt(M_PI)) * acc;
             u0 = u1;
         }
-        double *zero = phic;
+        double *zero = phic;   /* beta_1's error bars: none drawn (phic's storage) */
         for (size_t k = 0; k < bins; k++)
             zero[k] = 0.0;
         for (size_t i = 0; i < rows && i < 8; i++)
@@ -576,8 +574,8 @@ const vfy_case_desc vfy_msg_kappa = {
         "compares alpha = 1 with the exact elastic value (1.025218, reached by the Sonine "
         "expansion of the linearised Boltzmann operator). Figure {case}-t: kappa'(t) of "
         "every row (paper D Fig. 1 shows alpha = 0.3 at both strengths). Checks: more than "
-        "5 half-widths below first Sonine for alpha <= 0.5 (2 at quick sizes); within 5% (+ half-width) of it for "
-        "alpha >= 0.7 (paper D: it \"does a good job\" there and \"dramatically "
+        "5 half-widths below first Sonine for alpha <= 0.5 (2 at quick sizes); within 5% "
+        "(+ half-width) of it for alpha >= 0.7 (paper D: it \"does a good job\" there and \"dramatically "
         "overestimates\" below); alpha = 1 extrapolated within its half-width of the exact "
         "value; " MSG_T_NOTE ". Total wall time {wall_total:%.1f} s."};
 
