@@ -556,7 +556,7 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
     p->lambda = scene->collisions.exponent;
     p->alpha = ehs ? 1.0 : alpha;
     p->prefactor = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
-                   * (double)(scene->particles.n - 1) * (ehs ? 0.5 * (1.0 + alpha) : 1.0);
+                   * (double)(scene->particles.n - 1) * sim_scene_collision_rate_factor(scene);
     p->stage_time = 1.0 / (4.0 * p->prefactor);
     *effect = (sim_effect){.type = &collisions_type, .params = p};
     return SIM_OK;

@@ -119,7 +119,7 @@ struct sim_engine {
 struct sim_workspace {
     sim_run run;
     unsigned char *states;   /* the event processes' per-run states */
-    gsl_rng *observer_rng;   /* pair sampling (steady observers), or NULL */
+    gsl_rng *observer_rng;   /* pair sampling (shear and steady observers), or NULL */
     double *steady_sum;      /* [nsteady] sums of the samples of the current run */
     size_t samples;          /* how many samples those sums hold */
     size_t steps;            /* time-step scheme: steps in the current output interval */
@@ -265,7 +265,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     e->scene = *scene;
     e->mass = sim_scene_grain_mass(scene);
-    e->observables = SIM_OBS_BASE;
+    e->observables = sim_observe_row_length(scene);
 
     sim_status status = SIM_OK;
     if (scene->collisions.present) {
@@ -392,13 +392,13 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
         if (w->run.rng == NULL || w->states == NULL)
             status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     }
-    if (status == SIM_OK && engine->nsteady > 0) {
-        w->steady_sum = calloc(engine->nsteady, sizeof *w->steady_sum);
-        if (engine->scene.steady.pairs > 0)
-            w->observer_rng = sim_rng_alloc();
-        if (w->steady_sum == NULL || (engine->scene.steady.pairs > 0 && !w->observer_rng))
-            status = sim_error_set(err, SIM_ENOMEM, "steady", "out of memory");
-    }
+    if (status == SIM_OK && engine->nsteady > 0
+        && (w->steady_sum = calloc(engine->nsteady, sizeof *w->steady_sum)) == NULL)
+        status = sim_error_set(err, SIM_ENOMEM, "steady", "out of memory");
+    const int pairs = (engine->nsteady > 0 && engine->scene.steady.pairs > 0)
+                      || (engine->scene.shear.present && engine->scene.shear.pairs > 0);
+    if (status == SIM_OK && pairs && (w->observer_rng = sim_rng_alloc()) == NULL)
+        status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     if (status != SIM_OK) {
         sim_workspace_free(w);
         return status;
@@ -522,13 +522,19 @@ static size_t pick_event(const sim_engine *e, gsl_rng *rng, const double *rates,
     return k;
 }
 
-/* Output time m: the standard observables, and a steady sample if t_m >= from. */
+/* Output time m: the standard observables (with [shear], paper E's after
+ * them), and a steady sample if t_m >= from. */
 static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double *obs,
                        size_t *samples)
 {
-    sim_observe(&ws->run.p, e->mass, obs + m * e->observables);
+    double *row = obs + m * e->observables;
+    sim_observe(&ws->run.p, e->mass, row);
+    if (e->scene.shear.present)
+        sim_observe_shear(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions, m,
+                          m > 0 ? row - e->observables : NULL, ws->observer_rng, row);
     if (e->nsteady > 0 && m >= e->steady_from) {
-        sim_steady_sample(&e->scene, &ws->run.p, e->mass, ws->observer_rng, ws->steady_sum);
+        sim_steady_sample(&e->scene, &ws->run.p, e->mass, ws->observer_rng, row,
+                          ws->steady_sum);
         (*samples)++;
     }
 }
@@ -716,11 +722,10 @@ void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, do
     sim_rng_set_stream(rng, scene->seed, index);
     memset(&run->counts, 0, sizeof run->counts);
     ws->samples = 0;
-    if (e->nsteady > 0) {
+    if (e->nsteady > 0)
         memset(ws->steady_sum, 0, e->nsteady * sizeof *ws->steady_sum);
-        if (ws->observer_rng)
-            sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
-    }
+    if (ws->observer_rng)
+        sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
     sim_particles_sample(&run->p, scene, rng);
     observe_at(e, ws, 0, obs, &ws->samples);
 }

@@ -1,20 +1,25 @@
 #include "observe.h"
 
+#include <math.h>
 #include <string.h>
 
-static const char *const names[SIM_OBS_BASE] = {
+#include "rng.h"
+
+static const char *const names[SIM_OBS_ROW_MAX] = {
     "T", "T_raw", "ux", "uy", "uz", "Pxx", "Pyy", "Pzz", "Pxy", "Pxz", "Pyz",
     "qx", "qy", "qz", "a2", "a3",
+    "s", "s0", "T_ratio", "Pxy_reduced", "N1", "N2", "a_star", "eta_star", "Psi1", "Psi2",
+    "v12_ratio", "R0", "R1", "R2", "R3",
 };
 
 const char *sim_observable_name(sim_observable k)
 {
-    return k < SIM_OBS_BASE ? names[k] : "?";
+    return k < SIM_OBS_ROW_MAX ? names[k] : "?";
 }
 
 int sim_observable_find(const char *name, size_t len)
 {
-    for (int k = 0; k < SIM_OBS_BASE; k++)
+    for (int k = 0; k < SIM_OBS_ROW_MAX; k++)
         if (strlen(names[k]) == len && strncmp(names[k], name, len) == 0)
             return k;
     return -1;
@@ -86,4 +91,90 @@ void sim_observe_pending(const sim_particles *p, double mass, double t, double s
     now[SIM_OBS_PZZ] += centred;
     for (int k = SIM_OBS_T; k <= SIM_OBS_PYZ; k++)
         out[k] = now[k];
+}
+
+size_t sim_observe_row_length(const sim_scene *scene)
+{
+    return scene->shear.present ? SIM_OBS_ROW_MAX : SIM_OBS_BASE;
+}
+
+/* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2 theta), theta = T/m (E Eq. 2.18
+ * with SPEC §7's 1.016). */
+static double tau_eta(const sim_scene *scene, double theta)
+{
+    return 1.016 * 5.0 * sqrt(M_PI) / 8.0 * sim_scene_mean_free_path(scene) / sqrt(2.0 * theta);
+}
+
+/* ds0/dt = beta/(sqrt(pi) tau), tau = lambda0/sqrt(2 theta) (E Eq. 3.13). */
+static double s0_rate(const sim_scene *scene, double theta)
+{
+    return sim_scene_collision_rate_factor(scene) * sqrt(2.0 * theta)
+           / (sqrt(M_PI) * sim_scene_mean_free_path(scene));
+}
+
+/* The Maxwellian's fraction of reduced speeds below x: erf(x) - 2x e^{-x^2}/sqrt(pi). */
+static double maxwell_below(double x)
+{
+    return isinf(x) ? 1.0 : erf(x) - 2.0 * x * exp(-x * x) / sqrt(M_PI);
+}
+
+void sim_observe_shear(const sim_scene *scene, const sim_particles *p, double mass,
+                       uint64_t collisions, size_t m, const double *prev, gsl_rng *rng,
+                       double *row)
+{
+    static const double edges[5] = {0.0, 1.0, 2.0, 3.0, INFINITY};   /* E's C_l */
+    const size_t n = p->n;
+    const double T = row[SIM_OBS_T], theta = T / mass, v0 = sqrt(2.0 * theta);
+    const double V[3] = {row[SIM_OBS_UX], row[SIM_OBS_UY], row[SIM_OBS_UZ]};
+
+    row[SIM_OBS_S] = (double)collisions / (double)n;
+    row[SIM_OBS_S0] = 0.0;
+    if (m > 0 && prev != NULL) {
+        const double dt = sim_scene_output_time(scene, m) - sim_scene_output_time(scene, m - 1);
+        row[SIM_OBS_S0] = prev[SIM_OBS_S0]
+                          + 0.5 * dt * (s0_rate(scene, prev[SIM_OBS_T] / mass)
+                                        + s0_rate(scene, theta));
+    }
+    row[SIM_OBS_T_RATIO] = T / scene->particles.maxwellian.temperature;
+    /* the base row's P_ij = m <C_i C_j> per particle, so P/(nT) = P_ij/T */
+    const double pxy = -row[SIM_OBS_PXY] / T;
+    const double n1 = (row[SIM_OBS_PXX] - row[SIM_OBS_PYY]) / T;
+    const double n2 = (row[SIM_OBS_PZZ] - row[SIM_OBS_PYY]) / T;
+    const double a_star = scene->shear.rate * tau_eta(scene, theta);
+    row[SIM_OBS_PXY_REDUCED] = pxy;
+    row[SIM_OBS_N1] = n1;
+    row[SIM_OBS_N2] = n2;
+    row[SIM_OBS_A_STAR] = a_star;
+    row[SIM_OBS_ETA_STAR] = pxy / a_star;
+    row[SIM_OBS_PSI1] = -n1 / (a_star * a_star);
+    row[SIM_OBS_PSI2] = n2 / (a_star * a_star);
+
+    double v12 = NAN;
+    const size_t pairs = scene->shear.pairs;
+    if (pairs > 0 && rng != NULL) {
+        double s3 = 0.0;
+        for (size_t q = 0; q < pairs; q++) {
+            size_t i = (size_t)sim_rng_index(rng, n);
+            size_t j = (size_t)sim_rng_index(rng, n - 1);
+            j += (j >= i);
+            const double g[3] = {p->v[i][0] - p->v[j][0], p->v[i][1] - p->v[j][1],
+                                 p->v[i][2] - p->v[j][2]};
+            const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+            s3 += g2 * sqrt(g2);
+        }
+        v12 = s3 / (double)pairs / (32.0 / sqrt(M_PI) * theta * sqrt(theta));
+    }
+    row[SIM_OBS_V12_RATIO] = v12;
+
+    /* E Eq. (3.15): shells of |C|/v0 */
+    size_t count[4] = {0, 0, 0, 0};
+    const double w1 = v0 * v0, w2 = 4.0 * w1, w3 = 9.0 * w1;
+    for (size_t i = 0; i < n; i++) {
+        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
+        const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        count[(c2 >= w1) + (c2 >= w2) + (c2 >= w3)]++;
+    }
+    for (int l = 0; l < 4; l++)
+        row[SIM_OBS_R0 + l] = (double)count[l] / (double)n
+                              / (maxwell_below(edges[l + 1]) - maxwell_below(edges[l]));
 }

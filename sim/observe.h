@@ -16,7 +16,12 @@
 
 #include <stddef.h>
 
+#include <stdint.h>
+
+#include <gsl/gsl_rng.h>
+
 #include "particles.h"
+#include "scene.h"
 
 typedef enum sim_observable {
     SIM_OBS_T, SIM_OBS_T_RAW,
@@ -24,14 +29,21 @@ typedef enum sim_observable {
     SIM_OBS_PXX, SIM_OBS_PYY, SIM_OBS_PZZ, SIM_OBS_PXY, SIM_OBS_PXZ, SIM_OBS_PYZ,
     SIM_OBS_QX, SIM_OBS_QY, SIM_OBS_QZ,
     SIM_OBS_A2, SIM_OBS_A3,
-    SIM_OBS_BASE   /* the observables every scene records, first in each output row */
+    SIM_OBS_BASE,  /* the observables every scene records, first in each output row */
+    /* Paper E's uniform shear flow (SPEC §7, E §III), after the base set in a
+     * scene with [shear]; sim_observe_shear below defines them. */
+    SIM_OBS_S = SIM_OBS_BASE, SIM_OBS_S0, SIM_OBS_T_RATIO,
+    SIM_OBS_PXY_REDUCED, SIM_OBS_N1, SIM_OBS_N2, SIM_OBS_A_STAR, SIM_OBS_ETA_STAR,
+    SIM_OBS_PSI1, SIM_OBS_PSI2, SIM_OBS_V12_RATIO,
+    SIM_OBS_R0, SIM_OBS_R1, SIM_OBS_R2, SIM_OBS_R3,
+    SIM_OBS_ROW_MAX  /* the longest row */
 } sim_observable;
 
-/* Column name of a base observable ("T", "T_raw", "ux", ...). */
+/* Column name of an observable ("T", "T_raw", "ux", ..., "s", "Pxy_reduced", ...). */
 const char *sim_observable_name(sim_observable k);
 
-/* The index of the base observable named by the len characters at name, or
- * -1 when none is. */
+/* The index of the observable named by the len characters at name, or -1
+ * when none is (a scene's row holds the first sim_observe_row_length). */
 int sim_observable_find(const char *name, size_t len);
 
 /* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_BASE]. */
@@ -50,5 +62,34 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE]);
  * those entries of out; p is not changed. */
 void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
                          double out[SIM_OBS_BASE]);
+
+/* Observables in each output row of the scene: SIM_OBS_BASE, or
+ * SIM_OBS_ROW_MAX with [shear]. */
+size_t sim_observe_row_length(const sim_scene *scene);
+
+/* Paper E's shear-flow observables of one system at output m (SPEC §7, E
+ * Eqs. 3.13-3.15, 4.16-4.19), written into row[SIM_OBS_S .. SIM_OBS_R3] of
+ * the full output row `row`, whose base part sim_observe has filled from the
+ * same particles; prev is the row of output m - 1 (NULL at m = 0).  With T the
+ * centred temperature, theta = T/m, v0 = sqrt(2 theta), lambda0 =
+ * sim_scene_mean_free_path, tau = lambda0/v0 and tau_eta = 1.016 (5 sqrt(pi)/8)
+ * tau (E Eq. 2.18):
+ *   s            collisions/n: the accepted collisions so far per particle, each
+ *                counted once (E's s(t); s'(t) for EHS)
+ *   s0           the local-equilibrium clock ∫ beta dt/(sqrt(pi) tau(t)) (E Eq. 3.13,
+ *                beta = (1 + alpha)/2 for EHS and 1 for IHS) by the trapezoidal rule
+ *                over the output times
+ *   T_ratio      T/T0 with T0 = particles.temperature
+ *   Pxy_reduced  -Pxy/(nT);  N1, N2 = (Pxx - Pyy)/(nT), (Pzz - Pyy)/(nT)
+ *   a_star       a tau_eta(T);  eta_star = Pxy_reduced/a_star (E §V C)
+ *   Psi1, Psi2   -N1/a*^2, N2/a*^2 (E §V C's viscometric functions)
+ *   v12_ratio    <|V12|^3>/<|V12|^3>_0 over shear.pairs random pairs i != j drawn
+ *                from rng, <|V12|^3>_0 = (32/sqrt(pi)) theta^{3/2} (NaN without pairs)
+ *   R0 .. R3     E Eq. (3.15): the fraction of particles with C_l <= |C|/v0 < C_{l+1}
+ *                (C = 0, 1, 2, 3, inf) over the Maxwellian's, P(C_{l+1}) - P(C_l) with
+ *                P(x) = erf(x) - 2x e^{-x^2}/sqrt(pi) */
+void sim_observe_shear(const sim_scene *scene, const sim_particles *p, double mass,
+                       uint64_t collisions, size_t m, const double *prev, gsl_rng *rng,
+                       double *row);
 
 #endif

@@ -63,3 +63,11 @@ double sim_scene_mean_free_path(const sim_scene *scene)
 {
     return 1.0 / (sqrt(2.0) * M_PI * 4.0 * scene->collisions.rate * scene->collisions.constant);
 }
+
+double sim_scene_collision_rate_factor(const sim_scene *scene)
+{
+    if (scene->collisions.beta > 0.0)
+        return scene->collisions.beta;
+    return scene->collisions.model == SIM_MODEL_EHS ? 0.5 * (1.0 + scene->collisions.restitution)
+                                                    : 1.0;
+}

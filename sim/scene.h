@@ -118,6 +118,8 @@ typedef struct sim_scene {
         double rate;         /* gamma of paper A (default 1) */
         double restitution;  /* alpha of A, e of B, in (0, 1] */
         sim_collision_model model;
+        double beta;         /* the collision rate factor; 0: the model's (ihs 1, ehs paper
+                                E's (1 + alpha)/2) */
     } collisions;
 
     /* [heating] thermostats (SPEC §3, §5) */
@@ -146,6 +148,7 @@ typedef struct sim_scene {
         sim_shear_boundary boundary;
         double length;
         size_t layers;
+        size_t pairs;        /* random pairs per output for <|V12|^3> (observe.h); 0: none */
     } shear;
 
     /* [heat-flux] homogeneous heat-flux force (SPEC §6) */
@@ -190,6 +193,11 @@ double sim_scene_grain_mass(const sim_scene *scene);
  * 4 gamma C, the hard-sphere convention of papers D and E (SPEC §6, §7), used
  * for every kernel: eps* = lambda0 eps, tau = lambda0/sqrt(2T/m). */
 double sim_scene_mean_free_path(const sim_scene *scene);
+
+/* The collision rate factor beta: collisions.beta when set, else the
+ * model's, 1 for ihs and paper E's (1 + alpha)/2 for ehs (elastic collisions
+ * at beta times the IHS rate, SPEC §7). */
+double sim_scene_collision_rate_factor(const sim_scene *scene);
 
 /* Output time m (0 <= m < outputs): m t_end / (outputs - 1). */
 double sim_scene_output_time(const sim_scene *scene, size_t m);

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "observe.h"
 #include "rng.h"
 
 static const char *const names[SIM_STEADY_BIN0] = {
@@ -15,7 +16,13 @@ static const char *const heat_flux_names[SIM_HF_SCALARS] = {
 };
 
 static const char *const shear_names[SIM_SHEAR_SCALARS] = {
-    "Pxy_reduced", "N1", "N2", "a_star", "v12_ratio",
+    "Pxy_reduced", "N1", "N2", "a_star", "v12_ratio", "R0", "R1", "R2", "R3",
+};
+
+/* The output row's observables the shear scalars average, in their order. */
+static const sim_observable shear_row[SIM_SHEAR_SCALARS] = {
+    SIM_OBS_PXY_REDUCED, SIM_OBS_N1, SIM_OBS_N2, SIM_OBS_A_STAR, SIM_OBS_V12_RATIO,
+    SIM_OBS_R0, SIM_OBS_R1, SIM_OBS_R2, SIM_OBS_R3,
 };
 
 size_t sim_steady_shear_first(const sim_scene *scene)
@@ -28,7 +35,8 @@ size_t sim_steady_count(const sim_scene *scene)
 {
     if (!scene->steady.present)
         return 0;
-    return sim_steady_shear_first(scene) + (scene->shear.present ? SIM_SHEAR_SCALARS : 0);
+    return sim_steady_shear_first(scene)
+           + (scene->shear.present ? SIM_SHEAR_SCALARS + 5 * scene->steady.bins : 0);
 }
 
 size_t sim_steady_heat_flux_first(const sim_scene *scene)
@@ -40,8 +48,13 @@ const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t 
 {
     const size_t bins = scene->steady.bins, hf = sim_steady_heat_flux_first(scene);
     const size_t sh = sim_steady_shear_first(scene);
-    if (k >= sh)
-        snprintf(buf, len, "%s", k - sh < SIM_SHEAR_SCALARS ? shear_names[k - sh] : "?");
+    if (k >= sh + SIM_SHEAR_SCALARS + 4 * bins)
+        snprintf(buf, len, "F_%zu", k - sh - SIM_SHEAR_SCALARS - 4 * bins);
+    else if (k >= sh + SIM_SHEAR_SCALARS)
+        snprintf(buf, len, "%s_%zu", k - sh - SIM_SHEAR_SCALARS < 2 * bins ? "gx" : "gy",
+                 (k - sh - SIM_SHEAR_SCALARS) % (2 * bins));
+    else if (k >= sh)
+        snprintf(buf, len, "%s", shear_names[k - sh]);
     else if (k < SIM_STEADY_BIN0)
         snprintf(buf, len, "%s", names[k]);
     else if (k < hf)
@@ -58,8 +71,9 @@ const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t 
 int sim_steady_scalar(const sim_scene *scene, size_t k)
 {
     const size_t hf = sim_steady_heat_flux_first(scene);
+    const size_t sh = sim_steady_shear_first(scene);
     return k < SIM_STEADY_BIN0 || (k >= hf && k < hf + SIM_HF_SCALARS)
-           || k >= sim_steady_shear_first(scene);
+           || (k >= sh && k < sh + SIM_SHEAR_SCALARS);
 }
 
 long sim_steady_find(const sim_scene *scene, const char *name)
@@ -81,6 +95,11 @@ double sim_steady_bin_lower(const sim_scene *scene, size_t k)
 double sim_steady_bin_centre(const sim_scene *scene, size_t k)
 {
     return scene->steady.c_max * ((double)k + 0.5) / (double)scene->steady.bins;
+}
+
+double sim_steady_marginal_centre(const sim_scene *scene, size_t k)
+{
+    return sim_steady_bin_centre(scene, k) - scene->steady.c_max;
 }
 
 /* Paper C Eqs. (65), (66): Phi2 and Phi4 of one pair of peculiar velocities. */
@@ -192,49 +211,47 @@ static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, dou
     hf[SIM_HF_B1_X_OUTER] += Q[0] * outer * w * inv_eps;
 }
 
-/* Paper E's shear-flow quantities of one sample (steady.h), added to
- * sum[sim_steady_shear_first ...]; pairs from rng (may be NULL). */
-static void shear_sample(const sim_scene *scene, const sim_particles *p, const double V[3],
-                         double theta, gsl_rng *rng, double *sum)
+/* The bin of x in [0, bins/inv_width), x >= 0 (rounding kept inside). */
+static size_t bin_of(double x, double inv_width, size_t bins)
 {
-    const size_t n = p->n;
-    double P[4] = {0, 0, 0, 0};   /* xx, yy, zz, xy of <C_i C_j> */
-    for (size_t i = 0; i < n; i++) {
-        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
-        P[0] += c[0] * c[0];
-        P[1] += c[1] * c[1];
-        P[2] += c[2] * c[2];
-        P[3] += c[0] * c[1];
-    }
-    const double norm = 1.0 / ((double)n * theta);   /* P/(nT) with T = m theta */
-    /* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2T/m), SPEC §7 */
-    const double tau_eta = 1.016 * 5.0 * sqrt(M_PI) / 8.0 * sim_scene_mean_free_path(scene)
-                           / sqrt(2.0 * theta);
-    double v12 = NAN;
-    const size_t pairs = scene->steady.pairs;
-    if (pairs > 0 && rng != NULL) {
-        double s3 = 0.0;
-        for (size_t q = 0; q < pairs; q++) {
-            size_t i = (size_t)sim_rng_index(rng, n);
-            size_t j = (size_t)sim_rng_index(rng, n - 1);
-            j += (j >= i);
-            const double g[3] = {p->v[i][0] - p->v[j][0], p->v[i][1] - p->v[j][1],
-                                 p->v[i][2] - p->v[j][2]};
-            const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
-            s3 += g2 * sqrt(g2);
-        }
-        v12 = s3 / (double)pairs / (32.0 / sqrt(M_PI) * theta * sqrt(theta));
-    }
+    const size_t k = (size_t)(x * inv_width);
+    return k < bins ? k : bins - 1;
+}
+
+/* Paper E's shear-flow quantities of one sample (steady.h), added to
+ * sum[sim_steady_shear_first ...]: the row's shear observables, and with bins
+ * the marginals gx, gy (symmetrised, E Eq. 5.3) and F of C = (v - V)/v0. */
+static void shear_sample(const sim_scene *scene, const sim_particles *p, const double V[3],
+                         double inv_v0, const double *row, double *sum)
+{
     double *sh = sum + sim_steady_shear_first(scene);
-    sh[SIM_SHEAR_PXY] += -P[3] * norm;
-    sh[SIM_SHEAR_N1] += (P[0] - P[1]) * norm;
-    sh[SIM_SHEAR_N2] += (P[2] - P[1]) * norm;
-    sh[SIM_SHEAR_A_STAR] += scene->shear.rate * tau_eta;
-    sh[SIM_SHEAR_V12] += v12;
+    for (int k = 0; k < SIM_SHEAR_SCALARS; k++)
+        sh[k] += row[shear_row[k]];
+    const size_t bins = scene->steady.bins, n = p->n;
+    if (bins == 0)
+        return;
+    double *gx = sh + SIM_SHEAR_SCALARS, *gy = gx + 2 * bins, *F = gy + 2 * bins;
+    const double width = scene->steady.c_max / (double)bins, inv_width = 1.0 / width;
+    const double c_max = scene->steady.c_max;
+    const double half = 0.5 / ((double)n * width);       /* (1/2) per particle per width */
+    const double whole = 1.0 / ((double)n * width);
+    for (size_t i = 0; i < n; i++) {
+        const double cx = (p->v[i][0] - V[0]) * inv_v0, cy = (p->v[i][1] - V[1]) * inv_v0;
+        const double cz = (p->v[i][2] - V[2]) * inv_v0;
+        /* g_x^(+) at C_x for C_y > 0, g_x^(-)(-C_x) = g_x^(+) at -C_x for C_y < 0 */
+        const double x = cy > 0.0 ? cx : -cx, y = cx > 0.0 ? cy : -cy;
+        if (fabs(x) < c_max && cy != 0.0)
+            gx[bin_of(x + c_max, inv_width, 2 * bins)] += half;
+        if (fabs(y) < c_max && cx != 0.0)
+            gy[bin_of(y + c_max, inv_width, 2 * bins)] += half;
+        const double c = sqrt(cx * cx + cy * cy + cz * cz);
+        if (c < c_max)
+            F[bin_of(c, inv_width, bins)] += whole;
+    }
 }
 
 void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
-                       gsl_rng *rng, double *sum)
+                       gsl_rng *rng, const double *row, double *sum)
 {
     const size_t n = p->n, bins = scene->steady.bins;
     const double w = 1.0 / (double)n;
@@ -297,7 +314,7 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
     if (scene->heat_flux.present)
         heat_flux_sample(scene, p, mass, V, theta, sum);
     if (scene->shear.present)
-        shear_sample(scene, p, V, theta, rng, sum);
+        shear_sample(scene, p, V, inv_v0, row, sum);
 }
 
 void sim_steady_finish(const sim_scene *scene, double *avg)

@@ -48,13 +48,18 @@
  * The time averages divide by eps* only once the sample is taken, so eps = 0
  * gives NaN for everything but qx.
  *
- * With a [shear] section (paper E, SPEC §7), with tau_eta = 1.016 (5 sqrt(pi)/8)
- * lambda0/sqrt(2T/m) (lambda0 as above) and T the centred temperature, last:
- *   Pxy_reduced                -Pxy/(nT)
- *   N1, N2                     (Pxx - Pyy)/(nT), (Pzz - Pyy)/(nT)
- *   a_star                     a tau_eta(T), the reduced shear rate
- *   v12_ratio                  <|V12|^3>/<|V12|^3>_0 over steady.pairs random pairs,
- *                              <|V12|^3>_0 = (32/sqrt(pi)) (T/m)^{3/2} (NaN without pairs)
+ * With a [shear] section (paper E, SPEC §7), last: the time averages of the
+ * output row's shear observables (observe.h, sim_observe_shear)
+ *   Pxy_reduced, N1, N2, a_star, v12_ratio, R0, R1, R2, R3
+ * and, with steady.bins = B > 0, E's marginals of the reduced velocity
+ * C = (v - V)/sqrt(2T/m) (E Eqs. 3.16-3.20), as densities averaged over bins:
+ *   gx_0 ... gx_{2B-1}         g_x^(+)(C_x) on 2B bins of [-c_max, c_max): the density of
+ *                              C_x among the particles with C_y > 0, symmetrised by
+ *                              E Eq. (5.3), (1/2)[g_x^(+)(C_x) + g_x^(-)(-C_x)]
+ *                              (∫ gx = 1/2)
+ *   gy_0 ... gy_{2B-1}         g_y^(+)(C_y) likewise (C_x > 0; ∫ gy = 1/2)
+ *   F_0 ... F_{B-1}            F(C) = C^2 ∫ dΩ f*: the fraction of particles with |C| in
+ *                              speed bin k over its width (∫ F = 1)
  *
  * Pair sampling draws from its own random substream (rng.h), so observing
  * never changes the simulated trajectory.
@@ -84,15 +89,17 @@ typedef enum sim_steady_heat_flux {
     SIM_HF_SCALARS   /* the first g1 bin */
 } sim_steady_heat_flux;
 
-/* The shear-flow quantities, last (offsets from sim_steady_shear_first). */
+/* The shear-flow quantities, last (offsets from sim_steady_shear_first): the
+ * scalars, then the gx, gy and F bins. */
 typedef enum sim_steady_shear {
     SIM_SHEAR_PXY, SIM_SHEAR_N1, SIM_SHEAR_N2, SIM_SHEAR_A_STAR, SIM_SHEAR_V12,
+    SIM_SHEAR_R0, SIM_SHEAR_R1, SIM_SHEAR_R2, SIM_SHEAR_R3,
     SIM_SHEAR_SCALARS
 } sim_steady_shear;
 
 /* Number of steady quantities of the scene: SIM_STEADY_BIN0 + steady.bins,
  * plus SIM_HF_SCALARS + 2 steady.bins with [heat-flux], plus SIM_SHEAR_SCALARS
- * with [shear]; 0 without [steady]. */
+ * + 5 steady.bins with [shear]; 0 without [steady]. */
 size_t sim_steady_count(const sim_scene *scene);
 
 /* Index of the first heat-flux quantity (qx): SIM_STEADY_BIN0 + steady.bins. */
@@ -115,15 +122,20 @@ long sim_steady_find(const sim_scene *scene, const char *name);
 double sim_steady_bin_lower(const sim_scene *scene, size_t k);
 double sim_steady_bin_centre(const sim_scene *scene, size_t k);
 
+/* The reduced velocity component at the centre of marginal bin k (gx_k, gy_k):
+ * -c_max + (k + 1/2) c_max/bins. */
+double sim_steady_marginal_centre(const sim_scene *scene, size_t k);
+
 /* kappa'/kappa0 per unit of the reduced moment <c^2 c_x>: -(64/(75 sqrt(pi)))/eps*
  * (the kappa_prime above; D Eq. 2.47 with q_x = (m/2) v0^3 <c^2 c_x>). */
 double sim_steady_kappa_per_moment(const sim_scene *scene);
 
 /* Add one sample of every quantity of p to sum[sim_steady_count(scene)]
  * (particles of mass `mass`; pair sampling with rng, which may be NULL when
- * steady.pairs = 0).  Allocates nothing. */
+ * steady.pairs = 0; row: the output row just observed, whose shear
+ * observables the [shear] quantities average).  Allocates nothing. */
 void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
-                       gsl_rng *rng, double *sum);
+                       gsl_rng *rng, const double *row, double *sum);
 
 /* Turn one ensemble's time averages avg[sim_steady_count(scene)] into the
  * quantities above (the beta1 bins are sampled per bin and made cumulative

@@ -509,13 +509,13 @@ static void test_write_random_scenes(void **state)
     static const char *const reals[] = {
         "scene.t_end", "particles.mass", "particles.temperature", "collisions.constant",
         "collisions.rate", "background.density", "background.mass", "background.temperature",
-        "background.constant", "shear.length", "steady.c_max"};
+        "background.constant", "shear.length", "steady.c_max", "collisions.beta"};
     static const char *const unit[] = {"collisions.restitution", "particles.fraction"};
     static const char *const finite[] = {"heating.strength", "shear.rate",
                                          "heat-flux.strength"};
     static const char *const vectors[] = {"particles.velocity", "background.velocity"};
     static const char *const counts[] = {"particles.n", "particles.ensembles", "scene.seed",
-                                         "scene.outputs", "shear.layers"};
+                                         "scene.outputs", "shear.layers", "shear.pairs"};
     static const char *const words[] = {
         "collisions.model=ehs", "collisions.model=ihs", "scene.observation=sampled",
         "particles.zero_momentum=true", "particles.initial=shell", "shear.boundary=lees-edwards",
@@ -625,7 +625,7 @@ static void expect_error(const char *text, const char *const *ov, size_t nov,
 
 TRAP(trap_unknown_key, "[collisions]\nrestitution = 0.5\nalpha = 0.5\n",
      "t.ini:3: collisions.alpha: unknown key (allowed kernel, exponent, constant, rate, "
-     "restitution, model)")
+     "restitution, model, beta)")
 TRAP(trap_unknown_section, "[scene]\nt_end = 1\n\n[collision]\n",
      "t.ini:4: [collision]: unknown section (allowed " SECTIONS ")")
 TRAP(trap_key_outside_section, "; no section yet\nt_end = 1\n",

@@ -181,7 +181,7 @@ static void test_observer_normalisation(void **state)
     const size_t count = sim_steady_count(&s);
     double *sum = calloc(count, sizeof *sum);
     assert_non_null(sum);
-    sim_steady_sample(&s, &p, 1.0, NULL, sum);
+    sim_steady_sample(&s, &p, 1.0, NULL, NULL, sum);
     sim_steady_finish(&s, sum);
     const size_t hf = sim_steady_heat_flux_first(&s);
     /* one sample of n: sigma of P_k <c_x L_k>/eps* is P_k sqrt(<c_x^2 L_k^2>/n)/eps*

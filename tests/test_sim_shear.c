@@ -5,14 +5,21 @@
  * - the EHS model at alpha = 1 is the elastic IHS gas (no drag, beta = 1):
  *   the same numbers;
  * - one EHS drag step takes T to T e^{-zeta0(T) h} and keeps the mean
- *   velocity; with alpha = 1 it changes nothing. */
+ *   velocity; with alpha = 1 it changes nothing;
+ * - the shear observers (observe.h, steady.h) on an equilibrium gas: R_l = 1,
+ *   <V12^3>/<V12^3>_0 = 1, the marginals gx, gy and F the Maxwellian's;
+ *   the collision counter s and the clock s0 (with the EHS beta) agree;
+ * - elastic hard spheres sheared from equilibrium heat up and build their
+ *   shear stress as the BGK model says at short times (issue 16). */
 #include "test_sim_util.h"
 
 #include <string.h>
 
+#include "bgk.h"
 #include "effect.h"
 #include "rng.h"
 #include "run.h"
+#include "steady.h"
 
 /* The mean velocity and the centred T/m of p. */
 static void moments(const sim_particles *p, double u[3], double *theta)
@@ -144,12 +151,176 @@ static void test_ehs_drag_step(void **state)
     }
 }
 
+/* |x - want| <= ci (3.2 standard errors over the ensembles), and the same
+ * estimate tells `wrong` apart (|x - wrong| > ci). */
+static void assert_within(double x, double ci, double want, double wrong, const char *what)
+{
+    if (!(fabs(x - want) <= ci) || !(fabs(x - wrong) > ci))
+        print_error("%s: %.6g +- %.3g, expected %.6g (and not %.6g)\n", what, x, ci, want,
+                    wrong);
+    assert_true(fabs(x - want) <= ci);
+    assert_true(fabs(x - wrong) > ci);
+}
+
+/* The Maxwellian's fraction of reduced speeds below x. */
+static double maxwell_below(double x)
+{
+    return erf(x) - 2.0 * x * exp(-x * x) / sqrt(M_PI);
+}
+
+/* An equilibrium gas (no collisions, a = 0) observed by the shear observers:
+ * E's shell ratios R_l and <V12^3>/<V12^3>_0 are 1, the symmetrised marginals
+ * gx, gy are e^{-C^2}/(2 sqrt(pi)) and F(C) = 4 C^2 e^{-C^2}/sqrt(pi), each bin
+ * against the exact bin average (E Eqs. 3.15-3.20 at local equilibrium). */
+static void test_observers_at_equilibrium(void **state)
+{
+    (void)state;
+    sim_scene s = shear_scene(0.0, 0);
+    s.particles.n = 20000;
+    s.particles.ensembles = 8;
+    s.outputs = 3;
+    s.t_end = 0.2;
+    s.shear.pairs = 20000;
+    s.steady.present = 1;
+    s.steady.from = 0.0;
+    s.steady.bins = 6;
+    s.steady.c_max = 3.0;
+    sim_ensemble_result r;
+    run(&s, &r);
+    const size_t last = r.outputs - 1;
+    for (int l = 0; l < 4; l++) {
+        char what[16];
+        snprintf(what, sizeof what, "R%d", l);
+        /* a ratio off by 10% (R3: by 100%, it counts 9 particles per system) */
+        assert_within(sim_result_mean(&r, last, SIM_OBS_R0 + l),
+                      sim_result_ci(&r, last, SIM_OBS_R0 + l), 1.0, l == 3 ? 2.0 : 1.1, what);
+    }
+    assert_within(sim_result_mean(&r, last, SIM_OBS_V12_RATIO),
+                  sim_result_ci(&r, last, SIM_OBS_V12_RATIO), 1.0, 1.05, "v12_ratio");
+    assert_close(sim_result_mean(&r, last, SIM_OBS_T_RATIO), 1.0, 0.03, 0.0);
+    const double width = 0.5;   /* c_max/bins */
+    for (size_t k = 0; k < 2 * s.steady.bins; k++) {
+        char name[32];
+        const double lo = sim_steady_marginal_centre(&s, k) - 0.5 * width, hi = lo + width;
+        const double want = (erf(hi) - erf(lo)) / (4.0 * width);   /* ∫ e^{-c^2}/(2 sqrt pi) */
+        for (int xy = 0; xy < 2; xy++) {
+            snprintf(name, sizeof name, "%s_%zu", xy ? "gy" : "gx", k);
+            const long q = sim_steady_find(&s, name);
+            assert_true(q >= 0);
+            /* a marginal not halved would be twice as large */
+            assert_within(sim_result_steady_mean(&r, (size_t)q),
+                          sim_result_steady_ci(&r, (size_t)q), want, 2.0 * want, name);
+        }
+    }
+    for (size_t k = 0; k < s.steady.bins; k++) {
+        char name[32];
+        snprintf(name, sizeof name, "F_%zu", k);
+        const long q = sim_steady_find(&s, name);
+        assert_true(q >= 0);
+        const double lo = sim_steady_bin_lower(&s, k), hi = sim_steady_bin_lower(&s, k + 1);
+        const double want = (maxwell_below(hi) - maxwell_below(lo)) / width;
+        /* F at the bin centre instead of its average is 1-5% off: told apart */
+        const double c = 0.5 * (lo + hi);
+        const double centre = 4.0 * c * c * exp(-c * c) / sqrt(M_PI);
+        if (fabs(centre - want) > 0.02 * want)
+            assert_within(sim_result_steady_mean(&r, (size_t)q),
+                          sim_result_steady_ci(&r, (size_t)q), want, centre, name);
+        else
+            assert_true(fabs(sim_result_steady_mean(&r, (size_t)q) - want)
+                        <= sim_result_steady_ci(&r, (size_t)q));
+    }
+    sim_ensemble_result_free(&r);
+}
+
+/* Elastic hard spheres at rest (a = 0): T stays at its sampled value, so E's
+ * clock is s0(t) = beta t/(sqrt(pi) tau(T)) (to the ensembles' spread of
+ * sqrt(T), 1e-5 relative), and the collisions per particle s(t) follow it (the
+ * equilibrium hard-sphere collision rate per particle, each collision counted
+ * once, is 1/(sqrt(pi) tau)).  With model = ehs and collisions.beta = 0.6
+ * (alpha = 1: no drag) both carry the 0.6. */
+static void test_collision_counter(void **state)
+{
+    (void)state;
+    const double betas[] = {1.0, 0.6};
+    for (int c = 0; c < 2; c++) {
+        sim_scene s = shear_scene(0.0, 1);
+        s.particles.n = 2000;
+        s.particles.ensembles = 8;
+        s.t_end = 2.0;
+        s.outputs = 5;
+        if (c == 1) {
+            s.collisions.model = SIM_MODEL_EHS;
+            s.collisions.beta = betas[c];
+        }
+        sim_ensemble_result r;
+        run(&s, &r);
+        for (size_t m = 0; m < r.outputs; m++) {
+            /* lambda0 = 1, m = 1: 1/tau = sqrt(2T) */
+            const double T = sim_result_mean(&r, m, SIM_OBS_T);
+            const double s0 = betas[c] * r.t[m] * sqrt(2.0 * T) / sqrt(M_PI);
+            assert_close(sim_result_mean(&r, m, SIM_OBS_S0), s0, 1e-4, 1e-15);
+            if (m > 0)   /* a counter at the other beta would be 0.6 or 1/0.6 times it */
+                assert_within(sim_result_mean(&r, m, SIM_OBS_S), sim_result_ci(&r, m, SIM_OBS_S),
+                              s0, c == 0 ? 0.6 * s0 : s0 / 0.6, "s");
+        }
+        sim_ensemble_result_free(&r);
+    }
+}
+
+/* Elastic hard spheres (IHS, alpha = 1) sheared at a tau0 = 2 from local
+ * equilibrium: for t <= 0.5 tau0 the temperature and the shear stress follow
+ * the BGK model (reference/bgk.h, nu' = 1/tau_eta), within the ensembles'
+ * intervals; the collisionless values (T = T0 (1 + (a t)^2/3), Pxy = -a t T0)
+ * are told apart at t = 0.5, so the collisions' share is resolved. */
+static void test_elastic_short_times_follow_bgk(void **state)
+{
+    (void)state;
+    const double a = 2.0;
+    sim_scene s = shear_scene(a, 1);
+    s.particles.n = 4000;
+    s.particles.ensembles = 16;
+    s.t_end = 0.5;
+    s.outputs = 6;
+    s.dt = 0.002;
+    sim_ensemble_result r;
+    run(&s, &r);
+    ref_bgk_params p = ref_bgk_default_params();
+    p.alpha = 1.0;
+    p.gamma = s.collisions.rate;
+    p.C = s.collisions.constant;
+    p.T0 = 0.5;
+    p.shear_rate = a;
+    double T[6], Pxy[6];
+    const ref_bgk_output out = {.T = T, .Pxy = Pxy};
+    char msg[200];
+    assert_int_equal(ref_bgk_solve(&p, r.t, r.outputs, NULL, &out, msg, sizeof msg), REF_OK);
+    for (size_t m = 2; m < r.outputs; m++) {
+        const double at = a * r.t[m];
+        const double pxy = sim_result_mean(&r, m, SIM_OBS_PXY);
+        const double dT = sim_result_mean(&r, m, SIM_OBS_T) - 0.5;
+        const double free_dT = 0.5 * at * at / 3.0;
+        print_message("t = %.1f: Pxy %.5f +- %.5f (BGK %.5f, free %.5f), T - T0 %.5f +- %.5f "
+                      "(BGK %.5f, free %.5f)\n", r.t[m], pxy, sim_result_ci(&r, m, SIM_OBS_PXY),
+                      Pxy[m], -at * 0.5, dT, sim_result_ci(&r, m, SIM_OBS_T), T[m] - 0.5, free_dT);
+        assert_true(fabs(pxy - Pxy[m]) <= sim_result_ci(&r, m, SIM_OBS_PXY));
+        assert_true(fabs(dT - (T[m] - 0.5)) <= sim_result_ci(&r, m, SIM_OBS_T));
+        if (m == r.outputs - 1) {   /* the collisions' share is resolved */
+            assert_true(fabs(pxy + at * 0.5) > sim_result_ci(&r, m, SIM_OBS_PXY));
+            assert_true(fabs(dT - free_dT) > sim_result_ci(&r, m, SIM_OBS_T));
+        }
+    }
+    sim_ensemble_result_free(&r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_collisionless_shear),
         cmocka_unit_test(test_ehs_elastic_is_ihs),
         cmocka_unit_test(test_ehs_drag_step),
+        cmocka_unit_test(test_observers_at_equilibrium),
+        cmocka_unit_test(test_collision_counter),
+        cmocka_unit_test(test_elastic_short_times_follow_bgk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -448,12 +448,12 @@ static void write_series(FILE *f, const run_output *o)
             (unsigned long long)res->counts.collisions,
             (unsigned long long)res->counts.violations);
     fputs("t", f);
-    for (int k = 0; k < SIM_OBS_BASE; k++)
+    for (int k = 0; k < (int)res->observables; k++)
         fprintf(f, ",%s,%s_ci", sim_observable_name(k), sim_observable_name(k));
     fputc('\n', f);
     for (size_t m = 0; m < res->outputs; m++) {
         fprintf(f, "%.10g", res->t[m]);
-        for (int k = 0; k < SIM_OBS_BASE; k++)
+        for (int k = 0; k < (int)res->observables; k++)
             fprintf(f, ",%.12g,%.6g", sim_result_mean(res, m, k), sim_result_ci(res, m, k));
         fputc('\n', f);
     }

@@ -139,7 +139,7 @@ int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *c
             return -1;
     }
     const int k = sim_observable_find(name, len);
-    if (k >= 0) {
+    if (k >= 0 && (size_t)k < res->observables) {
         vfy_result_column(res, k, mean, ci);
         return 0;
     }

@@ -22,17 +22,18 @@ int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
                      const sim_ensemble_result *res)
 {
     const size_t N = res->ensembles;
+    const int K = (int)sim_observe_row_length(scene);   /* the scene's row (observe.h) */
     fprintf(f, "# gdsmc-result %d\n# solver = %s\n# n = %zu\n# ensembles = %zu\n",
             VFY_RESULT_VERSION, solver, res->n, N);
     fprintf(f, "# cpu_seconds = %.17g\n# events = %" PRIu64 "\n# violations = %" PRIu64 "\n",
             res->cpu_seconds, res->counts.candidates, res->counts.violations);
     fputs("t", f);
-    for (int k = 0; k < SIM_OBS_BASE; k++)
+    for (int k = 0; k < K; k++)
         fprintf(f, ",%s,%s_var", sim_observable_name(k), sim_observable_name(k));
     fputc('\n', f);
     for (size_t m = 0; m < res->outputs; m++) {
         fprintf(f, "%.17g", res->t[m]);
-        for (int k = 0; k < SIM_OBS_BASE; k++)
+        for (int k = 0; k < K; k++)
             fprintf(f, ",%.17g,%.17g", sim_result_mean(res, m, k),
                     sample_variance(sim_result_var(res, m, k), N));
         fputc('\n', f);
@@ -211,7 +212,8 @@ static sim_status header_lines(reader *r, const sim_scene *scene, sim_ensemble_r
 
 /* The column header: t, then NAME and NAME_var pairs; obs[j] is the
  * observable of column 1 + 2 j. */
-static sim_status column_header(reader *r, int *obs, size_t *nobs, vfy_result_info *info)
+static sim_status column_header(reader *r, const sim_ensemble_result *res, int *obs,
+                                size_t *nobs, vfy_result_info *info)
 {
     if (!next_line(r) || blank(r->at, r->len))
         return fail(r, r->line, "no column header (expected t,NAME,NAME_var,...)");
@@ -223,9 +225,9 @@ static sim_status column_header(reader *r, int *obs, size_t *nobs, vfy_result_in
     for (size_t k = 1; k < count; k += 2) {
         field(r, k, name, sizeof name);
         int o = sim_observable_find(name, strlen(name));
-        if (o < 0) {
-            char allowed[200] = "";
-            for (int j = 0; j < SIM_OBS_BASE; j++)
+        if (o < 0 || o >= (int)res->observables) {
+            char allowed[400] = "";
+            for (int j = 0; j < (int)res->observables; j++)
                 snprintf(allowed + strlen(allowed), sizeof allowed - strlen(allowed), "%s%s",
                          j ? " " : "", sim_observable_name((sim_observable)j));
             return fail(r, r->line, "column %zu: '%s' is not an observable (allowed %s)",
@@ -342,7 +344,7 @@ static sim_status steady_section(reader *r, const sim_scene *scene, sim_ensemble
 static sim_status allocate(const sim_scene *scene, sim_ensemble_result *res)
 {
     res->outputs = scene->outputs;
-    res->observables = SIM_OBS_BASE;
+    res->observables = sim_observe_row_length(scene);
     res->ensembles = scene->particles.ensembles;
     res->n = scene->particles.n;
     res->nsteady = sim_steady_count(scene);
@@ -381,10 +383,10 @@ static sim_status parse(reader *r, const sim_scene *scene, sim_ensemble_result *
     if (allocate(scene, res) != SIM_OK)
         return fail(r, 0, "out of memory");
     sim_status status = header_lines(r, scene, res, info);
-    int obs[SIM_OBS_BASE];
+    int obs[SIM_OBS_ROW_MAX];
     size_t nobs = 0;
     if (status == SIM_OK)
-        status = column_header(r, obs, &nobs, info);
+        status = column_header(r, res, obs, &nobs, info);
     for (size_t m = 0; m < res->outputs && status == SIM_OK; m++) {
         if (!next_line(r))
             return fail(r, r->line, "the file ends after %zu rows, the scene has %zu output "

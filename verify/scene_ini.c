@@ -159,6 +159,7 @@ static const key_desc keys[] = {
     POSITIVE(S_COLLISIONS, "rate", collisions.rate),
     REAL(S_COLLISIONS, "restitution", collisions.restitution, LO_GT | HI_LE, 0.0, 1.0),
     WORDS(S_COLLISIONS, "model", collisions.model, model_words),
+    POSITIVE(S_COLLISIONS, "beta", collisions.beta),
 
     WORDS(S_HEATING, "type", heating.type, heating_words),
     FINITE(S_HEATING, "strength", heating.strength), /* sign checked in check_scene() */
@@ -175,6 +176,7 @@ static const key_desc keys[] = {
     WORDS(S_SHEAR, "boundary", shear.boundary, boundary_words),
     POSITIVE(S_SHEAR, "length", shear.length),
     COUNT(S_SHEAR, "layers", shear.layers, 1, SIZE_MAX),
+    COUNT(S_SHEAR, "pairs", shear.pairs, 0, SIZE_MAX),
 
     FINITE(S_HEAT_FLUX, "strength", heat_flux.strength),
 
