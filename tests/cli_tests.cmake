@@ -50,6 +50,13 @@ gdsmc_add_cli_test(cli_verify_as_wrong_sign 1
                    verify --suite quick --case as-steady --solver-set shear.rate=-4
                    --out ${CMAKE_CURRENT_BINARY_DIR}/as-wrong-sign)
 set_tests_properties(cli_verify_as_wrong_sign PROPERTIES LABELS verification)
+# EHS colliding at the IHS rate (beta = 1 instead of (1 + alpha)/2 = 0.85): its
+# (Pxx - Pyy)/nT is 13% below BGK's (8 ensembles, so the half-width is 8%)
+gdsmc_add_cli_test(cli_verify_as_wrong_beta 1
+                   "\nFAIL  as-steady alpha=0\\.70 ehs a_tau0=4 \\(Pxx - Pyy\\)/nT within 5% of BGK"
+                   verify --suite quick --case as-steady --set particles.ensembles=8
+                   --solver-set collisions.beta=1 --out ${CMAKE_CURRENT_BINARY_DIR}/as-wrong-beta)
+set_tests_properties(cli_verify_as_wrong_beta PROPERTIES LABELS verification)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 # at t = 0: T_exact = 1, E T_n = 1 - 1/n = 63/64, E T_raw = 1
 gdsmc_add_cli_test(cli_reference_ex3 0 "\nt,T_exact,T_finite_n,T_raw_finite_n\n0,1,0\\.984375,1\n0\\.1,1\\.12042752"
@@ -221,7 +228,7 @@ gdsmc_add_cli_exact(cli_x_run_restitution 2
                     "gdsmc run: tests/scenes/restitution-1.7.ini:6: collisions.restitution: '1.7' is out of range (allowed 0 < restitution <= 1)"
                     run ${B}/restitution-1.7.ini)
 gdsmc_add_cli_exact(cli_x_run_unknown_key 2
-                    "gdsmc run: tests/scenes/unknown-key.ini:5: collisions.speed: unknown key (allowed kernel, exponent, constant, rate, restitution, model)"
+                    "gdsmc run: tests/scenes/unknown-key.ini:5: collisions.speed: unknown key (allowed kernel, exponent, constant, rate, restitution, model, beta)"
                     run ${B}/unknown-key.ini)
 gdsmc_add_cli_exact(cli_x_run_negative_temperature 2
                     "gdsmc run: --set particles.temperature=-2: particles.temperature: '-2' is out of range (allowed temperature > 0)"

@@ -8,19 +8,23 @@
  * then each averages the reduced stresses, a* = a tau_eta(T), a2 and a3 over
  * the output times (sim/steady.h); the half-widths come from the spread of the
  * N ensembles, with Student's t.  The rows come in the order alpha, model
- * (ihs, ehs), a tau0 (4, 0.1), so that a row's partners are the rows just
- * before it: the same alpha and model at a tau0 = 4 (the steady state must not
- * depend on the initial shear rate), and the IHS row of the same alpha and a
- * tau0 (E's comparison of the two models).
+ * (ihs, ehs), a tau0 (4, 0.1), so that a row's partners come before it: the
+ * same alpha and model at a tau0 = 4 (the steady state must not depend on the
+ * initial shear rate), and the IHS row of the same alpha and a tau0 (E's
+ * comparison of the two models).
  *
- * Case: as-steady (E Figs. 14-16).  The transient (as-transient) and the
- * distribution (as-distribution) are not written yet.
+ * Cases: as-steady (E Figs. 14-16, and the shell ratios of Fig. 13) and
+ * as-transient (E Figs. 5-13 against s).  The marginals of E Figs. 17-18 are
+ * observed (steady.h) but no case reports them yet.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "driver.h"
+#include "figure.h"
 #include "metrics.h"
 #include "references.h"
 
@@ -55,8 +59,13 @@
  * temperature about 12% above the IHS one, (Pzz - Pyy)/nT about 40% smaller. */
 #define AS_E_09 ";$Pxy_paper=0.33;$N1_paper=0.24;$T_ratio_paper=147"
 #define AS_E_05 ";$ehs_T_paper=12;$ehs_N2_paper=-40"
+/* ... and the IHS steady shell ratios at alpha = 0.5, a tau0 = 4 (E §V B, Fig.
+ * 13): R0..R3 about 1.18, 0.81, 1.39, 15; 51% of the particles below v0 and 42%
+ * between v0 and 2 v0 */
+#define AS_E_05_SHELLS ";$R0_paper=1.18;$R1_paper=0.81;$R2_paper=1.39;$R3_paper=15" \
+                       ";$below_v0_paper=51;$v0_2v0_paper=42"
 static const char *const paper_rows[] = {
-    AS_ALPHA_WINDOWS("0.5", AS_HOT, AS_COLD, "", AS_E_05), AS_ALPHA("0.55"), AS_ALPHA("0.6"),
+    AS_ALPHA_WINDOWS("0.5", AS_HOT, AS_COLD, AS_E_05_SHELLS, AS_E_05), AS_ALPHA("0.55"), AS_ALPHA("0.6"),
     AS_ALPHA("0.65"), AS_ALPHA("0.7"), AS_ALPHA("0.75"), AS_ALPHA("0.8"), AS_ALPHA("0.85"),
     AS_ALPHA_WINDOWS("0.9", AS_HOT_LONG, AS_COLD_LONG, AS_E_09, ""),
     AS_ALPHA_WINDOWS("0.95", AS_HOT_LONG, AS_COLD_LONG, "", ""), NULL};
@@ -69,17 +78,33 @@ static const char *const quick_rows[] = {
 
 /* ------------------------------------------------------------- metrics */
 
-/* The row `back` rows before this one, or NULL. */
-static const vfy_row *row_before(const vfy_case_run *run, const vfy_row *row, size_t back)
+/* A row's partner (the rows come in the order alpha, model, a tau0): kind 1,
+ * for a row at a tau0 != 4, the row of the same alpha and model at a tau0 = 4
+ * (the steady state must not depend on the initial shear rate); kind 2, for an
+ * EHS row, the IHS row of the same alpha and a tau0 (E's comparison of the
+ * models).  NULL for a row that has none. */
+static const vfy_row *as_partner(const vfy_case_run *run, const vfy_row *row, int kind)
 {
-    return row->index >= back ? &run->rows[row->index - back] : NULL;
+    const vfy_values *v = &row->values;
+    const double alpha = vfy_values_get(v, "alpha"), rate = vfy_values_get(v, "a_tau0");
+    const double ehs = vfy_values_get(v, "is_ehs");
+    if ((kind == 1 && rate == 4.0) || (kind == 2 && ehs != 1.0))
+        return NULL;
+    for (size_t i = 0; i < row->index; i++) {
+        const vfy_values *w = &run->rows[i].values;
+        if (vfy_values_get(w, "alpha") == alpha
+            && vfy_values_get(w, "a_tau0") == (kind == 1 ? 4.0 : rate)
+            && vfy_values_get(w, "is_ehs") == (kind == 1 ? ehs : 0.0))
+            return &run->rows[i];
+    }
+    return NULL;
 }
 
 /* |q - q'| over the quadrature sum of their half-widths q_ci_t, with q' the
- * value of the row x rows before (NAN without one). */
+ * value of the partner of kind x (NAN without one). */
 static double as_z_partner(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    const vfy_row *other = row_before(run, row, (size_t)m->x);
+    const vfy_row *other = as_partner(run, row, (int)m->x);
     if (other == NULL)
         return NAN;
     char ci[40];
@@ -88,11 +113,11 @@ static double as_z_partner(const vfy_case_run *run, const vfy_row *row, const vf
                       vfy_values_get(&other->values, m->a), vfy_values_get(&other->values, ci));
 }
 
-/* 100 (q - q')/q' with q' the value of the row x rows before. */
+/* 100 (q - q')/q' with q' the value of the partner of kind x. */
 static double as_percent_partner(const vfy_case_run *run, const vfy_row *row,
                                  const vfy_metric *m)
 {
-    const vfy_row *other = row_before(run, row, (size_t)m->x);
+    const vfy_row *other = as_partner(run, row, (int)m->x);
     if (other == NULL)
         return NAN;
     const double b = vfy_values_get(&other->values, m->a);
@@ -110,12 +135,12 @@ static double as_judged(const vfy_case_run *run, const vfy_row *row, const vfy_m
     return m->x > 0 ? alpha >= m->x - 1e-12 : alpha <= -m->x + 1e-12;
 }
 
-/* The half-width of as_percent_partner's value (x rows before): 100 q/q' times
+/* The half-width of as_percent_partner's value (partner of kind x): 100 q/q' times
  * the quadrature sum of the relative half-widths (q_ci_t). */
 static double as_percent_ci_partner(const vfy_case_run *run, const vfy_row *row,
                                     const vfy_metric *m)
 {
-    const vfy_row *other = row_before(run, row, (size_t)m->x);
+    const vfy_row *other = as_partner(run, row, (int)m->x);
     if (other == NULL)
         return NAN;
     char ci[40];
@@ -141,6 +166,24 @@ static double as_T_ratio(const vfy_case_run *run, const vfy_row *row, const vfy_
     return vfy_values_get(&row->values, m->a) / T0;
 }
 
+/* 100 R_l (P(C_{l+1}) - P(C_l)) for shell x = l of E Eq. (3.15) (C = 0, 1, 2):
+ * the percentage of particles in it, from R_l (or its half-width). */
+static double as_shell_percent(const vfy_case_run *run, const vfy_row *row,
+                               const vfy_metric *m)
+{
+    (void)run;
+    const double P1 = erf(1.0) - 2.0 * exp(-1.0) / sqrt(M_PI);
+    const double P2 = erf(2.0) - 4.0 * exp(-4.0) / sqrt(M_PI);
+    return 100.0 * vfy_values_get(&row->values, m->a) * (m->x == 0 ? P1 : P2 - P1);
+}
+
+/* 1 + x a2 (E §V A: <V12^3>/<V12^3>_0 about 1 + 0.27 a2). */
+static double as_v12_sonine(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    return 1.0 + m->x * vfy_values_get(&row->values, m->a);
+}
+
 #define STUDENT(Q) {Q "_ci_t", vfy_metric_student_ci, Q "_ci", NULL, 0}
 static const vfy_metric metrics[] = {
     STUDENT("a_star"), STUDENT("Pxy_reduced"), STUDENT("N1"), STUDENT("N2"), STUDENT("a2"),
@@ -148,13 +191,13 @@ static const vfy_metric metrics[] = {
     {"T_ratio", as_T_ratio, "T", NULL, 0},
     {"T_ratio_ci", as_T_ratio, "T_ci", NULL, 0},
     {"eta_star", vfy_metric_per, "Pxy_reduced", "a_star", 1},
-    /* a tau0 = 0.1 against the row before (a tau0 = 4) */
+    /* a tau0 = 0.1 against a tau0 = 4 (partner kind 1) */
     {"z_a_star_rate", as_z_partner, "a_star", NULL, 1},
     {"z_Pxy_rate", as_z_partner, "Pxy_reduced", NULL, 1},
     {"z_N1_rate", as_z_partner, "N1", NULL, 1},
     {"z_N2_rate", as_z_partner, "N2", NULL, 1},
     {"z_a2_rate", as_z_partner, "a2", NULL, 1},
-    /* EHS against IHS (two rows before) */
+    /* EHS against IHS (partner kind 2) */
     {"ehs_a_star_percent", as_percent_partner, "a_star", NULL, 2},
     {"ehs_Pxy_percent", as_percent_partner, "Pxy_reduced", NULL, 2},
     {"ehs_N1_percent", as_percent_partner, "N1", NULL, 2},
@@ -168,6 +211,15 @@ static const vfy_metric metrics[] = {
     {"ehs_T_ci_percent", as_percent_ci_partner, "T", NULL, 2},
     {"ehs_T_paper_judged", as_has, "ehs_T_paper", NULL, 0},
     {"models_differ", as_judged, NULL, NULL, -0.85},
+    /* E Eq. (3.15): the fractions of particles below v0 and in [v0, 2 v0], in % */
+    {"below_v0", as_shell_percent, "R0", NULL, 0},
+    {"below_v0_ci", as_shell_percent, "R0_ci", NULL, 0},
+    {"v0_2v0", as_shell_percent, "R1", NULL, 1},
+    {"v0_2v0_ci", as_shell_percent, "R1_ci", NULL, 1},
+    STUDENT("R0"), STUDENT("R1"), STUDENT("R2"), STUDENT("R3"), STUDENT("below_v0"),
+    STUDENT("v0_2v0"), STUDENT("v12_ratio"),
+    /* E §V A: <V12^3>/<V12^3>_0 about 1 + 0.27 a2 */
+    {"v12_sonine", as_v12_sonine, "a2", NULL, 0.27},
     {NULL, NULL, NULL, NULL, 0}};
 
 /* ------------------------------------------------------------- checks */
@@ -176,6 +228,14 @@ static const vfy_metric metrics[] = {
 #define SLOW {vfy_guard_only_at_most, "a_tau0", NULL, 0.1 + 1e-12, NULL}
 #define MODELS_AGREE {vfy_guard_only_at_least, "models_agree", NULL, 1.0, NULL}
 #define MODELS_DIFFER {vfy_guard_only_at_least, "models_differ", NULL, 1.0, NULL}
+#define AS_PRINTED(Q, DIGITS)                                                        \
+    {.name = AS_NAME Q " vs paper E ({" Q "_paper:%g})", .rule = vfy_rule_printed,       \
+     .value = Q, .expected = Q "_paper", .tol = DIGITS, .plus = Q "_ci_t",                \
+     .guard = {vfy_guard_only_at_least, Q "_paper", NULL, 0.0, NULL}}
+#define AS_EHS_BGK(WHAT, Q)                                                          \
+    {.name = AS_NAME WHAT " within 5% of BGK ({" Q "_bgk:%.4f})", .rule = vfy_rule_absolute, \
+     .value = Q, .expected = Q "_bgk", .rtol = 0.05, .plus = Q "_ci_t",                    \
+     .guard = {vfy_guard_only_at_least, "is_ehs", NULL, 1.0, NULL}}
 static const vfy_check_spec checks[] = {
     {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
     /* E §V: the steady state does not depend on the initial shear rate */
@@ -202,6 +262,12 @@ static const vfy_check_spec checks[] = {
     {.name = AS_NAME "-Pxy/nT within 10% of BGK ({Pxy_reduced_bgk:%.4f})",
      .rule = vfy_rule_absolute, .value = "Pxy_reduced", .expected = "Pxy_reduced_bgk",
      .rtol = 0.10},
+    /* E §V C: the BGK model "does a very good job ..., especially in the case of
+     * the EHS system": EHS within 5% of BGK in a*, -Pxy/nT and (Pxx - Pyy)/nT,
+     * plus the half-width (paper sizes: 2.7% at most, in (Pxx - Pyy)/nT at
+     * alpha = 0.5); EHS colliding at the IHS rate (beta = 1) fails the last by 13% */
+    AS_EHS_BGK("a*", "a_star"), AS_EHS_BGK("-Pxy/nT", "Pxy_reduced"),
+    AS_EHS_BGK("(Pxx - Pyy)/nT", "N1"),
     /* paper E's printed numbers, to the reading precision of their last digit */
     {.name = AS_NAME "-Pxy/nT vs paper E ({Pxy_paper:%.2f})", .rule = vfy_rule_printed,
      .value = "Pxy_reduced", .expected = "Pxy_paper", .tol = 2, .plus = "Pxy_reduced_ci_t",
@@ -224,6 +290,16 @@ static const vfy_check_spec checks[] = {
      .guard = {vfy_guard_reported_at_most, "ehs_T_paper_judged", NULL, 0.0,
                "reported, not judged: E's 12% is not what two independent simulations find "
                "({ehs_T_percent:%+.1f}% ± {ehs_T_ci_percent:%.1f} here; see the notes)"}},
+    /* E §V B: the IHS steady shell ratios at alpha = 0.5 (Fig. 13; printed to two
+     * decimals, R3 to the unit) and the fractions of particles (to the percent),
+     * each plus its half-width */
+    AS_PRINTED("R0", 2), AS_PRINTED("R1", 2), AS_PRINTED("R2", 2), AS_PRINTED("R3", 0),
+    AS_PRINTED("below_v0", 0), AS_PRINTED("v0_2v0", 0),
+    /* E §V A: <V12^3>/<V12^3>_0 about 1 + 0.27 a2, to 0.005 (the 0.27 read to
+     * +-0.01 moves it by 0.004 at a2 = 0.37), plus the half-width */
+    {.name = AS_NAME "<V12^3>/<V12^3>_0 = 1 + 0.27 a2 ({v12_sonine:%.4f})",
+     .rule = vfy_rule_absolute, .value = "v12_ratio", .expected = "v12_sonine", .tol = 0.005,
+     .plus = "v12_ratio_ci_t"},
     /* ... while the normal stress differences differ below 0.85 */
     {.name = AS_NAME "(Pxx - Pyy)/nT differs from IHS beyond the half-widths",
      .rule = vfy_rule_range, .value = "z_N1_model", .lo = 1.0, .hi = INFINITY,
@@ -233,7 +309,8 @@ static const vfy_check_spec checks[] = {
 static const char columns[] =
     "alpha:%.2f model:%s a_tau0:%g a_star:%.5f a_star_ci:%.5f Pxy_reduced:%.5f "
     "Pxy_reduced_ci:%.5f N1:%.5f N1_ci:%.5f N2:%.5f N2_ci:%.5f a2:%.5f a2_ci:%.5f a3:%.5f "
-    "a3_ci:%.5f T_ratio:%.5g eta_star:%.5f v12_ratio:%.5f a_star_bgk:%.5f "
+    "a3_ci:%.5f T_ratio:%.5g eta_star:%.5f v12_ratio:%.5f v12_sonine:%.5f R0:%.4f R1:%.4f "
+    "R2:%.4f R3:%.3f below_v0:%.2f v0_2v0:%.2f a_star_bgk:%.5f "
     "Pxy_reduced_bgk:%.5f N1_bgk:%.5f T_ratio_bgk:%.5g z_a_star_rate:%.2f z_Pxy_rate:%.2f "
     "z_N1_rate:%.2f ehs_a_star_percent:%+.2f ehs_Pxy_percent:%+.2f ehs_N1_percent:%+.2f "
     "ehs_N2_percent:%+.2f ehs_T_percent:%+.2f violations:%.0f " VFY_COST_COLUMNS;
@@ -279,3 +356,519 @@ const vfy_case_desc vfy_as_steady = {
         "above IHS is reported, not judged: the issue's independent simulation found 9%, as "
         "does this one, ehs_T_percent). Total wall time "
         "{wall_total:%.1f} s."};
+
+/* ================================================================ as-transient */
+
+/* E Figs. 5-8, 10-12: the transient from local equilibrium at alpha = 0.5,
+ * 0.7, 0.9, IHS and EHS, a tau0 = 4 (to s > 50) and 0.1, beside BGK; the
+ * rows in the order alpha, model, a tau0 (partners as in as-steady).  The
+ * windows of as-steady, with outputs every 0.05 tau0 (a tau0 = 4) or 0.5 tau0
+ * (0.1, 1 tau0 at alpha = 0.9). */
+#define ASX_HOT "scene.t_end=16;scene.outputs=321;steady.from=12"
+#define ASX_COLD "scene.t_end=300;scene.outputs=601;steady.from=200"
+#define ASX_COLD_LONG "scene.t_end=700;scene.outputs=701;steady.from=400"
+/* E §V B: the transient lasts s about 40 at alpha = 0.9 and 20 at alpha = 0.5 */
+#define ASX_ALPHA(A, COLD, SETS)                                                         \
+    AS_ROW(A, "ihs", "0", "4", ASX_HOT SETS), AS_ROW(A, "ihs", "0", "0.1", COLD),         \
+        AS_ROW(A, "ehs", "1", "4", ASX_HOT), AS_ROW(A, "ehs", "1", "0.1", COLD)
+static const char *const transient_paper_rows[] = {
+    ASX_ALPHA("0.5", ASX_COLD, ";$s_relax_paper=20"), ASX_ALPHA("0.7", ASX_COLD, ""),
+    ASX_ALPHA("0.9", ASX_COLD_LONG, ";$s_relax_paper=40"), NULL};
+static const char *const transient_quick_rows[] = {
+    AS_ROW("0.5", "ihs", "0", "4", AS_QUICK_HOT), AS_ROW("0.5", "ihs", "0", "0.1", AS_QUICK_COLD),
+    AS_ROW("0.5", "ehs", "1", "4", AS_QUICK_HOT), AS_ROW("0.5", "ehs", "1", "0.1", AS_QUICK_COLD),
+    NULL};
+
+/* Series of a row into a fresh array of its M outputs (NULL when absent or
+ * out of memory); ci too when ci != NULL. */
+static double *asx_series(const vfy_row *row, const char *name, double **ci)
+{
+    const size_t M = row->res.outputs;
+    double *mean = malloc(2 * M * sizeof *mean);
+    if (mean == NULL || vfy_row_series(row, name, mean, mean + M) != 0) {
+        free(mean);
+        return NULL;
+    }
+    if (ci != NULL)
+        *ci = mean + M;
+    return mean;
+}
+
+/* The first output index with t >= steady.from. */
+static size_t asx_steady_first(const vfy_row *row)
+{
+    size_t m = 0;
+    while (m + 1 < row->res.outputs && row->res.t[m] < row->solver.steady.from)
+        m++;
+    return m;
+}
+
+/* E Fig. 6: ds/ds0 over the steady window (the collision rate over its local
+ * equilibrium value, <|V12|>/<|V12|>_0); x = 1: its half-width from s's at
+ * the window's ends (an upper bound: they are correlated); x = 2: the ratio
+ * plus that half-width, at paper sizes only (at quick sizes it is +-0.035,
+ * wider than the ratio's distance from 1). */
+static double asx_collision_ratio(const vfy_case_run *run, const vfy_row *row,
+                                  const vfy_metric *m)
+{
+    double *sci = NULL, *s = asx_series(row, "s", &sci), *s0 = asx_series(row, "s0", NULL);
+    double r = NAN;
+    if (s != NULL && s0 != NULL) {
+        const size_t a = asx_steady_first(row), b = row->res.outputs - 1;
+        const double ds0 = s0[b] - s0[a];
+        const double ratio = (s[b] - s[a]) / ds0, ci = hypot(sci[a], sci[b]) / ds0;
+        r = m->x == 0 ? ratio : m->x == 1 ? ci : run->o->size == VFY_QUICK ? NAN : ratio + ci;
+    }
+    free(s);
+    free(s0);
+    return r;
+}
+
+/* The duration of the transient in collisions per particle: s at the last
+ * output where a* = a tau_eta(T) is more than x percent from its steady value
+ * (the row's steady average). */
+static double asx_s_relax(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *s = asx_series(row, "s", NULL), *a = asx_series(row, "a_star", NULL);
+    const double as = vfy_values_get(&row->values, "a_star");
+    double r = NAN;
+    if (s != NULL && a != NULL && isfinite(as)) {
+        r = 0.0;
+        for (size_t k = 0; k < row->res.outputs; k++)
+            if (fabs(a[k] / as - 1.0) > 0.01 * m->x)
+                r = s[k];
+    }
+    free(s);
+    free(a);
+    return r;
+}
+
+/* eta*(a*) of a curve at a*, by linear interpolation over its points with
+ * s >= 2 (E Fig. 10's window, where the memory of the start is lost); NAN
+ * outside their range. */
+static double asx_eta_at(const double *s, const double *a, const double *eta, size_t M,
+                         double at)
+{
+    for (size_t k = 1; k < M; k++) {
+        if (s[k - 1] < 2.0)
+            continue;
+        const double lo = fmin(a[k - 1], a[k]), hi = fmax(a[k - 1], a[k]);
+        if (at >= lo && at <= hi && hi > lo)
+            return eta[k - 1] + (eta[k] - eta[k - 1]) * (at - a[k - 1]) / (a[k] - a[k - 1]);
+    }
+    return NAN;
+}
+
+/* The BGK model's a*(t) and eta*(t) of a row from its reference series:
+ * a* = a tau_eta(T_bgk) (the row's own a* scaled by sqrt(T/T_bgk)), eta* =
+ * (-Pxy_bgk/T_bgk)/a*.  Fills a and eta (M each); 0, or -1 without them. */
+static int asx_bgk_eta(const vfy_row *row, double *a, double *eta)
+{
+    const size_t M = row->res.outputs;
+    double *T = asx_series(row, "T_bgk", NULL), *P = asx_series(row, "Pxy_bgk", NULL);
+    double *Td = asx_series(row, "T", NULL), *ad = asx_series(row, "a_star", NULL);
+    const int ok = T && P && Td && ad;
+    for (size_t k = 0; ok && k < M; k++) {
+        a[k] = ad[k] * sqrt(Td[k] / T[k]);
+        eta[k] = -P[k] / T[k] / a[k];
+    }
+    free(T), free(P), free(Td), free(ad);
+    return ok ? 0 : -1;
+}
+
+/* E Fig. 10 (alpha = 0.5): eta*(a*) of IHS, EHS and BGK coincide for 0.2 < a*
+ * < 1.6.  Over this row's outputs with s in [2, 50] and a* in (0.2, 1.6), the
+ * relative difference from the other curve at the same a*, averaged in the a*
+ * bins (0.2, 0.4), (0.4, 0.8), (0.8, 1.6); the largest |average| in percent:
+ * x = 2, an EHS row against its IHS partner; x = 3, an IHS row against the
+ * BGK model.  NAN for the other rows, and at quick sizes. */
+static double asx_eta_collapse(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const int bgk = m->x == 3;
+    if (vfy_values_get(&row->values, "is_ehs") != (bgk ? 0.0 : 1.0) || run->o->size == VFY_QUICK)
+        return NAN;   /* quick sizes: a bin's average is +-5%, as wide as the bound */
+    const vfy_row *other = bgk ? row : as_partner(run, row, 2);
+    if (other == NULL)
+        return NAN;
+    const size_t M = row->res.outputs, Mo = other->res.outputs;
+    double *s = asx_series(row, "s", NULL), *a = asx_series(row, "a_star", NULL);
+    double *eta = asx_series(row, "eta_star", NULL), *so = asx_series(other, "s", NULL);
+    double *ao = malloc(2 * Mo * sizeof *ao), *etao = ao ? ao + Mo : NULL;
+    double worst = NAN;
+    int ok = s && a && eta && so && ao;
+    if (ok && bgk)
+        ok = asx_bgk_eta(row, ao, etao) == 0;
+    else if (ok) {
+        double *x = asx_series(other, "a_star", NULL), *y = asx_series(other, "eta_star", NULL);
+        ok = x && y;
+        if (ok) {
+            memcpy(ao, x, Mo * sizeof *ao);
+            memcpy(etao, y, Mo * sizeof *ao);
+        }
+        free(x), free(y);
+    }
+    /* the mean of eta* over eta*_o, less 1, in each a* bin (0.2, 0.4, 0.8, 1.6): the noise of
+     * single outputs averages out (at quick sizes one output's eta* is +-10%) */
+    static const double edges[] = {0.2, 0.4, 0.8, 1.6};
+    double sum[3] = {0, 0, 0};
+    size_t count[3] = {0, 0, 0};
+    for (size_t k = 0; ok && k < M; k++) {
+        if (s[k] < 2.0 || s[k] > 50.0 || a[k] <= 0.2 || a[k] >= 1.6)
+            continue;
+        const double e = asx_eta_at(bgk ? s : so, ao, etao, Mo, a[k]);
+        const size_t b = a[k] < edges[1] ? 0 : a[k] < edges[2] ? 1 : 2;
+        if (isfinite(e)) {
+            sum[b] += eta[k] / e - 1.0;
+            count[b]++;
+        }
+    }
+    for (int b = 0; b < 3; b++)
+        if (count[b] >= 3) {
+            const double d = 100.0 * fabs(sum[b] / (double)count[b]);
+            worst = isnan(worst) ? d : fmax(worst, d);
+        }
+    free(s), free(a), free(eta), free(so), free(ao);
+    return worst;
+}
+
+/* The largest |T/T_bgk - 1| over the row's outputs, in percent (E Figs. 7-8:
+ * the BGK temperature beside the simulations'). */
+static double asx_bgk_T_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run, (void)m;
+    double *T = asx_series(row, "T", NULL), *Tb = asx_series(row, "T_bgk", NULL);
+    double worst = NAN;
+    for (size_t k = 0; T && Tb && k < row->res.outputs; k++)
+        worst = k ? fmax(worst, 100.0 * fabs(T[k] / Tb[k] - 1.0)) : 100.0 * fabs(T[k] / Tb[k] - 1.0);
+    free(T), free(Tb);
+    return worst;
+}
+
+/* E Fig. 5: s'/beta of an EHS row against its IHS partner's s at the last
+ * output, 100 (s'/(beta s) - 1). */
+static double asx_s_models(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)m;
+    const vfy_row *ihs = as_partner(run, row, 2);
+    if (ihs == NULL)
+        return NAN;
+    double *se = asx_series(row, "s", NULL), *si = asx_series(ihs, "s", NULL);
+    double r = NAN;
+    if (se && si && row->res.outputs == ihs->res.outputs) {
+        const size_t b = row->res.outputs - 1;
+        r = 100.0 * (se[b] / sim_scene_collision_rate_factor(&row->solver) / si[b] - 1.0);
+    }
+    free(se), free(si);
+    return r;
+}
+
+static const vfy_metric transient_metrics[] = {
+    {"T_ratio", as_T_ratio, "T", NULL, 0},
+    {"collision_ratio", asx_collision_ratio, NULL, NULL, 0},
+    {"collision_ratio_ci_t", asx_collision_ratio, NULL, NULL, 1},
+    {"collision_ratio_upper", asx_collision_ratio, NULL, NULL, 2},
+    {"z_collision_rate", as_z_partner, "collision_ratio", NULL, 1},
+    {"s_relax", asx_s_relax, NULL, NULL, 1.0},
+    {"eta_ehs_percent", asx_eta_collapse, NULL, NULL, 2},
+    {"eta_bgk_percent", asx_eta_collapse, NULL, NULL, 3},
+    {"T_bgk_percent", asx_bgk_T_dev, NULL, NULL, 0},
+    {"s_ehs_percent", asx_s_models, NULL, NULL, 0},
+    {"ehs_09", as_judged, NULL, NULL, 0.9},
+    {NULL, NULL, NULL, NULL, 0}};
+
+static const vfy_check_spec transient_checks[] = {
+    {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    /* E Fig. 6: fewer collisions than in local equilibrium (<|V12|> < <|V12|>_0) */
+    {.name = AS_NAME "ds/ds0 = {collision_ratio:%.4f} below 1 in the steady state",
+     .rule = vfy_rule_range, .value = "collision_ratio_upper", .lo = 0.0, .hi = 1.0,
+     .guard = {vfy_guard_only_at_least, "collision_ratio_upper", NULL, 0.0, NULL}},
+    /* ... and its steady value does not depend on the shear rate */
+    {.name = AS_NAME "ds/ds0 as at a tau0 = 4", .rule = vfy_rule_range,
+     .value = "z_collision_rate", .lo = 0.0, .hi = 1.0, .guard = SLOW},
+    /* E §V B: the transient lasts s about 20 (alpha = 0.5) and 40 (0.9) */
+    {.name = AS_NAME "transient s = {s_relax:%.1f} (a* within 1% from then on) vs paper E "
+                     "({s_relax_paper:%g}, to 50%)",
+     .rule = vfy_rule_relative, .value = "s_relax", .expected = "s_relax_paper", .tol = 0.5,
+     .guard = {vfy_guard_only_at_least, "s_relax_paper", NULL, 0.0, NULL}},
+    /* E Fig. 10: eta*(a*) of EHS and BGK as IHS's for 0.2 < a* < 1.6 (alpha = 0.5) */
+    {.name = AS_NAME "eta*(a*) within 5% of IHS's (0.2 < a* < 1.6)",
+     .rule = vfy_rule_range, .value = "eta_ehs_percent", .lo = 0.0, .hi = 5.0,
+     .guard = {vfy_guard_only_at_least, "eta_ehs_percent", NULL, 0.0, NULL}},
+    {.name = AS_NAME "eta*(a*) within 5% of BGK's (0.2 < a* < 1.6)",
+     .rule = vfy_rule_range, .value = "eta_bgk_percent", .lo = 0.0, .hi = 5.0,
+     .guard = {vfy_guard_only_at_least, "eta_bgk_percent", NULL, 0.0, NULL}},
+    /* E Figs. 5, 7: at alpha = 0.9 IHS, EHS and BGK alike in T(t) and s(t) */
+    {.name = AS_NAME "T(t) within 3% of BGK's at every output", .rule = vfy_rule_range,
+     .value = "T_bgk_percent", .lo = 0.0, .hi = 3.0, .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.9 - 1e-9, NULL}},
+    {.name = AS_NAME "s'/beta {s_ehs_percent:%+.2f}% from IHS's s at the end (to 2%)",
+     .rule = vfy_rule_range, .value = "s_ehs_percent", .lo = -2.0, .hi = 2.0,
+     .guard = {vfy_guard_only_at_least, "ehs_09", NULL, 1.0, NULL}},
+    {.name = NULL}};
+
+static const char transient_columns[] =
+    "alpha:%.2f model:%s a_tau0:%g T_ratio:%.5g a_star:%.5f Pxy_reduced:%.5f N1:%.5f "
+    "collision_ratio:%.5f collision_ratio_ci=collision_ratio_ci_t:%.5f "
+    "z_collision_rate:%.2f s_relax:%.2f eta_ehs_percent:%.2f eta_bgk_percent:%.2f "
+    "T_bgk_percent:%.2f s_ehs_percent:%+.2f violations:%.0f " VFY_COST_COLUMNS;
+
+/* The figures' curves: arrays owned here, freed together. */
+typedef struct asx_plot {
+    vfy_xy_curve curves[48];
+    char labels[48][64];
+    double *own[48 * 5];
+    size_t ncurves, nown;
+} asx_plot;
+
+static double *asx_own(asx_plot *pl, double *a)
+{
+    if (a != NULL && pl->nown == sizeof pl->own / sizeof pl->own[0]) {
+        free(a);
+        return NULL;
+    }
+    if (a != NULL)
+        pl->own[pl->nown++] = a;
+    return a;
+}
+
+/* A new curve of `count` points labelled from the row, or NULL when full. */
+static vfy_xy_curve *asx_curve(asx_plot *pl, const vfy_row *row, const char *what,
+                               size_t count, int reference)
+{
+    if (pl->ncurves == sizeof pl->curves / sizeof pl->curves[0])
+        return NULL;
+    vfy_xy_curve *c = &pl->curves[pl->ncurves];
+    memset(c, 0, sizeof *c);
+    snprintf(pl->labels[pl->ncurves], sizeof pl->labels[0], "%s%s alpha=%.1f a_tau0=%g",
+             what, vfy_row_text(row, "model") ? vfy_row_text(row, "model") : "",
+             vfy_values_get(&row->values, "alpha"), vfy_values_get(&row->values, "a_tau0"));
+    c->label = pl->labels[pl->ncurves++];
+    c->count = count;
+    c->reference = reference;
+    return c;
+}
+
+static void asx_plot_free(asx_plot *pl)
+{
+    for (size_t i = 0; i < pl->nown; i++)
+        free(pl->own[i]);
+    memset(pl, 0, sizeof *pl);
+}
+
+/* A DSMC curve of the row: x series scaled by 1/x_scale, the panels' series
+ * times their signs (the series' half-widths beside them). */
+static void asx_dsmc(asx_plot *pl, const vfy_row *row, const char *x, double x_scale,
+                     const char *const *y, const double *sign, size_t npanels)
+{
+    const size_t M = row->res.outputs;
+    double *xs = asx_own(pl, asx_series(row, x, NULL));
+    vfy_xy_curve *c = xs ? asx_curve(pl, row, "", M, 0) : NULL;
+    if (c == NULL)
+        return;
+    for (size_t k = 0; k < M; k++)
+        xs[k] /= x_scale;
+    c->x = xs;
+    for (size_t p = 0; p < npanels; p++) {
+        double *ci = NULL, *ys = y[p] ? asx_own(pl, asx_series(row, y[p], &ci)) : NULL;
+        for (size_t k = 0; ys && k < M; k++) {
+            ys[k] *= sign[p];
+            ci[k] = fabs(ci[k]);
+        }
+        c->y[p] = ys;
+        c->ci[p] = ci;
+    }
+}
+
+/* The BGK curve of the row (reference/bgk.h, the row's T_bgk ... s0_bgk):
+ * against s0 (x_s0) or t, the panels kind[p]: 'T' T/T0, 'P' -Pxy/p, 'N'
+ * (Pxx - Pyy)/p, 'S' s0/beta. */
+static void asx_bgk(asx_plot *pl, const vfy_row *row, int x_s0, const char *kind,
+                    size_t npanels)
+{
+    const size_t M = row->res.outputs;
+    double *T = asx_own(pl, asx_series(row, "T_bgk", NULL));
+    double *Pxx = asx_own(pl, asx_series(row, "Pxx_bgk", NULL));
+    double *Pyy = asx_own(pl, asx_series(row, "Pyy_bgk", NULL));
+    double *Pxy = asx_own(pl, asx_series(row, "Pxy_bgk", NULL));
+    double *s0 = asx_own(pl, asx_series(row, "s0_bgk", NULL));
+    double *out = asx_own(pl, malloc((1 + npanels) * M * sizeof *out));
+    vfy_xy_curve *c = T && Pxx && Pyy && Pxy && s0 && out ? asx_curve(pl, row, "BGK ", M, 1)
+                                                          : NULL;
+    if (c == NULL)
+        return;
+    const double T0 = row->solver.particles.maxwellian.temperature;
+    const double beta = sim_scene_collision_rate_factor(&row->solver);
+    for (size_t k = 0; k < M; k++) {
+        out[k] = x_s0 ? s0[k] / beta : row->res.t[k];
+        for (size_t p = 0; p < npanels; p++)
+            out[(1 + p) * M + k] = kind[p] == 'T'   ? T[k] / T0
+                                   : kind[p] == 'P' ? -Pxy[k] / T[k]
+                                   : kind[p] == 'N' ? (Pxx[k] - Pyy[k]) / T[k]
+                                                    : s0[k] / beta;
+    }
+    c->x = out;
+    for (size_t p = 0; p < npanels; p++)
+        c->y[p] = out + (1 + p) * M;
+}
+
+/* After the rows: E's figures against s (and t, a*), one curve per row, BGK
+ * beside the IHS rows (its T and stresses are the same for EHS; only its
+ * clock differs, and E plots s'/beta). */
+static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg,
+                                     size_t msglen)
+{
+    (void)r;
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
+    int rc = 0;
+    /* E Figs. 5-6: s/beta and s/s0 against t */
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        const double beta = sim_scene_collision_rate_factor(&row->solver);
+        const size_t M = row->res.outputs;
+        double *sv = asx_own(&pl, asx_series(row, "s", NULL));
+        double *s0 = asx_own(&pl, asx_series(row, "s0", NULL));
+        double *out = asx_own(&pl, malloc(2 * M * sizeof *out));
+        vfy_xy_curve *c = sv && s0 && out ? asx_curve(&pl, row, "", M, 0) : NULL;
+        if (c == NULL)
+            continue;
+        for (size_t k = 0; k < M; k++) {
+            out[k] = sv[k] / beta;
+            out[M + k] = k ? sv[k] / s0[k] : NAN;
+        }
+        c->x = row->res.t;
+        c->y[0] = out;
+        c->y[1] = out + M;
+        if (vfy_values_get(&row->values, "is_ehs") == 0.0)
+            asx_bgk(&pl, row, 0, "S", 1);
+    }
+    vfy_xy_figure f = {.name = "", .title = "paper E Figs. 5-6: collisions per particle s "
+                       "(EHS: s'/beta) and s/s0 against t", .xlabel = "t/tau0",
+                       .comment = run->comment, .npanels = 2,
+                       .ylabel = {"s, s'/beta", "s/s0"}, .ncurves = pl.ncurves,
+                       .curves = pl.curves};
+    char name[96];
+    snprintf(name, sizeof name, "%s-collisions", run->c->name);
+    f.name = name;
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    /* E Figs. 7-8: T/T0, -Pxy/nT, (Pxx - Pyy)/nT against s */
+    static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
+    static const double plus[] = {1.0, 1.0, 1.0, 1.0};
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), stress, plus, 3);
+        if (vfy_values_get(&row->values, "is_ehs") == 0.0)
+            asx_bgk(&pl, row, 1, "TPN", 3);
+    }
+    snprintf(name, sizeof name, "%s-stress", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Figs. 7-8: T/T0 and the reduced "
+                        "stresses against s (EHS: s'/beta), BGK against s0", .xlabel = "s",
+                        .comment = run->comment, .logx = 1, .npanels = 3,
+                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"},
+                        .ncurves = pl.ncurves, .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    /* E Fig. 10: eta* against a* at alpha = 0.5, s in [2, 50] */
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        if (fabs(vfy_values_get(&row->values, "alpha") - 0.5) > 1e-9)
+            continue;
+        const size_t M = row->res.outputs;
+        double *sv = asx_own(&pl, asx_series(row, "s", NULL));
+        double *a = asx_own(&pl, asx_series(row, "a_star", NULL));
+        double *ci = NULL, *eta = asx_own(&pl, asx_series(row, "eta_star", &ci));
+        vfy_xy_curve *c = sv && a && eta ? asx_curve(&pl, row, "", M, 0) : NULL;
+        if (c == NULL)
+            continue;
+        for (size_t k = 0; k < M; k++)
+            if (sv[k] < 2.0 || sv[k] > 50.0)
+                a[k] = NAN;
+        c->x = a;
+        c->y[0] = eta;
+        c->ci[0] = ci;
+        if (vfy_values_get(&row->values, "is_ehs") == 0.0) {
+            double *ab = asx_own(&pl, malloc(2 * M * sizeof *ab));
+            vfy_xy_curve *b = ab ? asx_curve(&pl, row, "BGK ", M, 1) : NULL;
+            if (b != NULL && asx_bgk_eta(row, ab, ab + M) == 0) {
+                b->x = ab;
+                b->y[0] = ab + M;
+            }
+        }
+    }
+    snprintf(name, sizeof name, "%s-viscosity", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 10: eta* against a* at alpha = "
+                        "0.5 (2 <= s <= 50)", .xlabel = "a*", .comment = run->comment,
+                        .npanels = 1, .ylabel = {"eta*"}, .ncurves = pl.ncurves,
+                        .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    /* E Figs. 11-13: <V12^3>/<V12^3>_0, a2, -a3 and R0..R3 against s */
+    static const char *const cumulants[] = {"v12_ratio", "a2", "a3"};
+    static const double signs[] = {1.0, 1.0, -1.0};
+    for (size_t i = 0; i < run->nrows; i++)
+        asx_dsmc(&pl, &run->rows[i], "s",
+                 sim_scene_collision_rate_factor(&run->rows[i].solver), cumulants, signs, 3);
+    snprintf(name, sizeof name, "%s-cumulants", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Figs. 11-12: <V12^3>/<V12^3>_0, a2 "
+                        "and -a3 against s (EHS: s'/beta)", .xlabel = "s",
+                        .comment = run->comment, .logx = 1, .npanels = 3,
+                        .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}, .ncurves = pl.ncurves,
+                        .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    static const char *const shells[] = {"R0", "R1", "R2", "R3"};
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        if (vfy_values_get(&row->values, "a_tau0") == 4.0)
+            asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), shells,
+                     plus, 4);
+    }
+    snprintf(name, sizeof name, "%s-shells", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 13: the shell ratios R0..R3 "
+                        "against s at a tau0 = 4 (EHS: s'/beta)", .xlabel = "s",
+                        .comment = run->comment, .logx = 1, .npanels = 4,
+                        .ylabel = {"R0", "R1", "R2", "R3"}, .ncurves = pl.ncurves,
+                        .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+    if (rc != 0) {
+        snprintf(msg, msglen, "%s: cannot write the figures: %s", run->c->name, strerror(errno));
+        return SIM_EIO;
+    }
+    return SIM_OK;
+}
+
+static const char *const transient_needs[] = {"T_bgk", "Pxx_bgk", "Pyy_bgk", "Pzz_bgk",
+                                              "Pxy_bgk", "s0_bgk", NULL};
+
+const vfy_case_desc vfy_as_transient = {
+    .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
+    .paper_rows = {.rows = transient_paper_rows},
+    .quick_rows = {.rows = transient_quick_rows, .sets = AS_QUICK_SETS},
+    .needs = transient_needs, .needs_why = "the BGK model beside the simulations",
+    .metrics = transient_metrics, .checks = transient_checks, .columns = transient_columns,
+    .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_ratio", .panel_per_row = 0,
+                 .title = "{case}: T/T0 against t, every row"}},
+    .after_rows = as_transient_after,
+    .title = "{case}: paper E Figs. 5-13, the transient of uniform shear flow from local "
+             "equilibrium, IHS and EHS beside BGK ({size} sizes)",
+    .notes =
+        "{comment}.\n\nEach row is one transient of homogeneous uniform shear flow from local "
+        "equilibrium (time-step scheme, the step following the mean free time) to its steady "
+        "state; the steady averages (t >= steady.from) as in as-steady. s = accepted "
+        "collisions per particle (s' for EHS), s0 = ∫ beta dt/(sqrt(pi) tau(t)) from the "
+        "simulated T (E Eq. 3.13). collision_ratio = ds/ds0 over the steady window "
+        "(<|V12|>/<|V12|>_0; _ci from s's); z_collision_rate: against the row at a tau0 = 4; "
+        "s_relax: s at the last output where a* is more than 1% from its steady value (the "
+        "duration of the transient; E: s about 20 at alpha = 0.5, 40 at 0.9); "
+        "eta_ehs_percent: the largest |eta*/eta*_IHS - 1| at the same a* over 0.2 < a* < 1.6 "
+        "and 2 <= s <= 50 (E Fig. 10), eta_bgk_percent the same for IHS against BGK; "
+        "T_bgk_percent: the largest |T/T_bgk - 1| over the run; s_ehs_percent: s'/beta of EHS "
+        "against IHS's s at the end. Figures: {case}-collisions (E Figs. 5-6), -stress (Figs. "
+        "7-8), -viscosity (Fig. 10), -cumulants (Figs. 11-12), -shells (Fig. 13). Total wall "
+        "time {wall_total:%.1f} s."};

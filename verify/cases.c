@@ -23,6 +23,7 @@ extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gauss
 extern const vfy_case_desc vfy_msg_kappa, vfy_msg_sonine, vfy_msg_distribution;
 /* case_as.c (paper E) */
 extern const vfy_case_desc vfy_as_steady;
+extern const vfy_case_desc vfy_as_transient;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
@@ -71,6 +72,9 @@ static const vfy_case cases[] = {
      " the heat flux from c_x^2 <= 6", 1, &vfy_msg_distribution},
     {"as-steady", "as", "paper E Figs. 14-16: steady uniform shear flow, IHS and EHS at"
      " a tau0 = 4 and 0.1, beside BGK", 1, &vfy_as_steady},
+    {"as-transient", "as", "paper E Figs. 5-13: the transient against s, IHS and EHS at"
+     " a tau0 = 4 and 0.1, beside BGK; eta*(a*) collapsing at alpha = 0.5", 1,
+     &vfy_as_transient},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"

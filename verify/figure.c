@@ -1,5 +1,6 @@
 #include "figure.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/wait.h>
@@ -131,6 +132,61 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
                 f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j, 5 + 2 * j,
                 gp_text(f->series[j]));
     fputc('\n', out);
+    return finish_script(o, out, tmp, gp);
+}
+
+int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
+{
+    char data[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[256];
+    snprintf(file, sizeof file, "%s-curves", f->name);
+    FILE *out = begin_file(o, file, ".csv", f->comment, data, sizeof data, tmp, sizeof tmp);
+    if (out == NULL)
+        return -1;
+    fprintf(out, "# %s: one block per curve (gnuplot index)\n# %s", f->name, f->xlabel);
+    for (size_t p = 0; p < f->npanels; p++)
+        fprintf(out, ",%s,%s_ci", f->ylabel[p], f->ylabel[p]);
+    fputc('\n', out);
+    for (size_t j = 0; j < f->ncurves; j++) {
+        const vfy_xy_curve *c = &f->curves[j];
+        fprintf(out, "%s# %s\n", j ? "\n\n" : "", c->label);
+        for (size_t i = 0; i < c->count; i++) {
+            if (!isfinite(c->x[i]))
+                continue;
+            fprintf(out, "%.8g", c->x[i]);
+            for (size_t p = 0; p < f->npanels; p++) {
+                const double y = c->y[p] ? c->y[p][i] : NAN, ci = c->ci[p] ? c->ci[p][i] : 0.0;
+                if (isfinite(y))
+                    fprintf(out, ",%.8g,%.4g", y, ci);
+                else
+                    fputs(",,", out);
+            }
+            fputc('\n', out);
+        }
+    }
+    if (vfy_file_commit(out, tmp, data, 1) != 0)
+        return -1;
+    out = begin_script(o, f->name, f->comment, f->title, 1000, 330 * (int)f->npanels + 60, gp,
+                       tmp);
+    if (out == NULL)
+        return -1;
+    fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s"
+                 "set key outside right top\nset grid\n",
+            f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "");
+    for (size_t p = 0; p < f->npanels; p++) {
+        fprintf(out, "set xlabel '%s'\nset ylabel '%s'\nplot", gp_text(f->xlabel),
+                gp_text(f->ylabel[p]));
+        int first = 1;
+        for (size_t j = 0; j < f->ncurves; j++) {
+            if (f->curves[j].y[p] == NULL)
+                continue;
+            fprintf(out, "%s '%s' index %zu using 1:%zu with lines lw %s dt %d lc %zu title '%s'",
+                    first ? "" : ",", data, j, 2 + 2 * p, f->curves[j].reference ? "2" : "1.5",
+                    f->curves[j].reference ? 2 : 1, 1 + j % 8, gp_text(f->curves[j].label));
+            first = 0;
+        }
+        fputc('\n', out);
+    }
+    fputs("unset multiplot\n", out);
     return finish_script(o, out, tmp, gp);
 }
 

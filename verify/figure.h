@@ -47,6 +47,34 @@ typedef struct vfy_points {
  * to <name>.png when gnuplot is installed.  Returns 0 or -1 (errno). */
 int vfy_write_points(const vfy_options *o, const vfy_points *f);
 
+/* Curves whose abscissa differs from curve to curve (paper E's quantities
+ * against the collisions per particle s), in up to VFY_XY_PANELS panels, one
+ * quantity each. */
+#define VFY_XY_PANELS 4
+typedef struct vfy_xy_curve {
+    const char *label;
+    int reference;                    /* drawn dashed (a model), else solid */
+    size_t count;                     /* points; one with a non-finite x or y is left out */
+    const double *x;
+    const double *y[VFY_XY_PANELS];   /* per panel (NULL: not in that panel) */
+    const double *ci[VFY_XY_PANELS];  /* half-widths (NULL: none) */
+} vfy_xy_curve;
+
+typedef struct vfy_xy_figure {
+    const char *name, *title, *xlabel, *comment;
+    int logx;
+    size_t npanels;
+    const char *ylabel[VFY_XY_PANELS];
+    size_t ncurves;
+    const vfy_xy_curve *curves;
+} vfy_xy_figure;
+
+/* <name>-curves.csv (one gnuplot index block per curve: x, then each panel's
+ * y and its half-width) and <name>.gp, the panels one above the other, each
+ * with every curve, rendered to <name>.png when gnuplot is installed.
+ * Returns 0 or -1 (errno). */
+int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f);
+
 /* Work-precision figures (SPEC §10): Err against CPU seconds. */
 #define VFY_WP_TARGETS 3
 extern const double vfy_wp_targets[VFY_WP_TARGETS];   /* 1e-2, 1e-3, 1e-4 */
