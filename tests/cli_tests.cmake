@@ -45,9 +45,12 @@ gdsmc_add_cli_test(cli_verify_msg_half_force 1
 set_tests_properties(cli_verify_msg_wrong_sign cli_verify_msg_half_force
                      PROPERTIES LABELS verification)
 # Paper E: a shear of the wrong sign fails as-steady at quick sizes.
+# (every row 16 tau0 long: the a tau0 = 0.1 rows sheared at a tau0 = -4 for 300 tau0
+# would take 30 s)
 gdsmc_add_cli_test(cli_verify_as_wrong_sign 1
                    "\nFAIL  as-steady alpha=0\\.70 ihs a_tau0=4 -Pxy/nT within 10% of BGK"
                    verify --suite quick --case as-steady --solver-set shear.rate=-4
+                   --set scene.t_end=16 --set scene.outputs=81 --set steady.from=12
                    --out ${CMAKE_CURRENT_BINARY_DIR}/as-wrong-sign)
 set_tests_properties(cli_verify_as_wrong_sign PROPERTIES LABELS verification)
 # EHS colliding at the IHS rate (beta = 1 instead of (1 + alpha)/2 = 0.85): its
