@@ -2,12 +2,19 @@
  * homogeneous uniform shear flow.  Its rates, the closed-form steady state
  * against SPEC §7's check values, CVODE's late times against the closed form
  * for a tau0 = 4 and 0.1, the elastic short-time expansion, homogeneous
- * cooling (Haff) and s0, an independent tensor-form RK4, and the traps.
+ * cooling (Haff) and s0, an independent tensor-form RK4, the steady marginals
+ * (E 3.18-3.20: normalisation, moments, the Gaussian-mixture halves, a direct
+ * angular quadrature, the near-elastic expansion), and the traps.
  * Every known answer names its source; SPEC = /work/shared/SPEC.md,
  * E = Astillero and Santos, PRE 71 (2005) 031309 (seed 004). */
 #include "test_reference_util.h"
 
 #include <string.h>
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_randist.h>
 
 #include "bgk.h"
 #include "ode.h"
@@ -532,6 +539,310 @@ static void test_navier_stokes_limit(void **state)
     assert_true(fabs(s.eta_star_ns - naive) > 0.1);
 }
 
+/* ---------------------------------------------------------------- steady marginals */
+
+/* x = zeta0/nu' and A = a/nu' = sqrt(3x/2) (1 + x) of p (bgk.h). */
+static double x_of(const ref_bgk_params *p)
+{
+    return steady(p).x;
+}
+
+static double A_of(double x)
+{
+    return sqrt(1.5 * x) * (1.0 + x);
+}
+
+static double marginal(const ref_bgk_params *p, ref_bgk_marginal which, double c)
+{
+    double v = NAN;
+    char msg[256] = "x";
+    ref_status st = ref_bgk_steady_marginal(p, which, c, &v, msg, sizeof msg);
+    if (st != REF_OK)
+        print_error("ref_bgk_steady_marginal(%d, %g): %s\n", (int)which, c, msg);
+    assert_int_equal(st, REF_OK);
+    assert_string_equal(msg, "");
+    return v;
+}
+
+/* The moments ∫ c^n g(c) dc, n = 0..6, of the three marginals at alpha = 0.5 and 0.9,
+ * by 10-point Gauss-Legendre panels: width 0.5 on |c| in [0.5, 16], halving towards 0,
+ * where f* has a cusp (|C|^{2/x - 3}, x = 0.42 at alpha = 0.5).  The tails are wide: at
+ * alpha = 0.9 the Gaussians of sigma = 10-20 in the mixture of bgk.h have variances
+ * 3.4-5.6 (Var_x = (1 + b^2)/(2k)), so that |c| > 12 still holds 1e-9 of ∫ C_x^4 g_x^(+);
+ * beyond 16, < 1e-10 of any moment here.  Computed once for both tests that use them. */
+enum { NMOM = 7 };
+static const double MOM_ALPHAS[2] = {0.5, 0.9};
+
+typedef struct moment_table {
+    int done;
+    double m[3][NMOM]; /* [which][n] */
+} moment_table;
+
+static void add_panel(const ref_bgk_params *p, ref_bgk_marginal which, double a, double b,
+                      const gsl_integration_glfixed_table *gl, double *m)
+{
+    for (size_t i = 0; i < gl->n; i++) {
+        double c, w;
+        assert_int_equal(gsl_integration_glfixed_point(a, b, i, &c, &w, gl), GSL_SUCCESS);
+        const double v = w * marginal(p, which, c);
+        double cn = 1.0;
+        for (int n = 0; n < NMOM; n++, cn *= c)
+            m[n] += cn * v;
+    }
+}
+
+static const moment_table *moments(int ia)
+{
+    static moment_table tab[2];
+    moment_table *t = &tab[ia];
+    if (t->done)
+        return t;
+    memset(t->m, 0, sizeof t->m); /* a failed earlier attempt may have left partial sums */
+    ref_bgk_params p = params(MOM_ALPHAS[ia], 4.0);
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(10);
+    assert_non_null(gl);
+    double edges[64];
+    int ne = 0;
+    edges[ne++] = 0.0;
+    for (int j = 8; j >= 1; j--)
+        edges[ne++] = ldexp(1.0, -j); /* 2^-8 ... 1/2 */
+    for (double e = 1.0; e <= 16.0; e += 0.5)
+        edges[ne++] = e;
+    for (int w = 0; w < 3; w++) {
+        const ref_bgk_marginal which = (ref_bgk_marginal)w;
+        for (int i = 0; i + 1 < ne; i++) {
+            add_panel(&p, which, edges[i], edges[i + 1], gl, t->m[w]);
+            if (which != REF_BGK_F_SPEED)
+                add_panel(&p, which, -edges[i + 1], -edges[i], gl, t->m[w]);
+        }
+    }
+    gsl_integration_glfixed_table_free(gl);
+    t->done = 1;
+    return t;
+}
+
+/* E Eqs. (3.18)-(3.20): ∫ g_x^(+) dC_x = ∫ g_y^(+) dC_y = 1/2 (f*(-C) = f*(C): half the
+ * gas has C_y > 0) and ∫_0^inf F dC = 1 (∫ f* d^3C = 1), to 1e-9 (measured: 6e-14). */
+static void test_marginal_normalisation(void **state)
+{
+    (void)state;
+    for (int ia = 0; ia < 2; ia++) {
+        const moment_table *t = moments(ia);
+        assert_close(t->m[REF_BGK_GX_PLUS][0], 0.5, 0, 1e-9);
+        assert_close(t->m[REF_BGK_GY_PLUS][0], 0.5, 0, 1e-9);
+        assert_close(t->m[REF_BGK_F_SPEED][0], 1.0, 0, 1e-9);
+    }
+}
+
+/* C_y of the mixture of bgk.h: <C_y Theta(C_x)> = ∫ e^{-sigma} Cov(x, y)/sqrt(2 pi Var x)
+ * dsigma, with Cov = -b/(2k), Var x = (1 + b^2)/(2k) (E[Y Theta(X)] of a centred
+ * Gaussian pair); no closed form, so by CQUAD here. */
+static double gy_first_moment_fn(double s, void *vp)
+{
+    const double x = *(const double *)vp, k = exp(x * s), b = A_of(x) * s;
+    return -exp(-s) * b / (2.0 * sqrt(PI * k * (1.0 + b * b)));
+}
+
+static double integrate_sigma(gsl_function *f)
+{
+    static const double edges[] = {0.0, 0.25, 1.0, 4.0, 16.0, 64.0, 400.0};
+    gsl_integration_cquad_workspace *ws = gsl_integration_cquad_workspace_alloc(200);
+    assert_non_null(ws);
+    double total = 0.0, r, err;
+    for (size_t i = 0; i + 1 < sizeof edges / sizeof edges[0]; i++) {
+        assert_int_equal(gsl_integration_cquad(f, edges[i], edges[i + 1], 0.0, 1e-12, ws, &r,
+                                               &err, NULL),
+                         GSL_SUCCESS);
+        total += r;
+    }
+    gsl_integration_cquad_workspace_free(ws);
+    return total;
+}
+
+/* Moments against the second-moment closed form of bgk.h and the Gaussian mixture
+ * (f* is the mixture, with density e^{-sigma}, of Gaussians of covariance
+ * Q^{-1}/(2k), k = e^{x sigma}, b = A sigma, bgk.h), y = 1 + 2x, z = 1 + 3x:
+ *   ∫ C_x^2 g_x^(+) = <C_x^2>/2 = (Pxx/p)/4,  Pxx/p = Pyy/p + (Pxx - Pyy)/p,
+ *   ∫ C_y^2 g_y^(+) = (Pyy/p)/4,  Pyy/p = 1/(1 + x),  ∫ C^2 F = <C^2> = 3/2,
+ *   ∫ C_x g_x^(+) = <C_x Theta(C_y)> = -A/(2 sqrt(pi) (1 + x/2)^2)  (E[X Theta(Y)]
+ *     = Cov(X, Y)/sqrt(2 pi Var Y), Cov = -b/(2k), Var Y = 1/(2k)),
+ *   ∫ C_x^4 g_x^(+) = (3/2) <Var_x^2> = (3/8) [1/y + 4A^2/y^3 + 24A^4/y^5],
+ *   ∫ C_y^4 g_y^(+) = (3/8)/y,
+ *   ∫ C^4 F = <(tr S)^2 + 2 tr S^2> = (1/4) [15/y + 28A^2/y^3 + 72A^4/y^5],
+ *   ∫ C^6 F = <(tr S)^3 + 6 tr S tr S^2 + 8 tr S^3>
+ *           = (1/8) [105/z + 378A^2/z^3 + 2376A^4/z^5 + 10800A^6/z^7]
+ * (S = Q^{-1}/(2k), the eigenvalues of Q^{-1} are l2, l1 = 1/l2 and 1, l1 + l2 = 2 + b^2;
+ * the sigma averages are ∫ sigma^n e^{-(1 + j x) sigma} = n!/(1 + j x)^{n+1}).  To 1e-9
+ * (measured: at most 3e-11, in ∫ C^6 F). */
+static void test_marginal_moments(void **state)
+{
+    (void)state;
+    for (int ia = 0; ia < 2; ia++) {
+        const moment_table *t = moments(ia);
+        ref_bgk_params p = params(MOM_ALPHAS[ia], 4.0);
+        const ref_bgk_steady s = steady(&p);
+        const double x = s.x, A = A_of(x), y = 1.0 + 2.0 * x, z = 1.0 + 3.0 * x;
+        const double Pyy = 1.0 / (1.0 + x), Pxx = Pyy + s.normal_xy;
+        const double *gx = t->m[REF_BGK_GX_PLUS], *gy = t->m[REF_BGK_GY_PLUS];
+        const double *F = t->m[REF_BGK_F_SPEED];
+        assert_close(gx[2], Pxx / 4.0, 0, 1e-9);
+        assert_close(gy[2], Pyy / 4.0, 0, 1e-9);
+        assert_close(F[2], 1.5, 0, 1e-9);
+        assert_close(gx[1], -A / (2.0 * sqrt(PI) * (1.0 + x / 2.0) * (1.0 + x / 2.0)), 0, 1e-9);
+        double xv = x;
+        gsl_function f1 = {gy_first_moment_fn, &xv};
+        assert_close(gy[1], integrate_sigma(&f1), 0, 1e-9);
+        assert_true(gx[1] < -0.05 && gy[1] < -0.05); /* both asymmetries are large */
+        const double A2 = A * A, A4 = A2 * A2;
+        assert_close(gx[4], 0.375 * (1.0 / y + 4.0 * A2 / pow(y, 3) + 24.0 * A4 / pow(y, 5)), 0,
+                     1e-9);
+        assert_close(gy[4], 0.375 / y, 0, 1e-9);
+        assert_close(F[4], 0.25 * (15.0 / y + 28.0 * A2 / pow(y, 3) + 72.0 * A4 / pow(y, 5)), 0,
+                     1e-9);
+        assert_close(F[6],
+                     (105.0 / z + 378.0 * A2 / pow(z, 3) + 2376.0 * A4 / pow(z, 5)
+                      + 10800.0 * A4 * A2 / pow(z, 7)) / 8.0,
+                     0, 1e-9);
+        /* (<|C|> and the third moments have no closed form here.) */
+    }
+}
+
+/* The two halves: g^(+)(C) + g^(+)(-C) is the full marginal, which for the mixture of
+ * bgk.h is ∫ e^{-sigma} N(C; 0, V) dsigma with V = (1 + b^2)/(2k) for C_x and 1/(2k)
+ * for C_y; and g^(+) itself is ∫ e^{-sigma} N(C; 0, V) P(other > 0 | C) dsigma with the
+ * conditional Gaussian (C_y | C_x: mean -b C_x/(1 + b^2), variance 1/(2k (1 + b^2));
+ * C_x | C_y: mean -b C_y, variance 1/(2k)), written here with GSL's Gaussian pdf and
+ * cdf rather than bgk.h's erfc forms.  alpha = 0.5, 0.9; to 1e-9.  Also E §V's sign,
+ * g_x^(+)(|C_x|) < g_x^(+)(-|C_x|) (particles moving up, C_y > 0, come from layers of
+ * smaller u_x = a y: Pxy < 0), and the same for g_y^(+), by clear margins. */
+typedef struct mix_point {
+    double x, c;
+    int comp;  /* 0: C_x, 1: C_y */
+    int plus;  /* 0: full marginal, 1: the C_other > 0 half */
+} mix_point;
+
+static double mixture_fn(double s, void *vp)
+{
+    const mix_point *q = vp;
+    const double k = exp(q->x * s), b = A_of(q->x) * s;
+    const double var = q->comp == 0 ? (1.0 + b * b) / (2.0 * k) : 1.0 / (2.0 * k);
+    double v = exp(-s) * gsl_ran_gaussian_pdf(q->c, sqrt(var));
+    if (q->plus) {
+        const double mean = q->comp == 0 ? -b * q->c / (1.0 + b * b) : -b * q->c;
+        const double cvar = q->comp == 0 ? 1.0 / (2.0 * k * (1.0 + b * b)) : 1.0 / (2.0 * k);
+        v *= gsl_cdf_ugaussian_P(mean / sqrt(cvar)); /* P(N(mean, cvar) > 0) */
+    }
+    return v;
+}
+
+static void test_marginal_halves_and_asymmetry(void **state)
+{
+    (void)state;
+    const double cs[] = {0.0, 0.3, 0.77, 1.2385, 2.0};
+    for (int ia = 0; ia < 2; ia++) {
+        ref_bgk_params p = params(MOM_ALPHAS[ia], 4.0);
+        const double x = x_of(&p);
+        for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+            for (int comp = 0; comp < 2; comp++) {
+                const ref_bgk_marginal w = comp ? REF_BGK_GY_PLUS : REF_BGK_GX_PLUS;
+                const double gp = marginal(&p, w, cs[i]), gm = marginal(&p, w, -cs[i]);
+                mix_point full = {x, cs[i], comp, 0}, half = {x, cs[i], comp, 1},
+                          halfm = {x, -cs[i], comp, 1};
+                gsl_function ff = {mixture_fn, &full}, fh = {mixture_fn, &half},
+                             fm = {mixture_fn, &halfm};
+                assert_close(gp + gm, integrate_sigma(&ff), 1e-9, 0);
+                assert_close(gp, integrate_sigma(&fh), 1e-9, 0);
+                assert_close(gm, integrate_sigma(&fm), 1e-9, 0);
+            }
+        }
+        assert_true(marginal(&p, REF_BGK_GX_PLUS, -1.0) > 1.5 * marginal(&p, REF_BGK_GX_PLUS, 1.0));
+        assert_true(marginal(&p, REF_BGK_GY_PLUS, -0.5) > 1.2 * marginal(&p, REF_BGK_GY_PLUS, 0.5));
+    }
+}
+
+/* F against a direct angular quadrature of the mixture, without bgk.h's reduction to
+ * I0: C^2 ∫ dsigma e^{-(1 - 3x/2) sigma} pi^{-3/2} ∫ dOmega exp(-k |C + b C_y x̂|^2)
+ * with 48-point Gauss-Legendre in cos(theta) and a 192-point midpoint rule in phi
+ * (periodic), alpha = 0.9 (where that product rule converges: 3e-12 against 96 x 384
+ * points), C = 0.5, 1, 2.3; to 1e-9. */
+typedef struct angular_q {
+    double x, c;
+    const gsl_integration_glfixed_table *gl;
+} angular_q;
+
+enum { NPHI = 192 };
+
+static double angular_fn(double s, void *vp)
+{
+    const angular_q *q = vp;
+    const double k = exp(q->x * s), b = A_of(q->x) * s, kc2 = k * q->c * q->c;
+    double sum = 0.0;
+    for (size_t i = 0; i < q->gl->n; i++) {
+        double u, wu;
+        gsl_integration_glfixed_point(-1.0, 1.0, i, &u, &wu, q->gl);
+        const double st = sqrt(1.0 - u * u);
+        for (int j = 0; j < NPHI; j++) {
+            const double ph = 2.0 * PI * (j + 0.5) / NPHI, nx = st * cos(ph), ny = st * sin(ph);
+            sum += wu * exp(-kc2 * ((nx + b * ny) * (nx + b * ny) + ny * ny + u * u));
+        }
+    }
+    return q->c * q->c * pow(PI, -1.5) * exp(-(1.0 - 1.5 * q->x) * s) * sum * 2.0 * PI / NPHI;
+}
+
+static void test_marginal_speed_direct(void **state)
+{
+    (void)state;
+    ref_bgk_params p = params(0.9, 4.0);
+    const double x = x_of(&p), cs[] = {0.5, 1.0, 2.3};
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(48);
+    assert_non_null(gl);
+    for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+        angular_q q = {x, cs[i], gl};
+        gsl_function f = {angular_fn, &q};
+        assert_close(marginal(&p, REF_BGK_F_SPEED, cs[i]), integrate_sigma(&f), 1e-9, 0);
+    }
+    gsl_integration_glfixed_table_free(gl);
+}
+
+/* Near-elastic limit, alpha = 0.999: x = 8.47e-4, A = 0.0357.  The marginals tend to
+ * the Maxwellian ones: g^(+) -> M/2 with M(C) = e^{-C^2}/sqrt(pi), F -> F_M
+ * = 4 C^2 e^{-C^2}/sqrt(pi).  Expanding the mixture of bgk.h to first order (b = A sigma
+ * is O(x^{1/2}), <sigma> = 1, <sigma^2> = 2):
+ *   [g_x^(+)(C) + g_x^(+)(-C)]/M = 1 + x (2C^2 - 1)    (Var_x = (1 + b^2)/(2k))
+ *   [g_y^(+)(C) + g_y^(+)(-C)]/M = 1 - x (C^2 - 1/2)   (Var_y = 1/(2k))
+ *   [g^(+)(-C) - g^(+)(C)]/M = 2 A C/sqrt(pi)          (erf(z) = 2z/sqrt(pi), z = b C)
+ *   F/F_M - 1 = (4x/5) S2(C^2), S2(c) = c^2/2 - 5c/2 + 15/8
+ * (F: the angular average of exp(-C.kQ.C) to O(x) is e^{-C^2}
+ * [1 - x sigma C^2 - b^2 C^2/3 + 2 b^2 C^4/15], with the weight's 1 + 3x sigma/2).
+ * The even parts are checked to 150 x^2 (their O(x^2) coefficients are at most 80 for
+ * C <= 2), the odd part to 25 x relative (its O(x) correction is at most 18 x).  The
+ * coarse limits first: |g^(+)/(M/2) - 1| <= 1.2 (2 A C/sqrt(pi)) + x (2C^2 + 1) and
+ * |F/F_M - 1| <= x (|S2| + 1/2). */
+static void test_marginal_near_elastic(void **state)
+{
+    (void)state;
+    ref_bgk_params p = params(0.999, 4.0);
+    const double x = x_of(&p), A = A_of(x);
+    assert_close(x, 0.8467e-3, 1e-3, 0);
+    const double cs[] = {0.25, 0.5, 1.0, 1.5, 2.0};
+    for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+        const double c = cs[i], c2 = c * c, M = exp(-c2) / sqrt(PI), FM = 4.0 * c2 * M;
+        const double S2 = c2 * c2 / 2.0 - 2.5 * c2 + 15.0 / 8.0, odd = 2.0 * A * c / sqrt(PI);
+        const double xp = marginal(&p, REF_BGK_GX_PLUS, c), xm = marginal(&p, REF_BGK_GX_PLUS, -c);
+        const double yp = marginal(&p, REF_BGK_GY_PLUS, c), ym = marginal(&p, REF_BGK_GY_PLUS, -c);
+        const double F = marginal(&p, REF_BGK_F_SPEED, c);
+        const double lim = 1.2 * odd + x * (2.0 * c2 + 1.0);
+        assert_close(xp / (M / 2.0), 1.0, 0, lim);
+        assert_close(xm / (M / 2.0), 1.0, 0, lim);
+        assert_close(F / FM, 1.0, 0, x * (fabs(S2) + 0.5));
+        assert_close((xp + xm) / M - 1.0, x * (2.0 * c2 - 1.0), 0, 150.0 * x * x);
+        assert_close((yp + ym) / M - 1.0, -x * (c2 - 0.5), 0, 150.0 * x * x);
+        assert_close(F / FM - 1.0, 0.8 * x * S2, 0, 150.0 * x * x);
+        assert_close((xm - xp) / M, odd, 25.0 * x, 0);
+        assert_close((ym - yp) / M, odd, 25.0 * x, 0);
+    }
+}
+
 /* ---------------------------------------------------------------- traps */
 
 static void set_field(ref_bgk_params *p, const char *f, double v)
@@ -659,6 +970,58 @@ static void test_trap_bad_arguments(void **state)
     assert_string_equal(tiny, "p is NU");
 }
 
+/* ref_bgk_steady_marginal: what ref_bgk_steady_state rejects, x >= 1, an unknown
+ * marginal, c not finite, F at c < 0, value NULL; F(0) = 0; msg may be NULL. */
+static void test_trap_marginal(void **state)
+{
+    (void)state;
+    ref_bgk_params p = params(1.0, 4.0);
+    double v = 0.0;
+    char msg[256];
+    assert_failure(ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, 0.5, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "alpha = 1 has no steady state", "allowed range (0, 1)");
+    p = params(0.9, 0.0);
+    assert_failure(ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, 0.5, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "shear_rate = 0 has no steady shear state", NULL);
+    p = params(0.9, 4.0);
+    p.gamma = -1.0;
+    assert_failure(ref_bgk_steady_marginal(&p, REF_BGK_GY_PLUS, 0.5, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "gamma = -1 must be finite and > 0", NULL);
+    assert_failure(ref_bgk_steady_marginal(NULL, REF_BGK_GY_PLUS, 0.5, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "p is NULL", NULL);
+    /* x = (5/6) c_eta_nu (1 - alpha) = 7/6 */
+    p = params(0.3, 4.0);
+    p.c_eta_nu = 2.0;
+    assert_failure(ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, 0.5, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "x = zeta0/nu' = 1.16667 (alpha = 0.3, c_eta_nu = 2)",
+                   "must be < 1");
+    p = params(0.9, 4.0);
+    for (int w = 0; w < 3; w++) {
+        const ref_bgk_marginal which = (ref_bgk_marginal)w;
+        assert_failure(ref_bgk_steady_marginal(&p, which, NAN, &v, msg, sizeof msg), REF_EINVAL,
+                       msg, "c = nan must be finite", NULL);
+        assert_failure(ref_bgk_steady_marginal(&p, which, -INFINITY, &v, msg, sizeof msg),
+                       REF_EINVAL, msg, "c = -inf must be finite", NULL);
+        assert_failure(ref_bgk_steady_marginal(&p, which, 0.5, NULL, msg, sizeof msg),
+                       REF_EINVAL, msg, "value is NULL", NULL);
+    }
+    assert_failure(ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, -0.25, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "c = -0.25: the speed C of F(C) must be >= 0", NULL);
+    assert_failure(ref_bgk_steady_marginal(&p, (ref_bgk_marginal)7, 0.5, &v, msg, sizeof msg),
+                   REF_EINVAL, msg, "which = 7 is not REF_BGK_GX_PLUS", NULL);
+    /* Valid edge cases: F(0) = 0 exactly; far tails underflow to 0 without failing;
+     * msg may be NULL. */
+    v = -1.0;
+    assert_int_equal(ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, 0.0, &v, NULL, 0), REF_OK);
+    assert_close(v, 0.0, 0, 0);
+    assert_int_equal(ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, 1e6, &v, NULL, 0), REF_OK);
+    assert_close(v, 0.0, 0, 0);
+    assert_int_equal(ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, 1e200, &v, NULL, 0), REF_OK);
+    assert_close(v, 0.0, 0, 0);
+    assert_int_equal(ref_bgk_steady_marginal(&p, REF_BGK_GY_PLUS, -1e-300, &v, NULL, 0), REF_OK);
+    assert_true(v > 0.25);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -674,8 +1037,14 @@ int main(void)
         cmocka_unit_test(test_s0_ehs_is_beta_times_ihs),
         cmocka_unit_test(test_reduced_units),
         cmocka_unit_test(test_navier_stokes_limit),
+        cmocka_unit_test(test_marginal_normalisation),
+        cmocka_unit_test(test_marginal_moments),
+        cmocka_unit_test(test_marginal_halves_and_asymmetry),
+        cmocka_unit_test(test_marginal_speed_direct),
+        cmocka_unit_test(test_marginal_near_elastic),
         cmocka_unit_test(test_trap_bad_parameters),
         cmocka_unit_test(test_trap_bad_arguments),
+        cmocka_unit_test(test_trap_marginal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
