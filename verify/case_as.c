@@ -409,21 +409,26 @@ static size_t asx_steady_first(const vfy_row *row)
     return m;
 }
 
-/* E Fig. 6: ds/ds0 over the steady window (the collision rate over its local
- * equilibrium value, <|V12|>/<|V12|>_0); x = 1: its half-width from s's at
- * the window's ends (an upper bound: they are correlated); x = 2: the ratio
- * plus that half-width, at paper sizes only (at quick sizes it is +-0.035,
- * wider than the ratio's distance from 1). */
+/* E Fig. 6: the collisions per particle over their local-equilibrium count
+ * (the collision rate over its local equilibrium value, <|V12|>/<|V12|>_0).
+ * x = 0: ds/ds0 over the steady window; x = 1: its half-width from s's at the
+ * window's ends (an upper bound: they are correlated); x = 2: E Fig. 6's own
+ * ratio s/s0 at the last output; x = 3: that ratio plus its half-width (s's
+ * at the last output over s0: s0 follows the simulated T, whose relative
+ * half-width is a tenth of s's), the bound judged below 1. */
 static double asx_collision_ratio(const vfy_case_run *run, const vfy_row *row,
                                   const vfy_metric *m)
 {
+    (void)run;
     double *sci = NULL, *s = asx_series(row, "s", &sci), *s0 = asx_series(row, "s0", NULL);
     double r = NAN;
     if (s != NULL && s0 != NULL) {
         const size_t a = asx_steady_first(row), b = row->res.outputs - 1;
         const double ds0 = s0[b] - s0[a];
-        const double ratio = (s[b] - s[a]) / ds0, ci = hypot(sci[a], sci[b]) / ds0;
-        r = m->x == 0 ? ratio : m->x == 1 ? ci : run->o->size == VFY_QUICK ? NAN : ratio + ci;
+        r = m->x == 0   ? (s[b] - s[a]) / ds0
+            : m->x == 1 ? hypot(sci[a], sci[b]) / ds0
+            : m->x == 2 ? s[b] / s0[b]
+                        : (s[b] + sci[b]) / s0[b];
     }
     free(s);
     free(s0);
@@ -486,9 +491,11 @@ static int asx_bgk_eta(const vfy_row *row, double *a, double *eta)
 /* E Fig. 10 (alpha = 0.5): eta*(a*) of IHS, EHS and BGK coincide for 0.2 < a*
  * < 1.6.  Over this row's outputs with s in [2, 50] and a* in (0.2, 1.6), the
  * relative difference from the other curve at the same a*, averaged in the a*
- * bins (0.2, 0.4), (0.4, 0.8), (0.8, 1.6); the largest |average| in percent:
- * x = 2, an EHS row against its IHS partner; x = 3, an IHS row against the
- * BGK model.  NAN for the other rows, and at quick sizes. */
+ * bins (0.2, 0.4), (0.4, 0.8), (0.8, 1.6), in percent: with a = NULL the
+ * largest |average|, with a = "0", "1" or "2" that bin's signed average (NAN
+ * where it holds fewer than 3 outputs); x = 2, an EHS row against its IHS
+ * partner; x = 3, an IHS row against the BGK model.  NAN for the other rows,
+ * and at quick sizes. */
 static double asx_eta_collapse(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     const int bgk = m->x == 3;
@@ -529,26 +536,40 @@ static double asx_eta_collapse(const vfy_case_run *run, const vfy_row *row, cons
             count[b]++;
         }
     }
+    const int only = m->a != NULL ? atoi(m->a) : -1;
     for (int b = 0; b < 3; b++)
-        if (count[b] >= 3) {
-            const double d = 100.0 * fabs(sum[b] / (double)count[b]);
-            worst = isnan(worst) ? d : fmax(worst, d);
+        if (count[b] >= 3 && (only < 0 || only == b)) {
+            const double d = 100.0 * sum[b] / (double)count[b];
+            worst = only >= 0 ? d : isnan(worst) ? fabs(d) : fmax(worst, fabs(d));
         }
     free(s), free(a), free(eta), free(so), free(ao);
     return worst;
 }
 
-/* The largest |T/T_bgk - 1| over the row's outputs, in percent (E Figs. 7-8:
- * the BGK temperature beside the simulations'). */
+/* E Figs. 7-8 plot T/T0 against s, and the BGK model's against its own
+ * local-equilibrium count s0 (s'/beta and s0'/beta for EHS): the largest
+ * |T(s)/T_bgk(s) - 1| over the row's outputs, in percent, with T_bgk(s) the
+ * BGK temperature at s0_bgk = s (linear interpolation; outputs beyond the
+ * BGK run's last s0 are left out); x = 1: the s where it is largest. */
 static double asx_bgk_T_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    (void)run, (void)m;
+    (void)run;
+    const size_t M = row->res.outputs;
     double *T = asx_series(row, "T", NULL), *Tb = asx_series(row, "T_bgk", NULL);
-    double worst = NAN;
-    for (size_t k = 0; T && Tb && k < row->res.outputs; k++)
-        worst = k ? fmax(worst, 100.0 * fabs(T[k] / Tb[k] - 1.0)) : 100.0 * fabs(T[k] / Tb[k] - 1.0);
-    free(T), free(Tb);
-    return worst;
+    double *s = asx_series(row, "s", NULL), *sb = asx_series(row, "s0_bgk", NULL);
+    double worst = NAN, at = NAN;
+    for (size_t k = 1, j = 1; T && Tb && s && sb && k < M; k++) {
+        while (j + 1 < M && sb[j] < s[k])
+            j++;
+        if (s[k] > sb[M - 1])
+            break;
+        const double w = (s[k] - sb[j - 1]) / (sb[j] - sb[j - 1]);
+        const double d = 100.0 * fabs(T[k] / (Tb[j - 1] + w * (Tb[j] - Tb[j - 1])) - 1.0);
+        if (isnan(worst) || d > worst)
+            worst = d, at = s[k];
+    }
+    free(T), free(Tb), free(s), free(sb);
+    return m->x == 1 ? at : worst;
 }
 
 /* E Fig. 5: s'/beta of an EHS row against its IHS partner's s at the last
@@ -573,22 +594,30 @@ static const vfy_metric transient_metrics[] = {
     {"T_ratio", as_T_ratio, "T", NULL, 0},
     {"collision_ratio", asx_collision_ratio, NULL, NULL, 0},
     {"collision_ratio_ci_t", asx_collision_ratio, NULL, NULL, 1},
-    {"collision_ratio_upper", asx_collision_ratio, NULL, NULL, 2},
+    {"s_ratio_end", asx_collision_ratio, NULL, NULL, 2},
+    {"s_ratio_upper", asx_collision_ratio, NULL, NULL, 3},
     {"z_collision_rate", as_z_partner, "collision_ratio", NULL, 1},
     {"s_relax", asx_s_relax, NULL, NULL, 1.0},
     {"eta_ehs_percent", asx_eta_collapse, NULL, NULL, 2},
     {"eta_bgk_percent", asx_eta_collapse, NULL, NULL, 3},
+    {"eta_bgk_02_04", asx_eta_collapse, "0", NULL, 3},
+    {"eta_bgk_04_08", asx_eta_collapse, "1", NULL, 3},
+    {"eta_bgk_08_16", asx_eta_collapse, "2", NULL, 3},
+    {"eta_ehs_02_04", asx_eta_collapse, "0", NULL, 2},
+    {"eta_ehs_04_08", asx_eta_collapse, "1", NULL, 2},
+    {"eta_ehs_08_16", asx_eta_collapse, "2", NULL, 2},
     {"T_bgk_percent", asx_bgk_T_dev, NULL, NULL, 0},
+    {"T_bgk_at_s", asx_bgk_T_dev, NULL, NULL, 1},
     {"s_ehs_percent", asx_s_models, NULL, NULL, 0},
     {"ehs_09", as_judged, NULL, NULL, 0.9},
     {NULL, NULL, NULL, NULL, 0}};
 
 static const vfy_check_spec transient_checks[] = {
     {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
-    /* E Fig. 6: fewer collisions than in local equilibrium (<|V12|> < <|V12|>_0) */
-    {.name = AS_NAME "ds/ds0 = {collision_ratio:%.4f} below 1 in the steady state",
-     .rule = vfy_rule_range, .value = "collision_ratio_upper", .lo = 0.0, .hi = 1.0,
-     .guard = {vfy_guard_only_at_least, "collision_ratio_upper", NULL, 0.0, NULL}},
+    /* E Fig. 6: fewer collisions than in local equilibrium (<|V12|> < <|V12|>_0),
+     * "except for a short initial period" */
+    {.name = AS_NAME "s/s0 = {s_ratio_end:%.4f} below 1 at the end",
+     .rule = vfy_rule_range, .value = "s_ratio_upper", .lo = 0.0, .hi = 1.0},
     /* ... and its steady value does not depend on the shear rate */
     {.name = AS_NAME "ds/ds0 as at a tau0 = 4", .rule = vfy_rule_range,
      .value = "z_collision_rate", .lo = 0.0, .hi = 1.0, .guard = SLOW},
@@ -597,16 +626,20 @@ static const vfy_check_spec transient_checks[] = {
                      "({s_relax_paper:%g}, to 50%)",
      .rule = vfy_rule_relative, .value = "s_relax", .expected = "s_relax_paper", .tol = 0.5,
      .guard = {vfy_guard_only_at_least, "s_relax_paper", NULL, 0.0, NULL}},
-    /* E Fig. 10: eta*(a*) of EHS and BGK as IHS's for 0.2 < a* < 1.6 (alpha = 0.5) */
+    /* E Fig. 10: eta*(a*) of EHS and BGK as IHS's for 0.2 < a* < 1.6 (alpha = 0.5),
+     * read as within 5% in each a* bin (the case's notes: E's own eta*_NS, 1.3 for
+     * IHS and 1.1 for EHS and BGK, part them by 18% at a* = 0) */
     {.name = AS_NAME "eta*(a*) within 5% of IHS's (0.2 < a* < 1.6)",
      .rule = vfy_rule_range, .value = "eta_ehs_percent", .lo = 0.0, .hi = 5.0,
      .guard = {vfy_guard_only_at_least, "eta_ehs_percent", NULL, 0.0, NULL}},
     {.name = AS_NAME "eta*(a*) within 5% of BGK's (0.2 < a* < 1.6)",
      .rule = vfy_rule_range, .value = "eta_bgk_percent", .lo = 0.0, .hi = 5.0,
      .guard = {vfy_guard_only_at_least, "eta_bgk_percent", NULL, 0.0, NULL}},
-    /* E Figs. 5, 7: at alpha = 0.9 IHS, EHS and BGK alike in T(t) and s(t) */
-    {.name = AS_NAME "T(t) within 3% of BGK's at every output", .rule = vfy_rule_range,
-     .value = "T_bgk_percent", .lo = 0.0, .hi = 3.0, .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.9 - 1e-9, NULL}},
+    /* E Figs. 5, 7: at alpha = 0.9 IHS, EHS and BGK alike in T against s ("practically
+     * indistinguishable") and in s(t) */
+    {.name = AS_NAME "T(s) within 3% of BGK's T(s0) (worst at s = {T_bgk_at_s:%.2f})", .rule = vfy_rule_range,
+     .value = "T_bgk_percent", .lo = 0.0, .hi = 3.0,
+     .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.9 - 1e-9, NULL}},
     {.name = AS_NAME "s'/beta {s_ehs_percent:%+.2f}% from IHS's s at the end (to 2%)",
      .rule = vfy_rule_range, .value = "s_ehs_percent", .lo = -2.0, .hi = 2.0,
      .guard = {vfy_guard_only_at_least, "ehs_09", NULL, 1.0, NULL}},
@@ -614,9 +647,11 @@ static const vfy_check_spec transient_checks[] = {
 
 static const char transient_columns[] =
     "alpha:%.2f model:%s a_tau0:%g T_ratio:%.5g a_star:%.5f Pxy_reduced:%.5f N1:%.5f "
-    "collision_ratio:%.5f collision_ratio_ci=collision_ratio_ci_t:%.5f "
-    "z_collision_rate:%.2f s_relax:%.2f eta_ehs_percent:%.2f eta_bgk_percent:%.2f "
-    "T_bgk_percent:%.2f s_ehs_percent:%+.2f violations:%.0f " VFY_COST_COLUMNS;
+    "s_ratio_end:%.5f s_ratio_upper:%.5f collision_ratio:%.5f "
+    "collision_ratio_ci=collision_ratio_ci_t:%.5f z_collision_rate:%.2f s_relax:%.2f "
+    "eta_ehs_02_04:%+.2f eta_ehs_04_08:%+.2f eta_ehs_08_16:%+.2f eta_bgk_02_04:%+.2f "
+    "eta_bgk_04_08:%+.2f eta_bgk_08_16:%+.2f "
+    "T_bgk_percent:%.2f T_bgk_at_s:%.2f s_ehs_percent:%+.2f violations:%.0f " VFY_COST_COLUMNS;
 
 /* The figures' curves: arrays owned here, freed together. */
 typedef struct asx_plot {
@@ -868,13 +903,23 @@ const vfy_case_desc vfy_as_transient = {
         "equilibrium (time-step scheme, the step following the mean free time) to its steady "
         "state; the steady averages (t >= steady.from) as in as-steady. s = accepted "
         "collisions per particle (s' for EHS), s0 = ∫ beta dt/(sqrt(pi) tau(t)) from the "
-        "simulated T (E Eq. 3.13). collision_ratio = ds/ds0 over the steady window "
-        "(<|V12|>/<|V12|>_0; _ci from s's); z_collision_rate: against the row at a tau0 = 4; "
+        "simulated T (E Eq. 3.13). s_ratio_end = s/s0 at the last output (E Fig. 6), "
+        "s_ratio_upper the same plus its half-width; collision_ratio = ds/ds0 over the steady "
+        "window (<|V12|>/<|V12|>_0; _ci from s's at the window's ends); z_collision_rate: "
+        "against the row at a tau0 = 4; "
         "s_relax: s at the last output where a* is more than 1% from its steady value (the "
         "duration of the transient; E: s about 20 at alpha = 0.5, 40 at 0.9); "
-        "eta_ehs_percent: the largest |eta*/eta*_IHS - 1| at the same a* over 0.2 < a* < 1.6 "
-        "and 2 <= s <= 50 (E Fig. 10), eta_bgk_percent the same for IHS against BGK; "
-        "T_bgk_percent: the largest |T/T_bgk - 1| over the run; s_ehs_percent: s'/beta of EHS "
-        "against IHS's s at the end. Figures: {case}-collisions (E Figs. 5-6), -stress (Figs. "
+        "eta_ehs_02_04, _04_08, _08_16: the mean of eta*/eta*_IHS - 1 at the same a*, in "
+        "percent, over the outputs with 2 <= s <= 50 (E Fig. 10) and a* in (0.2, 0.4), (0.4, "
+        "0.8), (0.8, 1.6); eta_bgk_* the same for IHS against BGK. E says the three curves "
+        "\"practically coincide, at least in the interval 0.2 < a* < 1.6\", yet prints their "
+        "Navier-Stokes limits (a* -> 0) as 1.3 for IHS and 1.1 for EHS and BGK, 18% apart: "
+        "the a tau0 = 0.1 rows, which sweep a* up from about 0.2, show the IHS curve above "
+        "the other two by about that much at small a* and converging to them as a* grows "
+        "(the bins' columns), so the 5% reading fails at alpha = 0.5 in (0.2, 0.4) and is "
+        "kept failing as evidence. T_bgk_percent: the largest |T(s)/T_bgk(s0 = s) - 1| over "
+        "the run (E Figs. 7-8 plot against s, the BGK model against its s0), T_bgk_at_s where; "
+        "s_ehs_percent: "
+        "s'/beta of EHS against IHS's s at the end. Figures: {case}-collisions (E Figs. 5-6), -stress (Figs. "
         "7-8), -viscosity (Fig. 10), -cumulants (Figs. 11-12), -shells (Fig. 13). Total wall "
         "time {wall_total:%.1f} s."};
