@@ -60,6 +60,13 @@ gdsmc_add_cli_test(cli_verify_as_wrong_beta 1
                    verify --suite quick --case as-steady --set particles.ensembles=8
                    --solver-set collisions.beta=1 --out ${CMAKE_CURRENT_BINARY_DIR}/as-wrong-beta)
 set_tests_properties(cli_verify_as_wrong_beta PROPERTIES LABELS verification)
+# ... and turns E Fig. 17's marginals over: g_x^(+) sheared the wrong way is
+# farther from BGK's than the local equilibrium is (1.9 times, against 0.11)
+gdsmc_add_cli_test(cli_verify_as_distribution_wrong_sign 1
+                   "\nFAIL  as-distribution alpha=0\\.50 ihs a_tau0=4 g_x\\+ nearer BGK than equilibrium \\([1-9]"
+                   verify --suite quick --case as-distribution --solver-set shear.rate=-4
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/as-distribution-wrong-sign)
+set_tests_properties(cli_verify_as_distribution_wrong_sign PROPERTIES LABELS verification)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 # at t = 0: T_exact = 1, E T_n = 1 - 1/n = 63/64, E T_raw = 1
 gdsmc_add_cli_test(cli_reference_ex3 0 "\nt,T_exact,T_finite_n,T_raw_finite_n\n0,1,0\\.984375,1\n0\\.1,1\\.12042752"

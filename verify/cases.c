@@ -24,6 +24,7 @@ extern const vfy_case_desc vfy_msg_kappa, vfy_msg_sonine, vfy_msg_distribution;
 /* case_as.c (paper E) */
 extern const vfy_case_desc vfy_as_steady;
 extern const vfy_case_desc vfy_as_transient;
+extern const vfy_case_desc vfy_as_distribution;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
@@ -75,6 +76,8 @@ static const vfy_case cases[] = {
     {"as-transient", "as", "paper E Figs. 5-13: the transient against s, IHS and EHS at"
      " a tau0 = 4 and 0.1, beside BGK; eta*(a*) collapsing at alpha = 0.5", 1,
      &vfy_as_transient},
+    {"as-distribution", "as", "paper E Figs. 13, 17-18: steady R0..R3, the marginals g_x, g_y"
+     " and F(C) at alpha = 0.9 and 0.5, IHS and EHS, beside BGK", 1, &vfy_as_distribution},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"

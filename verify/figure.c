@@ -169,9 +169,10 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
                        tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s"
+    fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s%s"
                  "set key outside right top\nset grid\n",
-            f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "");
+            f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "",
+            f->logy ? "set logscale y\n" : "");
     for (size_t p = 0; p < f->npanels; p++) {
         fprintf(out, "set xlabel '%s'\nset ylabel '%s'\nplot", gp_text(f->xlabel),
                 gp_text(f->ylabel[p]));

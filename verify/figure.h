@@ -62,7 +62,7 @@ typedef struct vfy_xy_curve {
 
 typedef struct vfy_xy_figure {
     const char *name, *title, *xlabel, *comment;
-    int logx;
+    int logx, logy;
     size_t npanels;
     const char *ylabel[VFY_XY_PANELS];
     size_t ncurves;
