@@ -738,6 +738,16 @@ static void asx_bgk(asx_plot *pl, const vfy_row *row, int x_s0, const char *kind
         c->y[p] = out + (1 + p) * M;
 }
 
+/* A hook's end: SIM_OK, or SIM_EIO with msg when a figure could not be written
+ * (rc != 0, errno set). */
+static sim_status asx_figures_written(const vfy_case_run *run, int rc, char *msg, size_t msglen)
+{
+    if (rc == 0)
+        return SIM_OK;
+    snprintf(msg, msglen, "%s: cannot write the figures: %s", run->c->name, strerror(errno));
+    return SIM_EIO;
+}
+
 /* After the rows: E's figures against s (and t, a*), one curve per row, BGK
  * beside the IHS rows (its T and stresses are the same for EHS; only its
  * clock differs, and E plots s'/beta). */
@@ -863,11 +873,7 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
                         .curves = pl.curves};
     rc |= vfy_write_xy(run->o, &f);
     asx_plot_free(&pl);
-    if (rc != 0) {
-        snprintf(msg, msglen, "%s: cannot write the figures: %s", run->c->name, strerror(errno));
-        return SIM_EIO;
-    }
-    return SIM_OK;
+    return asx_figures_written(run, rc, msg, msglen);
 }
 
 static const char *const transient_needs[] = {"T_bgk", "Pxx_bgk", "Pyy_bgk", "Pzz_bgk",
@@ -1295,11 +1301,7 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
         }
         asx_plot_free(&pl);
     }
-    if (rc != 0) {
-        snprintf(msg, msglen, "%s: cannot write the figures: %s", run->c->name, strerror(errno));
-        return SIM_EIO;
-    }
-    return SIM_OK;
+    return asx_figures_written(run, rc, msg, msglen);
 }
 
 const vfy_case_desc vfy_as_distribution = {
