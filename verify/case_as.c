@@ -1101,6 +1101,7 @@ static double asd_region(const vfy_case_run *run, const vfy_row *row, const vfy_
         {"d_" NAME, asd_region, MARGINAL, WHERE, (X) < 0 ? (X) - 10 : (X) + 10},          \
         {"u_" NAME, asd_region, MARGINAL, WHERE, (X) < 0 ? (X) - 20 : (X) + 20}
 static const vfy_metric distribution_metrics[] = {
+    {"T_ratio", as_T_ratio, "T", NULL, 0},
     /* E Eq. (3.15): the fractions of particles below v0 and in [v0, 2 v0], in % */
     {"below_v0", as_shell_percent, "R0", NULL, 0},
     {"below_v0_ci", as_shell_percent, "R0_ci", NULL, 0},
