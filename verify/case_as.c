@@ -1052,17 +1052,17 @@ static double asd_bgk_ratio(const vfy_case_run *run, const vfy_row *row, const v
 /* E §V's statements about where one distribution is more populated than
  * another.  Metric b is "ALPHA:LO:HI" (the bins whose centres lie in [LO, HI])
  * or "ALPHA:|LO:HI" (|C| in [LO, HI]); the population of marginal a there, in
- * percent of the particles, of this row less that of the other: |x| = 2 the
- * IHS partner (EHS rows), |x| = 4 the BGK model (IHS rows); the sign of x is
- * the sign E states.  |x| < 10: the margin sign (difference) - half-width, the
- * half-width the sum of the bins' joint half-widths (an upper bound whatever
- * their correlation); x = +-12, +-14: the difference itself; x = +-22, +-24:
- * 1 where |difference| <= half-width (the sizes cannot tell the sign), else 0.  NAN
+ * percent of the particles, of this row less that of the other, times the
+ * sign E states (positive: as E says): |x| = 2 the IHS partner (EHS rows),
+ * |x| = 4 the BGK model (IHS rows), the sign of x E's.  |x| < 10: that
+ * difference less its half-width, the sum of the bins' joint half-widths (an
+ * upper bound whatever their correlation); |x| > 10 (x = +-12, +-14): the
+ * difference itself.  NAN
  * for the rows at another alpha or without that comparison, and at quick
  * sizes (n = 2000, N = 4), whose half-widths are wider than the differences. */
 static double asd_region(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    const int kind = (int)fabs(m->x) % 10, mode = (int)fabs(m->x) / 10;
+    const int kind = (int)fabs(m->x) % 10, margin = fabs(m->x) < 10;
     const double sign = m->x < 0 ? -1.0 : 1.0;
     double alpha, lo, hi;
     const char *r = strchr(m->b, ':');
@@ -1090,16 +1090,13 @@ static double asd_region(const vfy_case_run *run, const vfy_row *row, const vfy_
         half += (other != NULL ? hypot(g.ci[k] * g.t_factor, h.ci[k] * h.t_factor)
                                : g.ci[k] * g.t_factor) * g.width;
     }
-    return mode == 0 ? 100.0 * (sign * diff - half)
-           : mode == 1 ? 100.0 * diff
-                       : (fabs(diff) <= half ? 1.0 : 0.0);
+    return 100.0 * (sign * diff - (margin ? half : 0.0));
 }
 
 /* E Eq. (3.15)'s shell percentages, the curve comparisons and E's statements. */
 #define ASD_REGION(NAME, MARGINAL, WHERE, X)                                           \
     {"m_" NAME, asd_region, MARGINAL, WHERE, X},                                          \
-        {"d_" NAME, asd_region, MARGINAL, WHERE, (X) < 0 ? (X) - 10 : (X) + 10},          \
-        {"u_" NAME, asd_region, MARGINAL, WHERE, (X) < 0 ? (X) - 20 : (X) + 20}
+        {"d_" NAME, asd_region, MARGINAL, WHERE, (X) < 0 ? (X) - 10 : (X) + 10}
 static const vfy_metric distribution_metrics[] = {
     {"T_ratio", as_T_ratio, "T", NULL, 0},
     /* E Eq. (3.15): the fractions of particles below v0 and in [v0, 2 v0], in % */
@@ -1138,21 +1135,22 @@ static const vfy_metric distribution_metrics[] = {
     {.name = AS_NAME WHAT " as " Q " (2% of the peak)", .rule = vfy_rule_range,           \
      .value = KIND, .lo = -INFINITY, .hi = 2.0, .guard = GUARD}
 #define ASD_HAS(V) {vfy_guard_only_at_least, V, NULL, -INFINITY, NULL}
-/* A statement judged where the sizes resolve its sign (value a = 0), a SKIP
- * with the reason where they do not (1), omitted where it does not apply
- * (NAN). */
+/* A statement of asd_region with difference d (value a) and margin d - h
+ * (value b): judged where the sizes resolve its sign (|d| > h), a SKIP with
+ * the reason where they do not, omitted where it does not apply (NAN). */
 static vfy_guard_result asd_guard_resolved(const vfy_case_run *run, const vfy_row *row,
                                            const vfy_guard *g)
 {
     (void)run;
-    const double u = vfy_values_get(&row->values, g->a);
-    return isnan(u) ? VFY_OMIT : u > 0.0 ? VFY_GUARD_SKIP : VFY_JUDGE;
+    const double d = vfy_values_get(&row->values, g->a);
+    const double h = d - vfy_values_get(&row->values, g->b);
+    return isnan(h) ? VFY_OMIT : fabs(d) > h ? VFY_JUDGE : VFY_GUARD_SKIP;
 }
 #define ASD_AT_09 {vfy_guard_only_at_least, "ehs_09", NULL, 1.0, NULL}
 #define ASD_CLAIM(TEXT, NAME)                                                          \
     {.name = AS_NAME TEXT " ({d_" NAME ":%+.2g}%)", .rule = vfy_rule_range,                \
      .value = "m_" NAME, .lo = 0.0, .hi = INFINITY,                                       \
-     .guard = {asd_guard_resolved, "u_" NAME, NULL, 0.0,                                  \
+     .guard = {asd_guard_resolved, "d_" NAME, "m_" NAME, 0.0,                             \
                "not resolved at these sizes: the difference {d_" NAME ":%+.2g}% lies "     \
                "within its half-width (margin {m_" NAME ":%+.2g}%)"}}
 static const vfy_check_spec distribution_checks[] = {
@@ -1279,10 +1277,11 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
                 for (size_t k = 0; k < ASD_FINE; k++)
                     if (!(ys[j][k] >= 1e-6))
                         ys[j][k] = NAN;
-            snprintf(pl.labels[pl.ncurves - 4], sizeof pl.labels[0], "BGK alpha=%.1f", alphas[ia]);
-            snprintf(pl.labels[pl.ncurves - 3], sizeof pl.labels[0], "BGK alpha=%.1f", alphas[ia]);
-            snprintf(pl.labels[pl.ncurves - 2], sizeof pl.labels[0], "equilibrium");
-            snprintf(pl.labels[pl.ncurves - 1], sizeof pl.labels[0], "equilibrium");
+            /* one label for a model's two curves (the g panels' and F's), no row's */
+            vfy_xy_curve *const models[] = {b, bf, e, ef};
+            for (size_t j = 0; j < 4; j++)
+                snprintf(pl.labels[models[j] - pl.curves], sizeof pl.labels[0],
+                         j < 2 ? "BGK alpha=%.1f" : "equilibrium", alphas[ia]);
             b->x = x, b->y[0] = bx, b->y[1] = by;
             bf->x = xs, bf->y[2] = bF;
             e->x = x, e->y[0] = e->y[1] = mg;
@@ -1325,14 +1324,15 @@ const vfy_case_desc vfy_as_distribution = {
         "half-width over |C| <= 2, in percent of that row's peak; *_model_dev, the same for "
         "EHS against IHS; *_bgk_ratio, over |C| <= 2 the L1 distance from the BGK model's "
         "(reference/bgk.h, E Eqs. 3.18-3.20 of its steady distribution, bin averages) over "
-        "the distance from the local equilibrium's. d_*: the population difference, in "
-        "percent of the particles, that E describes (EHS less IHS at alpha = 0.5: gx_core "
-        "-1 < C_x < 0, gy_core -0.3 < C_y < 0, F_core C < 0.5, gx_tail |C_x| > 3, gy_tail "
-        "|C_y| > 3, F_tail C > 3; IHS less BGK: gx_tail_bgk C_x > 3 and gy_tail_bgk C_y < -3 "
-        "at alpha = 0.5, gx_tail_bgk09 |C_x| > 3 and F_tail_bgk09 C > 3 at alpha = 0.9; E's "
+        "the distance from the local equilibrium's. d_*: the population difference E "
+        "describes, in percent of the particles, positive where it has E's sign (at alpha = "
+        "0.5, EHS above IHS in gx_core -1 < C_x < 0, gy_core -0.3 < C_y < 0, F_core C < 0.5 "
+        "and gy_tail |C_y| > 3, below it in gx_tail |C_x| > 3 and F_tail C > 3; IHS above BGK "
+        "in gx_tail_bgk C_x > 3 and gy_tail_bgk C_y < -3; at alpha = 0.9 IHS below BGK in "
+        "gx_tail_bgk09 |C_x| > 3 and F_tail_bgk09 C > 3; E's "
         "high velocities read as in its §V B, beyond 3 v0: between 2 and 2.8 the EHS F lies "
         "about 8% above the IHS one, beyond 2.8 below it); "
-        "m_*: the same, signed as E states it, less the sum of the bins' half-widths (judged "
+        "m_*: d_* less the sum of the bins' half-widths (judged "
         ">= 0: the stated sign beyond any correlation of the bins; a SKIP where |d_*| is "
         "within that half-width, which these sizes cannot decide). Figures {case}-0.9, "
         "-0.5 (E Fig. 17) and -0.9-log, -0.5-log (E Fig. 18): every row's marginals with "
