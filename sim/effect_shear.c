@@ -7,8 +7,8 @@
  * applies exactly to every particle.  It keeps the mean velocity at 0 when it
  * starts there and heats the gas at the rate -(2a/3n) Pxy (viscous heating).
  *
- * The Lees-Edwards slab (boundary = lees-edwards, issue 17) and the jump
- * scheme are refused here, naming the key.
+ * The Lees-Edwards slab (boundary = lees-edwards) is sim/slab.c; the jump
+ * scheme is refused here, naming the key.
  */
 #include <stdlib.h>
 
@@ -38,9 +38,6 @@ static const sim_effect_type shear_type = {
 
 sim_status sim_effect_shear(const sim_scene *scene, sim_effect *effect, sim_error *err)
 {
-    if (scene->shear.boundary != SIM_SHEAR_HOMOGENEOUS)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "shear.boundary",
-                             "lees-edwards is not implemented yet (supported: homogeneous)");
     if (scene->scheme != SIM_SCHEME_TIMESTEP)
         return sim_error_set(err, SIM_EUNSUPPORTED, "scene.scheme",
                              "homogeneous shear needs scheme = timestep");

@@ -55,6 +55,7 @@
 #include "effect.h"
 #include "rng.h"
 #include "run.h"
+#include "slab.h"
 #include "steady.h"
 
 #define MAX_EVENTS 4
@@ -111,6 +112,7 @@ struct sim_engine {
     size_t steps;         /* steps per output interval */
     double h;             /* the step */
     size_t observables;   /* per output row (sim_engine_observables) */
+    sim_slab_params *slab;/* the Lees-Edwards slab (slab.h), or NULL */
     /* steady-state observers */
     size_t nsteady;
     size_t steady_from;   /* first output index with t >= steady.from */
@@ -120,6 +122,7 @@ struct sim_workspace {
     sim_run run;
     unsigned char *states;   /* the event processes' per-run states */
     gsl_rng *observer_rng;   /* pair sampling (shear and steady observers), or NULL */
+    sim_slab *slab;          /* the slab's layers and buffers, or NULL */
     double *steady_sum;      /* [nsteady] sums of the samples of the current run */
     size_t samples;          /* how many samples those sums hold */
     size_t steps;            /* time-step scheme: steps in the current output interval */
@@ -202,6 +205,14 @@ static void interval_strang(const sim_engine *e, sim_workspace *ws)
     flow_steps(e, ws, 0.5 * h);
 }
 
+/* One output interval of the Lees-Edwards slab: its own ordered stages per
+ * step (slab.h) instead of the homogeneous events and flows. */
+static void interval_slab(const sim_engine *e, sim_workspace *ws)
+{
+    for (size_t k = 0; k < ws->steps; k++)
+        sim_slab_step(e->slab, ws->slab, &ws->run, ws->h);
+}
+
 /* Resolve the time-step scheme: stages, the step function, h. */
 static sim_status build_timestep(sim_engine *e, sim_error *err)
 {
@@ -268,7 +279,10 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     e->observables = sim_observe_row_length(scene);
 
     sim_status status = SIM_OK;
-    if (scene->collisions.present) {
+    const int slab = scene->shear.present && scene->shear.boundary == SIM_SHEAR_LEES_EDWARDS;
+    if (slab && (status = sim_slab_params_create(&e->scene, &e->slab, err)) == SIM_OK)
+        append_name(e, sim_slab_effects(e->slab));
+    if (status == SIM_OK && !slab && scene->collisions.present) {
         sim_effect collisions;
         status = sim_effect_collisions(scene, &collisions, err);
         if (status == SIM_OK)
@@ -282,10 +296,11 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     }
     /* the flows, in the order of a step */
     sim_effect flow;
-    if (status == SIM_OK && scene->shear.present
+    if (status == SIM_OK && !slab && scene->shear.present
         && (status = sim_effect_shear(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
-    if (status == SIM_OK && scene->collisions.present && scene->collisions.model == SIM_MODEL_EHS
+    if (status == SIM_OK && !slab && scene->collisions.present
+        && scene->collisions.model == SIM_MODEL_EHS
         && scene->collisions.restitution < 1.0   /* elastic: no drag, nothing to pay */
         && (status = sim_effect_ehs_drag(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
@@ -307,6 +322,8 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     }
     if (status == SIM_OK && timestep)
         status = build_timestep(e, err);
+    if (status == SIM_OK && slab)
+        e->interval = interval_slab;
     if (status == SIM_OK && scene->steady.present) {
         e->nsteady = sim_steady_count(scene);
         /* the first output time >= from, in O(1) (outputs may be large) */
@@ -356,6 +373,7 @@ void sim_engine_free(sim_engine *engine)
         free(engine->events[k].params);
     for (size_t k = 0; k < engine->nflows; k++)
         free(engine->flows[k].params);
+    sim_slab_params_free(engine->slab);
     free(engine);
 }
 
@@ -370,7 +388,8 @@ size_t sim_engine_observables(const sim_engine *engine) { return engine->observa
 size_t sim_engine_workspace_bytes(const sim_engine *engine)
 {
     return engine->scene.particles.n * sim_particles_bytes_per_particle(engine->lazy_flow)
-           + engine->state_bytes + engine->nsteady * sizeof(double) + sizeof(sim_workspace);
+           + engine->state_bytes + engine->nsteady * sizeof(double) + sizeof(sim_workspace)
+           + (engine->slab ? sim_slab_bytes(engine->slab, engine->scene.particles.n) : 0);
 }
 
 double sim_engine_step(const sim_engine *engine)
@@ -392,6 +411,8 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
         if (w->run.rng == NULL || w->states == NULL)
             status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     }
+    if (status == SIM_OK && engine->slab)
+        status = sim_slab_create(engine->slab, &w->run.p, &w->slab, err);
     if (status == SIM_OK && engine->nsteady > 0
         && (w->steady_sum = calloc(engine->nsteady, sizeof *w->steady_sum)) == NULL)
         status = sim_error_set(err, SIM_ENOMEM, "steady", "out of memory");
@@ -419,6 +440,7 @@ void sim_workspace_free(sim_workspace *ws)
         gsl_rng_free(ws->observer_rng);
     free(ws->steady_sum);
     free(ws->states);
+    sim_slab_free(ws->slab);
     free(ws);
 }
 
@@ -528,12 +550,19 @@ static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double 
                        size_t *samples)
 {
     double *row = obs + m * e->observables;
-    sim_observe(&ws->run.p, e->mass, row);
-    if (e->scene.shear.present)
-        sim_observe_shear(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions, m,
-                          m > 0 ? row - e->observables : NULL, ws->observer_rng, row);
+    const double *prev = m > 0 ? row - e->observables : NULL;
+    const sim_particles *observed = &ws->run.p;
+    if (e->slab) {   /* against the layers' velocities (slab.h) */
+        sim_slab_observe(e->slab, ws->slab, &ws->run, m, prev, ws->observer_rng, row);
+        observed = sim_slab_peculiar(ws->slab);
+    } else {
+        sim_observe(&ws->run.p, e->mass, row);
+        if (e->scene.shear.present)
+            sim_observe_shear(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions, m,
+                              prev, ws->observer_rng, row);
+    }
     if (e->nsteady > 0 && m >= e->steady_from) {
-        sim_steady_sample(&e->scene, &ws->run.p, e->mass, ws->observer_rng, row,
+        sim_steady_sample(&e->scene, observed, e->mass, ws->observer_rng, row,
                           ws->steady_sum);
         (*samples)++;
     }
@@ -727,6 +756,8 @@ void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, do
     if (ws->observer_rng)
         sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
     sim_particles_sample(&run->p, scene, rng);
+    if (e->slab)
+        sim_slab_start(e->slab, ws->slab, run);
     observe_at(e, ws, 0, obs, &ws->samples);
 }
 

@@ -1,27 +1,51 @@
 #include "observe.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "rng.h"
 
-static const char *const names[SIM_OBS_ROW_MAX] = {
+static const char *const names[SIM_OBS_PROFILE] = {
     "T", "T_raw", "ux", "uy", "uz", "Pxx", "Pyy", "Pzz", "Pxy", "Pxz", "Pyz",
     "qx", "qy", "qz", "a2", "a3",
     "s", "s0", "T_ratio", "Pxy_reduced", "N1", "N2", "a_star", "eta_star", "Psi1", "Psi2",
     "v12_ratio", "R0", "R1", "R2", "R3",
+    "ux_centre", "ux_top", "n_centre", "n_top", "T_centre", "T_top", "ux_slope",
 };
+static const char *const profile_names[SIM_PROFILES] = {"n", "ux", "T", "Pxy"};
 
-const char *sim_observable_name(sim_observable k)
+const char *sim_observable_name(const sim_scene *scene, size_t k, char buf[SIM_OBS_NAME_LEN])
 {
-    return k < SIM_OBS_ROW_MAX ? names[k] : "?";
+    const size_t layers = scene->shear.layers;
+    if (k < SIM_OBS_PROFILE)
+        snprintf(buf, SIM_OBS_NAME_LEN, "%s", names[k]);
+    else if (k < sim_observe_row_length(scene))
+        snprintf(buf, SIM_OBS_NAME_LEN, "%s_%zu", profile_names[(k - SIM_OBS_PROFILE) / layers],
+                 (k - SIM_OBS_PROFILE) % layers);
+    else
+        snprintf(buf, SIM_OBS_NAME_LEN, "?");
+    return buf;
 }
 
-int sim_observable_find(const char *name, size_t len)
+int sim_observable_find(const sim_scene *scene, const char *name, size_t len)
 {
-    for (int k = 0; k < SIM_OBS_ROW_MAX; k++)
+    const size_t row = sim_observe_row_length(scene);
+    for (size_t k = 0; k < SIM_OBS_PROFILE && k < row; k++)
         if (strlen(names[k]) == len && strncmp(names[k], name, len) == 0)
-            return k;
+            return (int)k;
+    if (row <= SIM_OBS_PROFILE)
+        return -1;
+    for (int p = 0; p < SIM_PROFILES; p++) {   /* NAME_I */
+        const size_t plen = strlen(profile_names[p]);
+        if (len < plen + 2 || strncmp(name, profile_names[p], plen) != 0 || name[plen] != '_')
+            continue;
+        size_t layer = 0, d = plen + 1;
+        for (; d < len && name[d] >= '0' && name[d] <= '9' && layer < SIM_SLAB_LAYERS_MAX; d++)
+            layer = 10 * layer + (size_t)(name[d] - '0');
+        if (d == len && layer < scene->shear.layers && (len == plen + 2 || name[plen + 1] != '0'))
+            return (int)(SIM_OBS_PROFILE + (size_t)p * scene->shear.layers + layer);
+    }
     return -1;
 }
 
@@ -95,7 +119,11 @@ void sim_observe_pending(const sim_particles *p, double mass, double t, double s
 
 size_t sim_observe_row_length(const sim_scene *scene)
 {
-    return scene->shear.present ? SIM_OBS_ROW_MAX : SIM_OBS_BASE;
+    if (!scene->shear.present)
+        return SIM_OBS_BASE;
+    if (scene->shear.boundary != SIM_SHEAR_LEES_EDWARDS)
+        return SIM_OBS_SHEAR_END;
+    return SIM_OBS_PROFILE + SIM_PROFILES * scene->shear.layers;
 }
 
 /* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2 theta), theta = T/m (E Eq. 2.18

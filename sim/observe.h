@@ -36,15 +36,30 @@ typedef enum sim_observable {
     SIM_OBS_PXY_REDUCED, SIM_OBS_N1, SIM_OBS_N2, SIM_OBS_A_STAR, SIM_OBS_ETA_STAR,
     SIM_OBS_PSI1, SIM_OBS_PSI2, SIM_OBS_V12_RATIO,
     SIM_OBS_R0, SIM_OBS_R1, SIM_OBS_R2, SIM_OBS_R3,
-    SIM_OBS_ROW_MAX  /* the longest row */
+    SIM_OBS_SHEAR_END,  /* the row of a homogeneous shear flow ends here */
+    /* The Lees-Edwards slab (paper E §IV A, SPEC §7), after the shear set; sim/slab.h
+     * defines them.  Then four profiles of shear.layers columns each, M = layers:
+     * n_0 .. n_{M-1}, ux_0 .., T_0 .., Pxy_0 .. (SIM_OBS_PROFILE + k M + I). */
+    SIM_OBS_UX_CENTRE = SIM_OBS_SHEAR_END, SIM_OBS_UX_TOP, SIM_OBS_N_CENTRE, SIM_OBS_N_TOP,
+    SIM_OBS_T_CENTRE, SIM_OBS_T_TOP, SIM_OBS_UX_SLOPE,
+    SIM_OBS_PROFILE,
+    SIM_OBS_MAX = SIM_OBS_PROFILE + 4 * SIM_SLAB_LAYERS_MAX  /* the longest row */
 } sim_observable;
 
-/* Column name of an observable ("T", "T_raw", "ux", ..., "s", "Pxy_reduced", ...). */
-const char *sim_observable_name(sim_observable k);
+/* The four profiles of the slab, in the order of their columns. */
+typedef enum sim_profile { SIM_PROFILE_N, SIM_PROFILE_UX, SIM_PROFILE_T, SIM_PROFILE_PXY,
+                           SIM_PROFILES } sim_profile;
 
-/* The index of the observable named by the len characters at name, or -1
- * when none is (a scene's row holds the first sim_observe_row_length). */
-int sim_observable_find(const char *name, size_t len);
+/* Longest observable name, with its terminating NUL. */
+#define SIM_OBS_NAME_LEN 32
+
+/* Column name of observable k of the scene's row ("T", "T_raw", "ux", ..., "s",
+ * "Pxy_reduced", ..., "n_0", ..., "Pxy_49"), in buf. */
+const char *sim_observable_name(const sim_scene *scene, size_t k, char buf[SIM_OBS_NAME_LEN]);
+
+/* The index of the observable named by the len characters at name in the
+ * scene's row (sim_observe_row_length), or -1 when none is. */
+int sim_observable_find(const sim_scene *scene, const char *name, size_t len);
 
 /* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_BASE]. */
 void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE]);
@@ -63,8 +78,9 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE]);
 void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
                          double out[SIM_OBS_BASE]);
 
-/* Observables in each output row of the scene: SIM_OBS_BASE, or
- * SIM_OBS_ROW_MAX with [shear]. */
+/* Observables in each output row of the scene: SIM_OBS_BASE, SIM_OBS_SHEAR_END
+ * with [shear], or SIM_OBS_PROFILE + 4 shear.layers with the Lees-Edwards
+ * slab. */
 size_t sim_observe_row_length(const sim_scene *scene);
 
 /* Paper E's shear-flow observables of one system at output m (SPEC §7, E

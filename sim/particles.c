@@ -55,10 +55,20 @@ sim_status sim_particles_alloc(sim_particles *p, size_t n, int with_stamps, sim_
     return SIM_OK;
 }
 
+sim_status sim_particles_alloc_positions(sim_particles *p, sim_error *err)
+{
+    if (p->y == NULL && (p->y = array_alloc(p->n * sizeof *p->y)) == NULL)
+        return sim_error_set(err, SIM_ENOMEM, "particles.n",
+                             "cannot allocate the positions of %zu particles (%zu bytes)", p->n,
+                             p->n * sizeof *p->y);
+    return SIM_OK;
+}
+
 void sim_particles_free(sim_particles *p)
 {
     free(p->v);
     free(p->stamp);
+    free(p->y);
     memset(p, 0, sizeof *p);
 }
 
@@ -82,7 +92,16 @@ void sim_particles_sample(sim_particles *p, const sim_scene *scene, gsl_rng *rng
                       : init->maxwellian.velocity[k];
     }
 
+    const double L = scene->shear.length, wave = init->density_wave;
     for (size_t i = 0; i < p->n; i++) {
+        if (p->y) {   /* paper E Eq. (3.7): accept y with (1 + w sin(2 pi y/L))/(1 + w) */
+            double y;
+            do
+                y = L * (sim_rng_uniform(rng) - 0.5);
+            while (wave > 0.0
+                   && sim_rng_uniform(rng) * (1.0 + wave) >= 1.0 + wave * sin(2.0 * M_PI * y / L));
+            p->y[i] = y;
+        }
         switch (init->initial) {
         case SIM_INITIAL_MAXWELLIAN:
             sample_maxwellian(&init->maxwellian, rng, p->v[i]);
@@ -101,6 +120,8 @@ void sim_particles_sample(sim_particles *p, const sim_scene *scene, gsl_rng *rng
             break;
         }
         }
+        if (p->y)   /* paper E Eq. (3.8) */
+            p->v[i][0] += init->flow_wave * (cos(M_PI * p->y[i] / L) - 2.0 / M_PI);
     }
 
     if (init->zero_momentum) {

@@ -31,6 +31,7 @@ typedef struct sim_particles {
     size_t n;
     double (*v)[3];   /* velocities */
     double *stamp;    /* time up to which each particle's flow was applied, or NULL */
+    double *y;        /* positions across the Lees-Edwards slab (paper E's y), or NULL */
 } sim_particles;
 
 /* Allocate n particles, 1 <= n <= SIM_PARTICLES_MAX (and stamps if
@@ -38,6 +39,11 @@ typedef struct sim_particles {
  * bytes asked for (SIM_EINVAL, naming particles.n, for n out of range); p is
  * then empty. */
 sim_status sim_particles_alloc(sim_particles *p, size_t n, int with_stamps, sim_error *err);
+
+/* Give an allocated system positions (the Lees-Edwards slab, sim/slab.h):
+ * 8 more bytes per particle, paid only by scenes with a slab.  SIM_ENOMEM
+ * (the system is then unchanged). */
+sim_status sim_particles_alloc_positions(sim_particles *p, sim_error *err);
 
 /* Free the arrays; harmless on an empty or already freed system. */
 void sim_particles_free(sim_particles *p);
@@ -48,7 +54,11 @@ size_t sim_particles_bytes_per_particle(int with_stamps);
 /* Draw i.i.d. initial velocities from the scene's initial condition
  * (maxwellian, two-maxwellians as paper B Eq. (35), or a shell of speed
  * sqrt(3T/m) with uniform directions), shift to the distribution's mean if
- * zero_momentum, and set every stamp to 0. */
+ * zero_momentum, and set every stamp to 0.  A system with positions draws
+ * each particle's y first, from the density n (1 + w sin(2 pi y/L)) on
+ * (-L/2, L/2) (w = particles.density_wave, L = shear.length; by rejection),
+ * and adds the flow U (cos(pi y/L) - 2/pi) x̂ (U = particles.flow_wave) to its
+ * velocity: paper E Eqs. (3.5)-(3.8). */
 void sim_particles_sample(sim_particles *p, const sim_scene *scene, gsl_rng *rng);
 
 /* ------------------------------------------------------------ index stream */

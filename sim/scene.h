@@ -63,6 +63,16 @@ typedef enum sim_shear_boundary {
     SIM_SHEAR_LEES_EDWARDS
 } sim_shear_boundary;
 
+/* Most layers a Lees-Edwards slab may have (each adds four profile columns to
+ * every output row, observe.h). */
+#define SIM_SLAB_LAYERS_MAX 1000
+
+/* How the Lees-Edwards slab counts a layer's candidate pairs (sim/slab.h). */
+typedef enum sim_slab_pairs {
+    SIM_SLAB_PAIRS_UNBIASED,  /* N_I (N_I - 1): the layer's pairs */
+    SIM_SLAB_PAIRS_PAPER      /* N_I^2, paper E Eq. (4.13): +1/N_I in the rate */
+} sim_slab_pairs;
+
 /* One Maxwellian: particle mass, drift velocity, temperature. */
 typedef struct sim_maxwellian {
     double mass;
@@ -107,6 +117,11 @@ typedef struct sim_scene {
         double fraction;             /* two-maxwellians: weight of the first */
         sim_maxwellian first, second;/* two-maxwellians */
         int zero_momentum;           /* subtract the sample mean velocity (default 0) */
+        /* The Lees-Edwards slab only (paper E Eqs. 3.7-3.8): positions with density
+         * n (1 + density_wave sin(2 pi y/L)) and the flow U (cos(pi y/L) - 2/pi) x̂,
+         * U = flow_wave, added to every velocity; both 0 by default (uniform, at rest). */
+        double density_wave;         /* in [0, 1) */
+        double flow_wave;
     } particles;
 
     /* [collisions] binary inelastic collisions (SPEC §3) */
@@ -146,8 +161,9 @@ typedef struct sim_scene {
         int present;
         double rate;
         sim_shear_boundary boundary;
-        double length;
-        size_t layers;
+        double length;       /* lees-edwards: the slab's width L (-L/2 < y < L/2) */
+        size_t layers;       /* lees-edwards: M layers of width L/M */
+        sim_slab_pairs candidates;   /* lees-edwards (default unbiased) */
         size_t pairs;        /* random pairs per output for <|V12|^3> (observe.h); 0: none */
     } shear;
 

@@ -258,7 +258,7 @@ gdsmc_add_cli_exact(cli_x_run_bad_override 2
                     run ${S}/grw-ex3.ini --set particles.n)
 # valid scenes the engine refuses (sim/engine.c, sim/effect_*.c)
 gdsmc_add_cli_exact(cli_x_run_shear 2
-                    "gdsmc run: tests/scenes/shear.ini:10: shear.boundary: lees-edwards is not implemented yet (supported: homogeneous)"
+                    "gdsmc run: tests/scenes/shear.ini:10: shear.boundary: lees-edwards needs scheme = timestep (the jump scheme keeps no positions)"
                     run ${B}/shear.ini)
 gdsmc_add_cli_exact(cli_x_run_steady_without 2
                     "gdsmc run: --steady s.csv: verify/scenes/grw-ex3.ini has no [steady] section (steady averages need one: from, bins, c_max, pairs)"
@@ -479,7 +479,7 @@ gdsmc_add_no_output_test(cli_no_output_bad_scene_keeps_file 2
     "^gdsmc run: tests/scenes/restitution-1\\.7\\.ini:6: collisions\\.restitution: "
     ${NO}/keep.csv PRE "an earlier run's output" ARGS run ${B}/restitution-1.7.ini --out ${NO}/keep.csv)
 gdsmc_add_no_output_test(cli_no_output_engine_refused 2
-    "^gdsmc run: tests/scenes/shear\\.ini:10: shear\\.boundary: lees-edwards is not implemented yet \\(supported: homogeneous\\)[^!-~]*$"
+    "^gdsmc run: tests/scenes/shear\\.ini:10: shear\\.boundary: lees-edwards needs scheme = timestep \\(the jump scheme keeps no positions\\)[^!-~]*$"
     ${NO}/shear.csv ARGS run ${B}/shear.ini --out ${NO}/shear.csv)
 gdsmc_add_no_output_test(cli_no_output_memory_refused 2
     "^gdsmc run: verify/scenes/grw-ex3\\.ini: --set particles\\.n: n = 100 particles per ensemble on 1 threads, N = 1000000 ensembles and 10000000 outputs need about [0-9.e+]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"

@@ -413,7 +413,7 @@ static void test_all_scene_files(void **state)
         "brs-ex1", "brs-ex2", "brs-ex3", "brs-ex4", "brs-ex5", "grw-ex3", "grw-ex4",
         "grw-ex5", "hard-dissipation", "hard-extreme", "hard-long-run", "hard-nongaussian",
         "hard-stiff", "hard-tails", "ms-gaussian", "ms-non-gaussian", "ms-white-noise",
-        "as", "msg", "split-ex5"};
+        "as", "as-slab", "msg", "split-ex5"};
     const size_t nshipped = sizeof shipped / sizeof *shipped;
     char dir[1024], path[2048], msg[1024];
     snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
@@ -487,7 +487,7 @@ static void test_write_shipped_scenes(void **state)
         count++;
     }
     closedir(d);
-    assert_int_equal(count, 20);
+    assert_int_equal(count, 21);
 }
 
 /* Random valid scenes: random values for random keys (awkward decimals,
@@ -788,6 +788,12 @@ TRAP(trap_title_too_long_in_file,
      "t.ini:2: scene.title: is too long: 130 characters (allowed at most 127 characters)")
 TRAP(trap_mixture_key_with_shell, "[particles]\ninitial = shell\nfraction = 0.5\n",
      "t.ini:3: particles.fraction: only used with initial = two-maxwellians (initial is shell)")
+TRAP(trap_slab_key_homogeneous, "[particles]\ndensity_wave = 0.5\n[shear]\nrate = 4\n",
+     "t.ini:2: particles.density_wave: only used with [shear] boundary = lees-edwards (the slab)")
+TRAP(trap_density_wave_one, "[particles]\ndensity_wave = 1\n",
+     "t.ini:2: particles.density_wave: '1' is out of range (allowed 0 <= density_wave < 1)")
+TRAP(trap_slab_candidates_unknown, "[shear]\nboundary = lees-edwards\ncandidates = bird\n",
+     "t.ini:3: shear.candidates: 'bird' is unknown (allowed unbiased, paper)")
 TRAP(trap_exponent_contradicts_maxwell, "[collisions]\nkernel = maxwell\nexponent = 1\n",
      "t.ini:3: collisions.exponent: 1 contradicts kernel = maxwell (allowed 0, or kernel = vhs)")
 TRAP(trap_observation_unknown, "[scene]\nobservation = exact\n",
@@ -882,8 +888,13 @@ ENGINE_TRAP(engine_two_species,
 ENGINE_TRAP(engine_shear, "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1.5\n",
             "t.ini: scene.scheme: homogeneous shear needs scheme = timestep")
 ENGINE_TRAP(engine_lees_edwards, "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
-            "t.ini:3: shear.boundary: lees-edwards is not implemented yet (supported: "
-            "homogeneous)")
+            "t.ini:3: shear.boundary: lees-edwards needs scheme = timestep (the jump scheme "
+            "keeps no positions)")
+ENGINE_TRAP(engine_lees_edwards_maxwell,
+            "[scene]\nscheme = timestep\ndt = 0.01\n[collisions]\nkernel = maxwell\n"
+            "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
+            "t.ini:8: shear.boundary: lees-edwards simulates hard spheres ([collisions] kernel = "
+            "hard-spheres)")
 ENGINE_TRAP(engine_heat_flux, "[heat-flux]\nstrength = 0.025\n",
             "t.ini: scene.scheme: the heat-flux force couples the particles (through the mean "
             "and the temperature) and needs scheme = timestep")
@@ -1165,12 +1176,16 @@ int main(void)
         cmocka_unit_test(trap_unknown_section_no_keys),
         cmocka_unit_test(trap_override_too_long),
         cmocka_unit_test(trap_file_too_large),
+        cmocka_unit_test(trap_slab_key_homogeneous),
+        cmocka_unit_test(trap_density_wave_one),
+        cmocka_unit_test(trap_slab_candidates_unknown),
     };
     const struct CMUnitTest engine_trap[] = {
         cmocka_unit_test(engine_background_timestep),
         cmocka_unit_test(engine_two_species),
         cmocka_unit_test(engine_shear),
         cmocka_unit_test(engine_lees_edwards),
+        cmocka_unit_test(engine_lees_edwards_maxwell),
         cmocka_unit_test(engine_heat_flux),
         cmocka_unit_test(engine_heat_flux_heating),
         cmocka_unit_test(engine_heat_flux_moving),

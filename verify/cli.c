@@ -448,8 +448,11 @@ static void write_series(FILE *f, const run_output *o)
             (unsigned long long)res->counts.collisions,
             (unsigned long long)res->counts.violations);
     fputs("t", f);
-    for (int k = 0; k < (int)res->observables; k++)
-        fprintf(f, ",%s,%s_ci", sim_observable_name(k), sim_observable_name(k));
+    char name[SIM_OBS_NAME_LEN];
+    for (size_t k = 0; k < res->observables; k++) {
+        sim_observable_name(o->scene, k, name);
+        fprintf(f, ",%s,%s_ci", name, name);
+    }
     fputc('\n', f);
     for (size_t m = 0; m < res->outputs; m++) {
         fprintf(f, "%.10g", res->t[m]);

@@ -138,7 +138,7 @@ int vfy_row_series(const vfy_row *row, const char *name, double *mean, double *c
         if (res == NULL)
             return -1;
     }
-    const int k = sim_observable_find(name, len);
+    const int k = sim_observable_find(&row->solver, name, len);
     if (k >= 0 && (size_t)k < res->observables) {
         vfy_result_column(res, k, mean, ci);
         return 0;
@@ -684,7 +684,7 @@ static int operand_missing(const vfy_case_run *run, const vfy_row *row, const ch
 static int reported_quantity(const vfy_row *row, const char *name)
 {
     const size_t len = strcspn(name, "@");
-    if (sim_observable_find(name, len) >= 0 || strcmp(name, "violations") == 0
+    if ((row != NULL && sim_observable_find(&row->solver, name, len) >= 0) || strcmp(name, "violations") == 0
         || strcmp(name, "events") == 0)
         return 1;
     return row != NULL && sim_steady_find(&row->solver, name) >= 0;

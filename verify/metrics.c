@@ -230,7 +230,7 @@ double vfy_metric_variance_ratio(const vfy_case_run *run, const vfy_row *row,
 {
     const sim_ensemble_result *a = vfy_row_result(run, row, NULL);
     const sim_ensemble_result *b = vfy_row_result(run, row, m->b);
-    const int k = sim_observable_find(m->a, strlen(m->a));
+    const int k = sim_observable_find(&row->solver, m->a, strlen(m->a));
     size_t M = a->outputs;
     double *va = malloc(2 * M * sizeof *va), mean = NAN, min = NAN;
     if (b != NULL && k >= 0 && va != NULL) {

@@ -28,8 +28,11 @@ int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
     fprintf(f, "# cpu_seconds = %.17g\n# events = %" PRIu64 "\n# violations = %" PRIu64 "\n",
             res->cpu_seconds, res->counts.candidates, res->counts.violations);
     fputs("t", f);
-    for (int k = 0; k < K; k++)
-        fprintf(f, ",%s,%s_var", sim_observable_name(k), sim_observable_name(k));
+    for (int k = 0; k < K; k++) {
+        char column[SIM_OBS_NAME_LEN];
+        sim_observable_name(scene, (size_t)k, column);
+        fprintf(f, ",%s,%s_var", column, column);
+    }
     fputc('\n', f);
     for (size_t m = 0; m < res->outputs; m++) {
         fprintf(f, "%.17g", res->t[m]);
@@ -212,7 +215,8 @@ static sim_status header_lines(reader *r, const sim_scene *scene, sim_ensemble_r
 
 /* The column header: t, then NAME and NAME_var pairs; obs[j] is the
  * observable of column 1 + 2 j. */
-static sim_status column_header(reader *r, const sim_ensemble_result *res, int *obs,
+static sim_status column_header(reader *r, const sim_scene *scene,
+                                const sim_ensemble_result *res, int *obs,
                                 size_t *nobs, vfy_result_info *info)
 {
     if (!next_line(r) || blank(r->at, r->len))
@@ -224,12 +228,16 @@ static sim_status column_header(reader *r, const sim_ensemble_result *res, int *
     *nobs = 0;
     for (size_t k = 1; k < count; k += 2) {
         field(r, k, name, sizeof name);
-        int o = sim_observable_find(name, strlen(name));
+        int o = sim_observable_find(scene, name, strlen(name));
         if (o < 0 || o >= (int)res->observables) {
-            char allowed[400] = "";
-            for (int j = 0; j < (int)res->observables; j++)
+            char allowed[400] = "", known[SIM_OBS_NAME_LEN];
+            for (size_t j = 0; j < res->observables && j < SIM_OBS_PROFILE; j++)
                 snprintf(allowed + strlen(allowed), sizeof allowed - strlen(allowed), "%s%s",
-                         j ? " " : "", sim_observable_name((sim_observable)j));
+                         j ? " " : "", sim_observable_name(scene, j, known));
+            if (res->observables > SIM_OBS_PROFILE)
+                snprintf(allowed + strlen(allowed), sizeof allowed - strlen(allowed),
+                         " n_I ux_I T_I Pxy_I for the layers I = 0 .. %zu",
+                         scene->shear.layers - 1);
             return fail(r, r->line, "column %zu: '%s' is not an observable (allowed %s)",
                         k + 1, name, allowed);
         }
@@ -265,7 +273,8 @@ static sim_status series_row(reader *r, const sim_scene *scene, size_t m, const 
     const double N = (double)res->ensembles;
     for (size_t j = 0; j < nobs; j++) {
         double mean, var;
-        const char *name = sim_observable_name((sim_observable)obs[j]);
+        char name[SIM_OBS_NAME_LEN];
+        sim_observable_name(scene, (size_t)obs[j], name);
         field(r, 1 + 2 * j, text, sizeof text);
         if ((why = number(text, &mean)) != NULL)
             return fail(r, r->line, "column %zu (%s): '%s' %s", 2 + 2 * j, name, text, why);
@@ -383,10 +392,10 @@ static sim_status parse(reader *r, const sim_scene *scene, sim_ensemble_result *
     if (allocate(scene, res) != SIM_OK)
         return fail(r, 0, "out of memory");
     sim_status status = header_lines(r, scene, res, info);
-    int obs[SIM_OBS_ROW_MAX];
+    int obs[SIM_OBS_MAX];
     size_t nobs = 0;
     if (status == SIM_OK)
-        status = column_header(r, res, obs, &nobs, info);
+        status = column_header(r, scene, res, obs, &nobs, info);
     for (size_t m = 0; m < res->outputs && status == SIM_OK; m++) {
         if (!next_line(r))
             return fail(r, r->line, "the file ends after %zu rows, the scene has %zu output "

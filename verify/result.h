@@ -34,7 +34,7 @@
 typedef struct vfy_result_info {
     char solver[256];                /* the "# solver = " line, or "" */
     int has_cpu, has_events, has_violations;
-    unsigned char reported[SIM_OBS_ROW_MAX];  /* observable k had a column */
+    unsigned char reported[SIM_OBS_MAX];  /* observable k had a column */
     size_t steady_reported;          /* steady quantities the file gave */
 } vfy_result_info;
 

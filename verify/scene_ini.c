@@ -59,7 +59,7 @@ static const section_desc sections[] = {
 
 typedef enum key_kind { K_TEXT, K_REAL, K_VEC3, K_SIZE, K_U64, K_WORD } key_kind;
 
-enum { LO_GT = 1, LO_GE = 2, HI_LE = 4 };  /* bounds of a K_REAL */
+enum { LO_GT = 1, LO_GE = 2, HI_LE = 4, HI_LT = 8 };  /* bounds of a K_REAL */
 
 typedef struct word_desc {
     const char *word;
@@ -87,6 +87,7 @@ _Static_assert(sizeof(sim_kernel_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_collision_model) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_heating_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_shear_boundary) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_slab_pairs) == sizeof(int), "enum size");
 
 static const word_desc scheme_words[] = {
     {"jump", SIM_SCHEME_JUMP}, {"timestep", SIM_SCHEME_TIMESTEP}, {NULL, 0}};
@@ -114,6 +115,9 @@ static const word_desc heating_words[] = {{"white-noise", SIM_HEATING_WHITE_NOIS
 static const word_desc boundary_words[] = {{"homogeneous", SIM_SHEAR_HOMOGENEOUS},
                                            {"lees-edwards", SIM_SHEAR_LEES_EDWARDS},
                                            {NULL, 0}};
+static const word_desc candidates_words[] = {{"unbiased", SIM_SLAB_PAIRS_UNBIASED},
+                                             {"paper", SIM_SLAB_PAIRS_PAPER},
+                                             {NULL, 0}};
 
 #define TEXT(s, k, m) {.section = s, .name = k, .kind = K_TEXT, .offset = OFF(m), \
                        .size = sizeof(((sim_scene *)0)->m)}
@@ -152,6 +156,8 @@ static const key_desc keys[] = {
     VEC3(S_PARTICLES, "velocity2", particles.second.velocity),
     POSITIVE(S_PARTICLES, "temperature2", particles.second.temperature),
     WORDS(S_PARTICLES, "zero_momentum", particles.zero_momentum, bool_words),
+    REAL(S_PARTICLES, "density_wave", particles.density_wave, LO_GE | HI_LT, 0.0, 1.0),
+    FINITE(S_PARTICLES, "flow_wave", particles.flow_wave),
 
     WORDS(S_COLLISIONS, "kernel", collisions.kernel, kernel_words),
     REAL(S_COLLISIONS, "exponent", collisions.exponent, LO_GE | HI_LE, 0.0, 1.0),
@@ -175,7 +181,8 @@ static const key_desc keys[] = {
     FINITE(S_SHEAR, "rate", shear.rate),
     WORDS(S_SHEAR, "boundary", shear.boundary, boundary_words),
     POSITIVE(S_SHEAR, "length", shear.length),
-    COUNT(S_SHEAR, "layers", shear.layers, 1, SIZE_MAX),
+    COUNT(S_SHEAR, "layers", shear.layers, 1, SIM_SLAB_LAYERS_MAX),
+    WORDS(S_SHEAR, "candidates", shear.candidates, candidates_words),
     COUNT(S_SHEAR, "pairs", shear.pairs, 0, SIZE_MAX),
 
     FINITE(S_HEAT_FLUX, "strength", heat_flux.strength),
@@ -272,8 +279,9 @@ static void describe(const key_desc *d, char *buf, size_t len)
         break;
     case K_REAL: {
         const char *lo = (d->bounds & LO_GT) ? "<" : "<=";
-        if ((d->bounds & (LO_GT | LO_GE)) && (d->bounds & HI_LE))
-            snprintf(buf, len, "%g %s %s <= %g", d->lo, lo, d->name, d->hi);
+        if ((d->bounds & (LO_GT | LO_GE)) && (d->bounds & (HI_LE | HI_LT)))
+            snprintf(buf, len, "%g %s %s %s %g", d->lo, lo, d->name,
+                     (d->bounds & HI_LT) ? "<" : "<=", d->hi);
         else if (d->bounds & (LO_GT | LO_GE))
             snprintf(buf, len, "%s %s %g", d->name, (d->bounds & LO_GT) ? ">" : ">=", d->lo);
         else
@@ -412,7 +420,7 @@ static sim_status set_value(parse_ctx *c, const key_desc *d, const char *full, c
         if ((why = parse_real(value, &v, NULL)))
             break;
         if (((d->bounds & LO_GT) && !(v > d->lo)) || ((d->bounds & LO_GE) && !(v >= d->lo)) ||
-            ((d->bounds & HI_LE) && !(v <= d->hi)))
+            ((d->bounds & HI_LE) && !(v <= d->hi)) || ((d->bounds & HI_LT) && !(v < d->hi)))
             return fail(c, SIM_EINVAL, full, "'%s' is out of range (allowed %s)", value, allowed);
         memcpy(field, &v, sizeof v);
         return SIM_OK;
@@ -627,6 +635,13 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
     if (s->heating.keep_temperature && is_set(s, "heating.strength"))
         return sim_error_set(err, SIM_EINVAL, "heating.strength",
                              "not used with keep_temperature = true (the rescaling sets zeta)");
+    const int slab = s->shear.present && s->shear.boundary == SIM_SHEAR_LEES_EDWARDS;
+    static const char *const slab_only[] = {"particles.density_wave", "particles.flow_wave",
+                                            "shear.length", "shear.layers", "shear.candidates"};
+    for (size_t i = 0; !slab && i < sizeof slab_only / sizeof slab_only[0]; i++)
+        if (is_set(s, slab_only[i]))
+            return sim_error_set(err, SIM_EINVAL, slab_only[i],
+                                 "only used with [shear] boundary = lees-edwards (the slab)");
     if (s->steady.present && s->steady.from > s->t_end)
         return sim_error_set(err, SIM_EINVAL, "steady.from",
                              "%g is after t_end = %g (allowed 0 <= from <= t_end: the time "
