@@ -18,7 +18,7 @@
  *   3. fields    per layer: N_I, u_I, T_I (peculiar to u_I) and the bound
  *                R_I = max |v_i - u_I|, so w_I = 2 R_I bounds the layer's relative
  *                speeds exactly (E's w_I is an estimate ∝ sqrt(T_I)).
- *   4. collide   per layer, Bird's candidates for h at the rate
+ *   4. collide   per layer, candidates at the rate
  *                kappa P_I w_I, P_I = N_I (N_I - 1) (the layer's ordered pairs;
  *                shear.candidates = paper: N_I^2 as E Eq. 4.13 prints, a +1/N_I
  *                bias), kappa = 2 pi gamma C beta M/N: each unordered pair of the
@@ -28,8 +28,10 @@
  *                uniform pair i != j of the layer, accepted with |g|/w_I, and
  *                collides by paper A's rule with e uniform (equal in distribution
  *                to the contact rule, SPEC §7's corrections); alpha = 1 for EHS.
- *                The stage time left over is kept per layer; when a collision
- *                grows R_I the rest of the layer's time is spent at the new rate.
+ *                The candidates are a Poisson process in each step (exponential
+ *                waiting times; Bird's remainder carried from step to step biases
+ *                the rate by O(1/N_I) as N_I changes); when a collision grows R_I
+ *                the rest of the step runs at the new rate.
  *
  * Observation (E Eqs. 4.3-4.9): the base set with T and P taken against each
  * particle's layer velocity u_I, T = (1/N) Σ N_I T_I and P = (1/M) Σ P_I (never
@@ -43,9 +45,11 @@
  *   n_centre, n_top    their densities over n (E Fig. 3)
  *   T_centre, T_top    their temperatures over T (E Fig. 3)
  *   ux_slope           the least-squares slope of u_I,x against the layer centres,
- *                      over a (1 for the linear profile u_x = a y)
+ *                      over a (1 for the linear profile u_x = a y); the three u_x
+ *                      columns are NaN at a = 0
  * and the profiles n_I/n, u_I,x, T_I/T and P_I,xy/(n T) (E Fig. 2), I = 0 .. M-1
- * from the bottom.  An empty layer has u_I = 0 and T_I = 0.
+ * from the bottom.  An empty layer has u_I = 0 and T_I = 0.  T_I divides by N_I
+ * as E Eq. (4.6) does, so its expectation in equilibrium is T (1 - 1/N_I).
  */
 #ifndef GDSMC_SIM_SLAB_H
 #define GDSMC_SIM_SLAB_H
@@ -81,8 +85,7 @@ sim_status sim_slab_create(const sim_slab_params *params, sim_particles *p, sim_
                            sim_error *err);
 void sim_slab_free(sim_slab *slab);
 
-/* After the initial state is drawn: sort it into layers and take the fields;
- * every layer's stage time left over starts at 0. */
+/* After the initial state is drawn: sort it into layers and take the fields. */
 void sim_slab_start(const sim_slab_params *params, sim_slab *slab, sim_run *run);
 
 /* One step of h: the stages in order (the header comment). */

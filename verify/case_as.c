@@ -1338,3 +1338,369 @@ const vfy_case_desc vfy_as_distribution = {
         "-0.5 (E Fig. 17) and -0.9-log, -0.5-log (E Fig. 18): every row's marginals with "
         "their half-widths beside the BGK model's and the equilibrium's; E Fig. 13 (R_l "
         "against s) is as-transient-shells. Total wall time {wall_total:%.1f} s."};
+
+/* ============================================================= as-slab */
+
+/* E §IV A, Figs. 1-4: the Lees-Edwards slab (sim/slab.h) of verify/scenes/
+ * as-slab.ini at alpha = 0.9, a tau0 = 4, from E's two initial states, IHS
+ * and EHS.  Each EHS row follows the IHS row of its initial state (its
+ * partner). */
+#define ASL_SHELL ";particles.initial=shell;particles.density_wave=0.5;particles.flow_wave=10"
+#define ASL_ROW(M, EHS, INIT, SETS)                                                      \
+    M " (" INIT "): collisions.model=" M ";$model=" M ";$is_ehs=" EHS ";$initial=" INIT SETS
+/* E §IV A: s at t/tau0 = 0.13, 0.5, 1, 1.5, 2 (IHS), and the steady state */
+#define ASL_E35 ";$s_013_paper=0.08;$s_05_paper=0.4;$s_1_paper=1.1;$s_15_paper=2.1;$s_2_paper=3.4"
+#define ASL_E36 ";$s_013_paper=0.09;$s_05_paper=0.5;$s_1_paper=1.5;$s_15_paper=2.8;$s_2_paper=4.6"
+#define ASL_E_STEADY ";$Pxy_paper=0.33;$N1_paper=0.24;$T_ratio_paper=147"
+static const char *const slab_rows[] = {
+    ASL_ROW("ihs", "0", "3.5", ASL_E35 ASL_E_STEADY), ASL_ROW("ehs", "1", "3.5", ""),
+    ASL_ROW("ihs", "0", "3.6", ASL_SHELL ASL_E36 ASL_E_STEADY),
+    ASL_ROW("ehs", "1", "3.6", ASL_SHELL), NULL};
+/* Quick sizes: 1000 particles in 25 layers (40 a layer), dt = 3e-3 tau0 */
+#define ASL_QUICK_SETS "particles.n=1000;shear.layers=25;scene.dt=0.003;particles.ensembles=4"
+#define ASL_LABEL "{case} {model} ({initial:%g})"
+#define ASL_NAME ASL_LABEL " "
+
+/* The output closest to time x. */
+static size_t asl_output_at(const vfy_row *row, double x)
+{
+    const double t_end = row->solver.t_end;
+    const double k = floor(x / t_end * (double)(row->res.outputs - 1) + 0.5);
+    return k <= 0.0 ? 0 : k >= (double)(row->res.outputs - 1) ? row->res.outputs - 1 : (size_t)k;
+}
+
+/* The first output where s >= x (s' / beta for EHS), or M when none is. */
+static size_t asl_output_at_s(const vfy_row *row, const double *s, double x)
+{
+    const double beta = sim_scene_collision_rate_factor(&row->solver);
+    size_t m = 0;
+    while (m < row->res.outputs && s[m] / beta < x)
+        m++;
+    return m;
+}
+
+/* Series a at time x: its mean, or its half-width when b is "ci". */
+static double asl_at(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *ci = NULL, *v = asx_series(row, m->a, &ci);
+    if (v == NULL)
+        return NAN;
+    const size_t k = asl_output_at(row, m->x);
+    const double x = m->b ? ci[k] : v[k];
+    free(v);
+    return x;
+}
+
+/* Series a at the first output with s >= x (E: the profiles are uniform by
+ * s = 4): its mean, or its half-width when b is "ci". */
+static double asl_at_s(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *ci = NULL, *v = asx_series(row, m->a, &ci), *s = asx_series(row, "s", NULL);
+    double x = NAN;
+    const size_t k = v && s ? asl_output_at_s(row, s, m->x) : row->res.outputs;
+    if (k < row->res.outputs)
+        x = m->b ? ci[k] : v[k];
+    free(v);
+    free(s);
+    return x;
+}
+
+/* Over the outputs with s < 4: the largest (x > 0) or smallest (x < 0) mean of
+ * series a, or with b = "s" the s where it is (E Fig. 3: the temperature
+ * difference peaks at s about 0.15, the density difference after about one
+ * collision per particle). */
+static double asl_extreme(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *v = asx_series(row, m->a, NULL), *s = asx_series(row, "s", NULL);
+    double best = NAN, where = NAN;
+    const double beta = sim_scene_collision_rate_factor(&row->solver);
+    for (size_t k = 1; v && s && k < row->res.outputs && s[k] / beta < 4.0; k++)
+        if (isnan(best) || (m->x > 0 ? v[k] > best : v[k] < best)) {
+            best = v[k];
+            where = s[k] / beta;
+        }
+    free(v);
+    free(s);
+    return m->b ? where : best;
+}
+
+/* The top three layers' u_x of the linear profile u_x = a y, in units of U/2:
+ * (L/2 - 3 dy/2)/(L/2) = 1 - 3/M. */
+static double asl_ux_linear(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    return 1.0 - 3.0 / (double)row->solver.shear.layers;
+}
+
+/* EHS rows: s'/(beta s) at the end against the IHS row before it (E Fig. 1:
+ * s'/s about beta = 0.95); x = 1: its half-width from the two s's. */
+static double asl_s_ratio(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const vfy_row *ihs = vfy_row_previous(run, row);
+    if (vfy_values_get(&row->values, "is_ehs") != 1.0 || ihs == NULL)
+        return NAN;
+    double *ci = NULL, *s = asx_series(row, "s", &ci), *ci_i = NULL;
+    double *si = asx_series(ihs, "s", &ci_i);
+    double x = NAN;
+    if (s && si) {
+        const size_t k = row->res.outputs - 1;
+        const double r = s[k] / si[k] / sim_scene_collision_rate_factor(&row->solver);
+        x = m->x == 0 ? r : r * hypot(ci[k] / s[k], ci_i[k] / si[k]);
+    }
+    free(s);
+    free(si);
+    return x;
+}
+
+/* EHS rows: 100 (q - q')/q' against the IHS row before it. */
+static double asl_percent_ihs(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const vfy_row *ihs = vfy_row_previous(run, row);
+    if (vfy_values_get(&row->values, "is_ehs") != 1.0 || ihs == NULL)
+        return NAN;
+    const double b = vfy_values_get(&ihs->values, m->a);
+    return 100.0 * (vfy_values_get(&row->values, m->a) - b) / b;
+}
+
+#define ASL_AT(NAME, T)                                                              \
+    {NAME, asl_at, "s", NULL, T}, {NAME "_ci", asl_at, "s", "ci", T}, STUDENT(NAME)
+#define ASL_AT_S4(Q) {Q "_s4", asl_at_s, Q, NULL, 4.0}, {Q "_s4_ci", asl_at_s, Q, "ci", 4.0}, \
+                     STUDENT(Q "_s4")
+static const vfy_metric slab_metrics[] = {
+    ASL_AT("s_013", 0.13), ASL_AT("s_05", 0.5), ASL_AT("s_1", 1.0), ASL_AT("s_15", 1.5),
+    ASL_AT("s_2", 2.0),
+    ASL_AT_S4("ux_slope"), ASL_AT_S4("ux_top"), ASL_AT_S4("n_centre"), ASL_AT_S4("n_top"),
+    ASL_AT_S4("T_centre"), ASL_AT_S4("T_top"),
+    {"ux_linear", asl_ux_linear, NULL, NULL, 0},
+    {"T_top_peak", asl_extreme, "T_top", NULL, 1}, {"s_T_peak", asl_extreme, "T_top", "s", 1},
+    {"n_top_dip", asl_extreme, "n_top", NULL, -1}, {"s_n_dip", asl_extreme, "n_top", "s", -1},
+    STUDENT("Pxy_reduced"), STUDENT("N1"), STUDENT("N2"), STUDENT("a2"), STUDENT("T"),
+    {"T_ratio", as_T_ratio, "T", NULL, 0},
+    {"T_ratio_ci", as_T_ratio, "T_ci", NULL, 0},
+    STUDENT("T_ratio"),
+    {"s_ratio", asl_s_ratio, NULL, NULL, 0},
+    {"s_ratio_ci", asl_s_ratio, NULL, NULL, 1},
+    {"ehs_Pxy_percent", asl_percent_ihs, "Pxy_reduced", NULL, 0},
+    {"ehs_T_percent", asl_percent_ihs, "T", NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+
+#define ASL_S(Q, T, DIGITS)                                                          \
+    {.name = ASL_NAME "s(" T ") = {" Q ":%.3f} vs paper E ({" Q "_paper:%g})",             \
+     .rule = vfy_rule_printed, .value = Q, .expected = Q "_paper", .tol = DIGITS,           \
+     .plus = Q "_ci_t", .guard = {vfy_guard_only_at_least, Q "_paper", NULL, 0.0, NULL}}
+/* E: "linear velocity and uniform density and temperature ... approximately at
+ * s = 4", read as within 5% (u: of U/2) plus the half-width */
+#define ASL_UNIFORM(WHAT, Q, EXPECTED, X)                                             \
+    {.name = ASL_NAME WHAT " at s = 4 ({" Q "_s4:%.3f}) uniform to 5%", .rule = vfy_rule_absolute, \
+     .value = Q "_s4", .expected = EXPECTED, .x = X, .tol = 0.05, .plus = Q "_s4_ci_t",        \
+     .guard = {vfy_guard_at_most, "initial", NULL, 3.5, "reported, not judged: E reads s = 4 " \
+               "from its (3.5) runs (Fig. 3)"}}
+#define ASL_STEADY(WHAT, Q, DIGITS)                                                   \
+    {.name = ASL_NAME WHAT " = {" Q ":%.3f} vs paper E ({" Q "_paper:%g})",                 \
+     .rule = vfy_rule_printed, .value = Q, .expected = Q "_paper", .tol = DIGITS,           \
+     .plus = Q "_ci_t", .guard = {vfy_guard_only_at_least, Q "_paper", NULL, 0.0, NULL}}
+#define ASL_EHS {vfy_guard_only_at_least, "is_ehs", NULL, 1.0, NULL}
+static const vfy_check_spec slab_checks[] = {
+    {.name = ASL_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    ASL_S("s_013", "0.13", 2), ASL_S("s_05", "0.5", 1), ASL_S("s_1", "1", 1),
+    ASL_S("s_15", "1.5", 1), ASL_S("s_2", "2", 1),
+    ASL_UNIFORM("u_x(y) slope / a", "ux_slope", NULL, 1.0),
+    ASL_UNIFORM("top u_x / (U/2)", "ux_top", "ux_linear", 0.0),
+    ASL_UNIFORM("centre n/n", "n_centre", NULL, 1.0),
+    ASL_UNIFORM("top n/n", "n_top", NULL, 1.0),
+    ASL_UNIFORM("centre T/T", "T_centre", NULL, 1.0),
+    ASL_UNIFORM("top T/T", "T_top", NULL, 1.0),
+    /* ... after inhomogeneities the profiles resolve (E Figs. 2-3): the top
+     * layers hotter than the mean and depopulated before s = 4 */
+    {.name = ASL_NAME "top T/T peaks at {T_top_peak:%.2f} (s = {s_T_peak:%.2f}) before s = 4",
+     .rule = vfy_rule_range, .value = "T_top_peak", .lo = 1.2, .hi = INFINITY},
+    {.name = ASL_NAME "top n/n dips to {n_top_dip:%.2f} (s = {s_n_dip:%.2f}) before s = 4",
+     .rule = vfy_rule_range, .value = "n_top_dip", .lo = 0.0, .hi = 0.9},
+    ASL_STEADY("-Pxy/nT", "Pxy_reduced", 2), ASL_STEADY("(Pxx - Pyy)/nT", "N1", 2),
+    ASL_STEADY("T_s/T0", "T_ratio", 0),
+    /* E Fig. 1: s'/s about beta = 0.95 from t = 4 tau0 on, read to 2% as in as-transient */
+    {.name = ASL_NAME "s'/(beta s) = {s_ratio:%.4f} at the end (to 2%)",
+     .rule = vfy_rule_absolute, .value = "s_ratio", .x = 1.0, .tol = 0.02, .plus = "s_ratio_ci",
+     .guard = ASL_EHS},
+    /* E: "the results ... are practically identical in both systems": within 3% as in
+     * as-steady */
+    {.name = ASL_NAME "-Pxy/nT {ehs_Pxy_percent:%+.2f}% from IHS (to 3%)",
+     .rule = vfy_rule_range, .value = "ehs_Pxy_percent", .lo = -3.0, .hi = 3.0, .guard = ASL_EHS},
+    {.name = ASL_NAME "T {ehs_T_percent:%+.2f}% from IHS (to 3%)",
+     .rule = vfy_rule_range, .value = "ehs_T_percent", .lo = -3.0, .hi = 3.0, .guard = ASL_EHS},
+    {.name = NULL}};
+
+static const char slab_columns[] =
+    "model:%s initial:%g s_013:%.3f s_05:%.3f s_1:%.3f s_15:%.3f s_2:%.3f s_2_ci_t:%.3f "
+    "ux_slope_s4:%.3f ux_top_s4:%.3f n_centre_s4:%.3f n_top_s4:%.3f T_centre_s4:%.3f "
+    "T_top_s4:%.3f T_top_peak:%.2f s_T_peak:%.2f n_top_dip:%.3f s_n_dip:%.2f "
+    "Pxy_reduced:%.4f Pxy_reduced_ci_t:%.4f N1:%.4f N1_ci_t:%.4f N2:%.4f a2:%.4f a2_ci_t:%.4f "
+    "T_ratio:%.1f T_ratio_ci_t:%.1f s_ratio:%.4f ehs_Pxy_percent:%+.2f ehs_T_percent:%+.2f "
+    "violations:%.0f " VFY_COST_COLUMNS;
+
+/* Relabel the plot's last curve: "ihs (3.5)" and what follows. */
+static void asl_label(asx_plot *pl, const vfy_row *row, const char *what)
+{
+    snprintf(pl->labels[pl->ncurves - 1], sizeof pl->labels[0], "%s (%g)%s",
+             vfy_row_text(row, "model") ? vfy_row_text(row, "model") : "",
+             vfy_values_get(&row->values, "initial"), what);
+}
+
+/* After the rows: E Figs. 1-4 of the slab. */
+static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    (void)r;
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
+    int rc = 0;
+    char name[96];
+    /* E Fig. 1: s (EHS: s'/beta) against t, and s'/s */
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i], *ihs = vfy_row_previous(run, row);
+        const double beta = sim_scene_collision_rate_factor(&row->solver);
+        const size_t M = row->res.outputs;
+        const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0 && ihs != NULL;
+        double *ci = NULL, *s = asx_own(&pl, asx_series(row, "s", &ci));
+        double *si = ehs ? asx_own(&pl, asx_series(ihs, "s", NULL)) : NULL;
+        double *ratio = ehs ? asx_own(&pl, malloc(M * sizeof *ratio)) : NULL;
+        vfy_xy_curve *c = s ? asx_curve(&pl, row, "", M, 0) : NULL;
+        if (c == NULL)
+            continue;
+        asl_label(&pl, row, "");
+        for (size_t k = 0; k < M; k++) {
+            s[k] /= beta;
+            ci[k] /= beta;
+            if (ratio && si)
+                ratio[k] = k > 0 && si[k] > 0.0 ? s[k] * beta / si[k] : NAN;
+        }
+        c->x = row->res.t;
+        c->y[0] = s;
+        c->ci[0] = ci;
+        c->y[1] = si ? ratio : NULL;
+    }
+    snprintf(name, sizeof name, "%s-collisions", run->c->name);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 1: collisions per particle s (EHS: "
+                       "s'/beta) against t, and s'/s", .xlabel = "t/tau0",
+                       .comment = run->comment, .npanels = 2,
+                       .ylabel = {"s, s'/beta", "s'/s"}, .ncurves = pl.ncurves,
+                       .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    /* E Fig. 2: the profiles u_x/(U/2), n/n and T/T against y/L at five times */
+    static const double times[] = {0.13, 0.5, 1.0, 1.5, 2.0};
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        const size_t L = row->solver.shear.layers, K = row->res.observables;
+        const double half_U = 0.5 * row->solver.shear.rate * row->solver.shear.length;
+        for (size_t q = 0; q < sizeof times / sizeof times[0]; q++) {
+            const size_t m = asl_output_at(row, times[q]);
+            double *a = asx_own(&pl, malloc(7 * L * sizeof *a));
+            vfy_xy_curve *c = a ? asx_curve(&pl, row, "", L, 0) : NULL;
+            if (c == NULL)
+                continue;
+            char what[32];
+            snprintf(what, sizeof what, " t=%g", times[q]);
+            asl_label(&pl, row, what);
+            static const int profile[3] = {SIM_PROFILE_UX, SIM_PROFILE_N, SIM_PROFILE_T};
+            for (size_t I = 0; I < L; I++) {
+                a[I] = ((double)I + 0.5) / (double)L - 0.5;
+                for (int p = 0; p < 3; p++) {
+                    const size_t col = m * K + SIM_OBS_PROFILE + (size_t)profile[p] * L + I;
+                    const double scale = p == 0 ? half_U : 1.0;
+                    a[(1 + p) * L + I] = row->res.mean[col] / scale;
+                    a[(4 + p) * L + I] = row->res.ci[col] / fabs(scale);
+                }
+            }
+            c->x = a;
+            for (int p = 0; p < 3; p++) {
+                c->y[p] = a + (1 + p) * L;
+                c->ci[p] = a + (4 + p) * L;
+            }
+        }
+    }
+    snprintf(name, sizeof name, "%s-profiles", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 2: the profiles at t/tau0 = 0.13, "
+                        "0.5, 1, 1.5, 2", .xlabel = "y/L", .comment = run->comment,
+                        .npanels = 3, .ylabel = {"u_x/(U/2)", "n/n", "T/T"},
+                        .ncurves = pl.ncurves, .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    /* E Fig. 3: the four central and the three top layers against s */
+    static const char *const centre[] = {"ux_centre", "n_centre", "T_centre"};
+    static const char *const top[] = {"ux_top", "n_top", "T_top"};
+    static const double plus[] = {1.0, 1.0, 1.0, 1.0};
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        const double beta = sim_scene_collision_rate_factor(&row->solver);
+        asx_dsmc(&pl, row, "s", beta, centre, plus, 3);
+        asl_label(&pl, row, " centre");
+        asx_dsmc(&pl, row, "s", beta, top, plus, 3);
+        asl_label(&pl, row, " top");
+    }
+    snprintf(name, sizeof name, "%s-layers", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 3: u_x/(U/2), n/n and T/T of the "
+                        "central and the top layers against s (EHS: s'/beta)", .xlabel = "s",
+                        .comment = run->comment, .logx = 1, .npanels = 3,
+                        .ylabel = {"u_x/(U/2)", "n/n", "T/T"}, .ncurves = pl.ncurves,
+                        .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+
+    /* E Fig. 4: T/T0 and the reduced stresses against s */
+    static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), stress, plus, 3);
+        asl_label(&pl, row, "");
+    }
+    snprintf(name, sizeof name, "%s-stress", run->c->name);
+    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 4: T/T0 and the reduced stresses "
+                        "against s (EHS: s'/beta)", .xlabel = "s", .comment = run->comment,
+                        .logx = 1, .npanels = 3,
+                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"},
+                        .ncurves = pl.ncurves, .curves = pl.curves};
+    rc |= vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+    return asx_figures_written(run, rc, msg, msglen);
+}
+
+#define ASL_PROGRESS                                                                   \
+    ASL_LABEL ": s(2) = {s_2:%.3f}, T_s/T0 = {T_ratio:%.1f}, -Pxy/nT = {Pxy_reduced:%.4f} " \
+              "({wall_s:%.1f} s)"
+
+const vfy_case_desc vfy_as_slab = {
+    .scene = "as-slab", .label = ASL_LABEL, .row_progress = ASL_PROGRESS,
+    .paper_rows = {.rows = slab_rows, .sets = "particles.ensembles=6"},
+    .quick_rows = {.rows = slab_rows, .sets = ASL_QUICK_SETS},
+    .metrics = slab_metrics, .checks = slab_checks, .columns = slab_columns,
+    .after_rows = as_slab_after,
+    .title = "{case}: paper E §IV A, Figs. 1-4, uniform shear flow in the Lees-Edwards slab "
+             "from E's two initial states, IHS and EHS ({size} sizes)",
+    .notes =
+        "{comment}.\n\nEach row is the slab of E §IV A (sim/slab.h): -L/2 < y < L/2 with "
+        "Lees-Edwards boundaries, L = 2.5 lambda0, alpha = 0.9, a tau0 = 4, M layers within "
+        "which the particles collide (and, for EHS, feel the layer's drag), dt = 1e-3 tau0 "
+        "sqrt(T0/T) at paper sizes, from E Eq. (3.5) (a Maxwellian at rest, uniform) or E Eq. "
+        "(3.6) (a shell about the flow U (cos(pi y/L) - 2/pi) with density n (1 + sin(2 pi "
+        "y/L)/2)); N realizations of n particles (paper: 6 of 10^4 in 50 layers, E: 3). A "
+        "layer's candidates are N_I (N_I - 1) pairs (E Eq. 4.13 prints N_I^2, a +1/N_I bias; "
+        "shear.candidates = paper has it). T and P are taken against each particle's layer "
+        "velocity (E Eqs. 4.6-4.9). s_013 .. s_2: s at t/tau0 = 0.13 .. 2 against the values "
+        "E prints for IHS (judged to half a unit of their last digit plus the half-width, "
+        "Student's t over the realizations). *_s4: at the first output with s (EHS: s'/beta) "
+        ">= 4, where E finds the profiles linear and uniform: the slope of u_x(y) over a, the "
+        "top three layers' u_x over U/2 (the linear profile gives 1 - 3/M), the four central "
+        "and three top layers' n/n and T/T (judged within 5%). T_top_peak, n_top_dip: their "
+        "extremes before s = 4 (E: the temperature difference peaks at s about 0.15, the "
+        "density difference after about one collision per particle). The steady values are "
+        "time averages over t >= steady.from (s > 50): -Pxy/nT, (Pxx - Pyy)/nT and T_s/T0 "
+        "against E's 0.33, 0.24 and 147. s_ratio: s'/(beta s) at the end, EHS against the IHS "
+        "row of its initial state (E: s'/s about beta = 0.95). Figures {case}-collisions (E "
+        "Fig. 1), -profiles (Fig. 2), -layers (Fig. 3), -stress (Fig. 4). Total wall time "
+        "{wall_total:%.1f} s."};
