@@ -67,6 +67,15 @@ gdsmc_add_cli_test(cli_verify_as_distribution_wrong_sign 1
                    verify --suite quick --case as-distribution --solver-set shear.rate=-4
                    --out ${CMAKE_CURRENT_BINARY_DIR}/as-distribution-wrong-sign)
 set_tests_properties(cli_verify_as_distribution_wrong_sign PROPERTIES LABELS verification)
+# The slab's Lees-Edwards wrap with the wrong sign (a particle leaving through
+# the top re-enters with v_x + aL): shear.rate enters the slab's dynamics only
+# there, so --solver-set shear.rate=-4 is that wrap; the shear stress turns
+# over and the steady -Pxy/nT (E: 0.33) fails
+gdsmc_add_cli_test(cli_verify_as_slab_wrong_wrap 1
+                   "\nFAIL  as-slab ihs \\(3\\.5\\) -Pxy/nT = -0\\.3"
+                   verify --suite quick --case as-slab --solver-set shear.rate=-4
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/as-slab-wrong-wrap)
+set_tests_properties(cli_verify_as_slab_wrong_wrap PROPERTIES LABELS verification)
 gdsmc_add_cli_test(cli_verify_unknown_case 2 "unknown case 'grw-ex9'" verify --case grw-ex9)
 # at t = 0: T_exact = 1, E T_n = 1 - 1/n = 63/64, E T_raw = 1
 gdsmc_add_cli_test(cli_reference_ex3 0 "\nt,T_exact,T_finite_n,T_raw_finite_n\n0,1,0\\.984375,1\n0\\.1,1\\.12042752"

@@ -1351,7 +1351,7 @@ const vfy_case_desc vfy_as_distribution = {
 /* E §IV A: s at t/tau0 = 0.13, 0.5, 1, 1.5, 2 (IHS), and the steady state */
 #define ASL_E35 ";$s_013_paper=0.08;$s_05_paper=0.4;$s_1_paper=1.1;$s_15_paper=2.1;$s_2_paper=3.4"
 #define ASL_E36 ";$s_013_paper=0.09;$s_05_paper=0.5;$s_1_paper=1.5;$s_15_paper=2.8;$s_2_paper=4.6"
-#define ASL_E_STEADY ";$Pxy_paper=0.33;$N1_paper=0.24;$T_ratio_paper=147"
+#define ASL_E_STEADY ";$Pxy_reduced_paper=0.33;$N1_paper=0.24;$T_ratio_paper=147"
 static const char *const slab_rows[] = {
     ASL_ROW("ihs", "0", "3.5", ASL_E35 ASL_E_STEADY), ASL_ROW("ehs", "1", "3.5", ""),
     ASL_ROW("ihs", "0", "3.6", ASL_SHELL ASL_E36 ASL_E_STEADY),
@@ -1704,3 +1704,136 @@ const vfy_case_desc vfy_as_slab = {
         "row of its initial state (E: s'/s about beta = 0.95). Figures {case}-collisions (E "
         "Fig. 1), -profiles (Fig. 2), -layers (Fig. 3), -stress (Fig. 4). Total wall time "
         "{wall_total:%.1f} s."};
+
+/* ============================================================= as-slab-vs-homogeneous */
+
+/* E Fig. 9: the slab from both initial states against the homogeneous run
+ * (as-steady's row at alpha = 0.9, IHS, a tau0 = 4), first; in the
+ * hydrodynamic regime the three agree. */
+#define ASV_HOM(SETS)                                                                  \
+    "homogeneous: scene=as;collisions.restitution=0.9;collisions.model=ihs;shear.rate=4;" \
+    "$model=ihs;$initial=3.12;" SETS
+#define ASV_SLAB(INIT, SETS) "slab (" INIT "): scene=as-slab;$model=ihs;$initial=" INIT SETS
+static const char *const vs_rows[] = {
+    ASV_HOM(AS_HOT_LONG), ASV_SLAB("3.5", ";particles.ensembles=6"),
+    ASV_SLAB("3.6", ";particles.ensembles=6" ASL_SHELL), NULL};
+static const char *const vs_quick_rows[] = {
+    ASV_HOM(AS_QUICK_SETS ";scene.t_end=16;scene.outputs=81;steady.from=12"),
+    ASV_SLAB("3.5", ";" ASL_QUICK_SETS), ASV_SLAB("3.6", ";" ASL_QUICK_SETS ASL_SHELL), NULL};
+#define ASV_NAME "{case} {label} "
+
+/* The s windows of the hydrodynamic regime compared (E Fig. 9: from about one
+ * collision per particle the stage is hydrodynamic; after s = 4 the slab's
+ * profiles are uniform). */
+static const double asv_windows[3] = {10.0, 20.0, 40.0};
+
+/* Series a averaged over the outputs with s in window x (0: [10, 20), 1: [20,
+ * 40)); b = "ci": the mean of its half-widths there (an upper bound of the
+ * average's, the outputs being positively correlated). */
+static double asv_window(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    double *ci = NULL, *v = asx_series(row, m->a, &ci), *s = asx_series(row, "s", NULL);
+    double sum = 0.0, count = 0.0;
+    const int w = (int)m->x;
+    for (size_t k = 0; v && s && k < row->res.outputs; k++)
+        if (s[k] >= asv_windows[w] && s[k] < asv_windows[w + 1]) {
+            sum += m->b ? ci[k] : v[k];
+            count += 1.0;
+        }
+    free(v);
+    free(s);
+    return count > 0.0 ? sum / count : NAN;
+}
+
+/* |q - q_hom| over the quadrature sum of the half-widths q_ci_t, against the
+ * homogeneous (first) row; NAN on it. */
+static double asv_z_homogeneous(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    if (row->index == 0)
+        return NAN;
+    const vfy_row *hom = &run->rows[0];
+    char ci[40];
+    snprintf(ci, sizeof ci, "%s_ci_t", m->a);
+    return vfy_z_pair(vfy_values_get(&row->values, m->a), vfy_values_get(&row->values, ci),
+                      vfy_values_get(&hom->values, m->a), vfy_values_get(&hom->values, ci));
+}
+
+#define ASV_WINDOW(Q, S, W)                                                          \
+    {Q "_w" #W, asv_window, S, NULL, W}, {Q "_w" #W "_ci", asv_window, S, "ci", W},          \
+        STUDENT(Q "_w" #W), {"z_" Q "_w" #W, asv_z_homogeneous, Q "_w" #W, NULL, 0}
+#define ASV_STEADY(Q) STUDENT(Q), {"z_" Q, asv_z_homogeneous, Q, NULL, 0}
+static const vfy_metric vs_metrics[] = {
+    {"T_ratio", as_T_ratio, "T", NULL, 0}, {"T_ratio_ci", as_T_ratio, "T_ci", NULL, 0},
+    ASV_STEADY("Pxy_reduced"), ASV_STEADY("N1"), ASV_STEADY("N2"), ASV_STEADY("a2"),
+    ASV_STEADY("T_ratio"),
+    ASV_WINDOW("Pxy", "Pxy_reduced", 0), ASV_WINDOW("Pxy", "Pxy_reduced", 1),
+    ASV_WINDOW("N1", "N1", 0), ASV_WINDOW("N1", "N1", 1),
+    ASV_WINDOW("T", "T_ratio", 0), ASV_WINDOW("T", "T_ratio", 1),
+    {NULL, NULL, NULL, NULL, 0}};
+
+#define ASV_AGREE(WHAT, Z)                                                            \
+    {.name = ASV_NAME WHAT " as the homogeneous run's", .rule = vfy_rule_range, .value = Z, \
+     .lo = 0.0, .hi = 1.0, .guard = {vfy_guard_only_at_least, "index", NULL, 1.0, NULL}}
+static const vfy_check_spec vs_checks[] = {
+    {.name = ASV_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    ASV_AGREE("steady -Pxy/nT", "z_Pxy_reduced"), ASV_AGREE("steady (Pxx - Pyy)/nT", "z_N1"),
+    ASV_AGREE("steady (Pzz - Pyy)/nT", "z_N2"), ASV_AGREE("steady a2", "z_a2"),
+    ASV_AGREE("steady T_s/T0", "z_T_ratio"),
+    ASV_AGREE("-Pxy/nT over 10 <= s < 20", "z_Pxy_w0"),
+    ASV_AGREE("-Pxy/nT over 20 <= s < 40", "z_Pxy_w1"),
+    ASV_AGREE("(Pxx - Pyy)/nT over 10 <= s < 20", "z_N1_w0"),
+    ASV_AGREE("(Pxx - Pyy)/nT over 20 <= s < 40", "z_N1_w1"),
+    {.name = NULL}};
+
+static const char vs_columns[] =
+    "initial:%g Pxy_reduced:%.4f Pxy_reduced_ci_t:%.4f z_Pxy_reduced:%.2f N1:%.4f N1_ci_t:%.4f "
+    "z_N1:%.2f N2:%.4f z_N2:%.2f a2:%.4f a2_ci_t:%.4f z_a2:%.2f T_ratio:%.1f T_ratio_ci_t:%.1f "
+    "z_T_ratio:%.2f Pxy_w0:%.4f z_Pxy_w0:%.2f Pxy_w1:%.4f z_Pxy_w1:%.2f N1_w0:%.4f "
+    "z_N1_w0:%.2f N1_w1:%.4f z_N1_w1:%.2f T_w0:%.1f T_w1:%.1f violations:%.0f "
+    VFY_COST_COLUMNS;
+
+/* After the rows: E Fig. 9, T/T0 and the reduced stresses against s. */
+static sim_status as_vs_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    (void)r;
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
+    static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
+    static const double plus[] = {1.0, 1.0, 1.0};
+    for (size_t i = 0; i < run->nrows; i++) {
+        asx_dsmc(&pl, &run->rows[i], "s", 1.0, stress, plus, 3);
+        snprintf(pl.labels[pl.ncurves - 1], sizeof pl.labels[0], "%.60s", run->rows[i].label);
+    }
+    char name[96];
+    snprintf(name, sizeof name, "%s-stress", run->c->name);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 9: T/T0 and the reduced stresses "
+                       "against s, IHS at alpha = 0.9, a tau0 = 4: homogeneous and the slab",
+                       .xlabel = "s", .comment = run->comment, .logx = 1, .npanels = 3,
+                       .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"},
+                       .ncurves = pl.ncurves, .curves = pl.curves};
+    const int rc = vfy_write_xy(run->o, &f);
+    asx_plot_free(&pl);
+    return asx_figures_written(run, rc, msg, msglen);
+}
+
+const vfy_case_desc vfy_as_slab_vs_homogeneous = {
+    .scene = "as", .label = "{case} {label}",
+    .row_progress = "{case} {label}: T_s/T0 = {T_ratio:%.1f}, -Pxy/nT = {Pxy_reduced:%.4f} "
+                    "({wall_s:%.1f} s)",
+    .paper_rows = {.rows = vs_rows}, .quick_rows = {.rows = vs_quick_rows},
+    .metrics = vs_metrics, .checks = vs_checks, .columns = vs_columns,
+    .after_rows = as_vs_after,
+    .title = "{case}: paper E Fig. 9, the slab from both initial states against the "
+             "homogeneous run, IHS at alpha = 0.9, a tau0 = 4 ({size} sizes)",
+    .notes =
+        "{comment}.\n\nRow 1 is as-steady's homogeneous run (Lagrangian frame, E Eq. 3.12's "
+        "local equilibrium); rows 2-3 are as-slab's IHS rows from E Eqs. (3.5) and (3.6). The "
+        "steady values are time averages over t >= steady.from of each realization, their "
+        "half-widths Student's t over them; z_*: |slab - homogeneous| over the quadrature sum "
+        "of the half-widths (judged <= 1). *_w0, *_w1: the means over the outputs with 10 <= "
+        "s < 20 and 20 <= s < 40 (the hydrodynamic stage, after the slab's profiles are "
+        "uniform at s about 4), compared at equal s, with the mean of the outputs' half-widths "
+        "(an upper bound of the average's); T_w*: T/T0 there, reported (T carries the "
+        "history of the kinetic stage, which depends on the initial state). Figure "
+        "{case}-stress (E Fig. 9). Total wall time {wall_total:%.1f} s."};

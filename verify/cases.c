@@ -26,6 +26,7 @@ extern const vfy_case_desc vfy_as_steady;
 extern const vfy_case_desc vfy_as_transient;
 extern const vfy_case_desc vfy_as_distribution;
 extern const vfy_case_desc vfy_as_slab;
+extern const vfy_case_desc vfy_as_slab_vs_homogeneous;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
@@ -81,6 +82,9 @@ static const vfy_case cases[] = {
      " and F(C) at alpha = 0.9 and 0.5, IHS and EHS, beside BGK", 1, &vfy_as_distribution},
     {"as-slab", "as", "paper E §IV A, Figs. 1-4: the Lees-Edwards slab from E's two initial"
      " states, IHS and EHS: s(t), profiles, steady stresses", 1, &vfy_as_slab},
+    {"as-slab-vs-homogeneous", "as", "paper E Fig. 9: the slab from both initial states"
+     " against the homogeneous run, IHS at alpha = 0.9, a tau0 = 4", 1,
+     &vfy_as_slab_vs_homogeneous},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
