@@ -159,7 +159,7 @@ gdsmc_add_cli_test(cli_sonine_needs_value 2 "^gdsmc sonine: option '--alpha' nee
                    sonine --alpha)
 gdsmc_add_cli_test(cli_sonine_unknown_option 2 "^gdsmc sonine: unknown option '--beta'"
                    sonine --alpha 0.2 --beta 1)
-gdsmc_add_cli_test(cli_bench_small 0 "\\| hs-relax \\| 1000 \\|"
+gdsmc_add_cli_test(cli_bench_small 0 "\\| hs-relax \\| 1000 \\|.*\\| as-slab \\| 10000 \\|"
                    bench --max-n 1000 --seconds 0.05)
 gdsmc_add_cli_test(cli_bench_bad_n 2 "--max-n '10': allowed 1000 <= N" bench --max-n 10)
 # found by the fuzzer: a huge output count used to be accepted (and scanned)

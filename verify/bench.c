@@ -333,17 +333,12 @@ static sim_status hs_relax_rows(const vfy_bench_options *o, size_t n, double *fl
     return SIM_OK;
 }
 
-/* (d) The time-step scheme on paper C's gas (ms-white-noise.ini: white noise,
- * alpha = 0.5, h = 0.05, Strang), one system of n = 2e5 particles without
- * steady-state observers, for about o->seconds; beside the floor at n. */
-static sim_status timestep_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
-                                size_t msglen)
+/* One system of scene s at n particles, without steady-state observers, for
+ * whole output intervals adding up to about o->seconds; beside it the floor
+ * at n: rows floor and `label` (accepted collisions per second). */
+static sim_status timed_scene_rows(const vfy_bench_options *o, sim_scene s, size_t n,
+                                   const char *label, vfy_table *t, char *msg, size_t msglen)
 {
-    const size_t n = 200000;
-    sim_scene s;
-    sim_status status = load_scene(o, "ms-white-noise", &s, msg, msglen);
-    if (status != SIM_OK)
-        return status;
     const double interval = s.t_end / (double)(s.outputs - 1);
     s.particles.n = n;
     s.particles.ensembles = 1;
@@ -352,7 +347,7 @@ static sim_status timestep_rows(const vfy_bench_options *o, vfy_table *t, char *
     s.outputs = 3;
     sim_error err = {{0}, {0}};
     bench_row row = {0}, floor_row = {0};
-    status = run_engine(&s, 1, &row, &err);
+    sim_status status = run_engine(&s, 1, &row, &err);
     if (status == SIM_OK) {   /* whole output intervals for about o->seconds */
         double intervals = ceil(2.0 * o->seconds / fmax(row.cpu, 1e-6));
         intervals = fmin(fmax(intervals, 2.0), 1e5);
@@ -374,9 +369,35 @@ static sim_status timestep_rows(const vfy_bench_options *o, vfy_table *t, char *
     say(o, "floor", n, &floor_row);
     add_row(t, "floor", n, &floor_row, floor_rate, 0.0);
     row.events = row.accepted;
-    say(o, "ms-timestep", n, &row);
-    add_row(t, "ms-timestep", n, &row, floor_rate, 0.0);
+    say(o, label, n, &row);
+    add_row(t, label, n, &row, floor_rate, 0.0);
     return SIM_OK;
+}
+
+/* (d) The time-step scheme on paper C's gas (ms-white-noise.ini: white noise,
+ * alpha = 0.5, h = 0.05, Strang), one system of n = 2e5 particles. */
+static sim_status timestep_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
+                                size_t msglen)
+{
+    sim_scene s;
+    sim_status status = load_scene(o, "ms-white-noise", &s, msg, msglen);
+    return status == SIM_OK ? timed_scene_rows(o, s, 200000, "ms-timestep", t, msg, msglen)
+                            : status;
+}
+
+/* (e) Paper E's Lees-Edwards slab (as-slab.ini: IHS, alpha = 0.9, a tau0 = 4,
+ * 50 layers, dt = 1e-3 tau0 sqrt(T0/T)) from equilibrium at n = 1e4 (E's N)
+ * and, when o->max_n allows, 1e6: each step streams, sorts and observes the
+ * layers of every particle while about n/1000 of them collide, so its
+ * floor_ratio measures what the per-step passes cost beside the collisions. */
+static sim_status slab_rows(const vfy_bench_options *o, vfy_table *t, char *msg, size_t msglen)
+{
+    sim_scene s;
+    sim_status status = load_scene(o, "as-slab", &s, msg, msglen);
+    for (size_t n = 10000; status == SIM_OK && n <= 1000000 && (n == 10000 || n <= o->max_n);
+         n *= 100)
+        status = timed_scene_rows(o, s, n, "as-slab", t, msg, msglen);
+    return status;
 }
 
 /* One ensemble run of the engine on `threads` OpenMP threads. */
@@ -465,6 +486,8 @@ sim_status vfy_bench_run(const vfy_bench_options *o, vfy_table *t, char *msg, si
         status = paper_rows(o, "brs-ex4", 1024, floor_rate_1000, t, msg, msglen);
     if (status == SIM_OK)
         status = timestep_rows(o, t, msg, msglen);
+    if (status == SIM_OK)
+        status = slab_rows(o, t, msg, msglen);
     if (status == SIM_OK)
         status = thread_rows(o, t, msg, msglen);
     return status;
