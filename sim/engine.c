@@ -41,6 +41,13 @@
  * velocity bound is recomputed from scratch at each output time and grows
  * (sim_run_cover) whenever a stage moves a velocity beyond it.
  *
+ * The Lees-Edwards slab (shear.boundary = lees-edwards, slab.h) is the
+ * time-step scheme with positions: its own ordered stages per step (streaming
+ * with the wrap, the sort into layers, the layer fields, collisions within
+ * layers) replace the homogeneous events and flows, and its observer takes T
+ * and P against the layers' velocities; the steady observers see those
+ * peculiar velocities.
+ *
  * Steady-state observers (steady.h), when the scene has [steady], sample at
  * the output times t >= steady.from in either scheme, after the standard
  * observables; pair sampling uses its own random substream.

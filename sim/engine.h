@@ -34,8 +34,9 @@ void sim_counts_add(sim_counts *to, const sim_counts *from);
 /* Build the engine for a validated scene: the scheme and the effects it names,
  * each resolved once.  Returns SIM_EUNSUPPORTED, naming the scene key, for a
  * valid combination that no scheme implements yet (the time-step scheme:
- * hard-sphere collisions and the three thermostats, no background; the jump
- * scheme: white-noise heating only), SIM_EINVAL for values the parser should
+ * hard-sphere collisions and the three thermostats, no background, and the
+ * Lees-Edwards slab of hard spheres; the jump scheme: white-noise heating
+ * only, no slab), SIM_EINVAL for values the parser should
  * have refused, SIM_ENOMEM. */
 sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err);
 void sim_engine_free(sim_engine *engine);

@@ -1680,7 +1680,7 @@ const vfy_case_desc vfy_as_slab = {
     .quick_rows = {.rows = slab_rows, .sets = ASL_QUICK_SETS},
     .metrics = slab_metrics, .checks = slab_checks, .columns = slab_columns,
     .after_rows = as_slab_after,
-    .title = "{case}: paper E §IV A, Figs. 1-4, uniform shear flow in the Lees-Edwards slab "
+    .title = "{case}: paper E Sec. IV A, Figs. 1-4, uniform shear flow in the Lees-Edwards slab "
              "from E's two initial states, IHS and EHS ({size} sizes)",
     .notes =
         "{comment}.\n\nEach row is the slab of E §IV A (sim/slab.h): -L/2 < y < L/2 with "

@@ -80,7 +80,7 @@ static const vfy_case cases[] = {
      &vfy_as_transient},
     {"as-distribution", "as", "paper E Figs. 13, 17-18: steady R0..R3, the marginals g_x, g_y"
      " and F(C) at alpha = 0.9 and 0.5, IHS and EHS, beside BGK", 1, &vfy_as_distribution},
-    {"as-slab", "as", "paper E §IV A, Figs. 1-4: the Lees-Edwards slab from E's two initial"
+    {"as-slab", "as", "paper E Sec. IV A, Figs. 1-4: the Lees-Edwards slab from E's two initial"
      " states, IHS and EHS: s(t), profiles, steady stresses", 1, &vfy_as_slab},
     {"as-slab-vs-homogeneous", "as", "paper E Fig. 9: the slab from both initial states"
      " against the homogeneous run, IHS at alpha = 0.9, a tau0 = 4", 1,
