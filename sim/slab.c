@@ -22,7 +22,8 @@ struct sim_slab_params {
     double alpha;         /* the collisions' restitution (1 for EHS) */
     double kappa;         /* 2 pi gamma C beta M/N: a layer's candidate rate per ordered
                              pair and unit of w_I */
-    int paper_pairs;      /* N_I^2 instead of N_I (N_I - 1) */
+    size_t pair_offset;   /* a layer's ordered pairs are N_I (N_I - pair_offset): 1, or 0
+                             for E's N_I^2 (shear.candidates = paper) */
     double zeta_factor;   /* EHS: zeta_I = zeta_factor sqrt(T_I/m) n_I/n; 0 for IHS */
     double mass;
     slab_stage *stages[SLAB_STAGES];
@@ -160,8 +161,7 @@ static void stage_collide(const sim_slab_params *p, sim_slab *s, sim_run *run, d
         double R = s->radius[I];
         if (count < 2 || !(R > 0.0))
             continue;
-        const double pairs = p->paper_pairs ? (double)count * (double)count
-                                            : (double)count * (double)(count - 1);
+        const double pairs = (double)count * (double)(count - p->pair_offset);
         const double *u = s->u[I];
         double rate = p->kappa * pairs * 2.0 * R;
         for (double t = sim_rng_exponential(rng, rate); t < h;
@@ -222,7 +222,7 @@ sim_status sim_slab_params_create(const sim_scene *scene, sim_slab_params **para
     p->alpha = ehs ? 1.0 : alpha;
     p->kappa = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
                * sim_scene_collision_rate_factor(scene) * M / (double)scene->particles.n;
-    p->paper_pairs = scene->shear.candidates == SIM_SLAB_PAIRS_PAPER;
+    p->pair_offset = scene->shear.candidates == SIM_SLAB_PAIRS_PAPER ? 0 : 1;
     /* zeta0 = (2/(3 sqrt(pi))) (1 - alpha^2) sqrt(2 T/m)/lambda0 (effect_drag.c) */
     p->zeta_factor = ehs ? 2.0 / (3.0 * sqrt(M_PI)) * (1.0 - alpha * alpha) * sqrt(2.0)
                                / sim_scene_mean_free_path(scene)
@@ -253,7 +253,7 @@ size_t sim_slab_bytes(const sim_slab_params *params, size_t n)
     /* y, the second v and y, the layer index, the peculiar velocities */
     return n * (sizeof(double) + sizeof(double[3]) + sizeof(double) + sizeof(uint32_t)
                 + sizeof(double[3]))
-           + (params->layers + 1) * sizeof(size_t) + params->layers * 7 * sizeof(double);
+           + (params->layers + 1) * sizeof(size_t) + params->layers * 6 * sizeof(double)   /* u, theta, radius, pxy */;
 }
 
 sim_status sim_slab_create(const sim_slab_params *params, sim_particles *p, sim_slab **slab,
@@ -376,9 +376,8 @@ void sim_slab_observe(const sim_slab_params *p, sim_slab *s, const sim_run *run,
     double ux, th, share;
     /* the layers whose centres lie within 2 dy of y = 0: for even M the four central
      * ones, for odd M five */
-    const size_t centre_lo = M % 2 == 0 ? (M >= 4 ? M / 2 - 2 : 0) : (M >= 5 ? M / 2 - 2 : 0);
-    const size_t centre_hi = M % 2 == 0 ? (M / 2 + 2 < M ? M / 2 + 2 : M)
-                                        : (M / 2 + 3 < M ? M / 2 + 3 : M);
+    const size_t centre_lo = M / 2 >= 2 ? M / 2 - 2 : 0;
+    const size_t centre_hi = M / 2 + 2 + M % 2 < M ? M / 2 + 2 + M % 2 : M;
     layer_average(s, centre_lo, centre_hi, &ux, &th, &share, n);
     row[SIM_OBS_UX_CENTRE] = ux / half_U;
     row[SIM_OBS_N_CENTRE] = share * (double)M / (double)(centre_hi - centre_lo);
