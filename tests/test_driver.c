@@ -213,6 +213,58 @@ static void test_templates(void **state)
     free_run(&run);
 }
 
+/* Paper A's tail exponent: y_k = ln(ln f_1 - ln f_k) against ln(r_k - r_1)
+ * has slope exactly b for f_k = f_1 exp(-a (r_k - r_1)^b); a tail of another
+ * order gives another slope; the clean range ends at the first noisy shell;
+ * the first shell's error enters b's standard error. */
+static void test_tail_exponent(void **state)
+{
+    (void)state;
+    enum { BINS = 64 };
+    double r[BINS], f[BINS], ci[BINS];
+    for (size_t b10 = 10; b10 <= 15; b10 += 5) {
+        const double b = 0.1 * (double)b10;
+        for (size_t k = 0; k < BINS; k++) {
+            r[k] = 0.1 * (double)(k + 1);
+            f[k] = 0.3 * exp(-1.7 * pow(r[k] - r[0], b));
+            ci[k] = 3.2 * 0.01 * f[k];   /* 1% standard errors */
+        }
+        ci[0] = 0.0;
+        vfy_tail_exponent t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+        assert_int_equal(t.used, BINS - 19);   /* r = 2.0 ... 6.4 */
+        assert_close(t.r_first, 2.0, 1e-12, 0);
+        assert_close(t.b, b, 1e-9, 0);
+        assert_true(t.b_se < 1e-3);
+        /* a Gaussian tail, b = 2, is not either */
+        for (size_t k = 1; k < BINS; k++) {
+            f[k] = 0.3 * exp(-1.7 * pow(r[k] - r[0], 2.0));
+            ci[k] = 3.2 * 0.01 * f[k];
+        }
+        t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+        assert_close(t.b, 2.0, 1e-9, 0);
+    }
+    /* a shell with a 20% error ends the clean range before it */
+    ci[40] = 3.2 * 0.2 * f[40];
+    vfy_tail_exponent t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+    assert_int_equal(t.used, 21);   /* r = 2.0 ... 4.0 */
+    assert_close(t.r_last, 4.0, 1e-12, 0);
+    /* the first shell's 5% error widens the standard error of b */
+    ci[0] = 3.2 * 0.05 * f[0];
+    vfy_tail_exponent wide = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+    assert_close(wide.b, 2.0, 1e-9, 0);
+    assert_true(wide.b_se > 2.0 * t.b_se);
+    /* noise: the slope moves by about its standard error */
+    for (size_t k = 1; k < BINS; k++)
+        f[k] *= 1.0 + 0.01 * ((k % 3 == 0) ? 1.0 : -0.5);
+    ci[0] = 0.0;
+    t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+    assert_true(fabs(t.b - 2.0) < 3.0 * t.b_se);
+    assert_true(t.chi2_dof > 0.1);
+    /* fewer than 3 shells: no fit */
+    t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 6.25, 0.1, 3.2);
+    assert_true(isnan(t.b));
+}
+
 /* Paper C's tail fit recovers A and K of f = K exp(-A c^1.5) exactly, and
  * moves with a wrong tail; the arithmetic adapters do what they say. */
 static void test_tail_fit_and_adapters(void **state)
@@ -616,6 +668,7 @@ int main(void)
         cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
         cmocka_unit_test(test_reference_registry), cmocka_unit_test(test_rows_variants_adjust),
+        cmocka_unit_test(test_tail_exponent),
         cmocka_unit_test(test_tail_fit_and_adapters),
         cmocka_unit_test(test_batches_and_case_checks),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),

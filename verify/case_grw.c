@@ -13,12 +13,15 @@
  * every output time), and both closures of SPEC §3 Ex 5.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "case_report.h"
 #include "driver.h"
+#include "figure.h"
 #include "metrics.h"
+#include "steady.h"
 #include "tolerances.h"
 
 
@@ -191,3 +194,229 @@ const vfy_case_desc vfy_grw_ex5 = {
              "closure {diff_maxwell:%+.5f}, minus the first-Sonine closure (a2 from C.10) "
              "{diff_sonine:%+.5f}. Largest chi^2 of the O(1/n) fit over the output times: "
              "{chi2_max:%.2f} ({rows} rows). Total wall time {wall_total:%.1f} s."};
+
+/* grw-ex6, grw-ex7, grw-ex8 (SPEC §3 Ex 6-8, paper A §4.3): the steady tail
+ * of the white-noise heated gas, alpha = 0.1, beta = 30, gamma = 16, C =
+ * 1/(4 pi), for Maxwell molecules, hard spheres and VHS lambda = 1/2.  The
+ * histogram is the steady observers' (steady.h): the reduced speed c = |C|/v0,
+ * v0 = sqrt(2T/m), in K = 128 shells to c_max = R/v0(T_steady) (R = 40, 16,
+ * 24 as the paper's), time-averaged per ensemble over the steady output
+ * times.  The exponent b is the slope of paper A's y_k = ln(ln f_1 - ln f_k)
+ * against x_k = ln(r_k - r_1) (vfy_fit_tail_exponent, anchored at the first
+ * shell as the paper's figures are); it is scale-free, so reduced and
+ * absolute speeds give the same b.  b_far is the same fit from c = 3.5 on;
+ * b_anchored anchors at the first shell of the clean range (exact for b = 1
+ * with any prefactor constant). */
+enum { TAIL_B, TAIL_B_SE, TAIL_B_2SE, TAIL_CHI2, TAIL_C_FIRST, TAIL_C_LAST, TAIL_SHELLS,
+       TAIL_B_FAR, TAIL_B_FAR_SE, TAIL_B_ANCHORED, TAIL_B_ANCHORED_SE, TAIL_B_EXPECTED };
+
+/* The row's histogram: upper edges r[k], f[k], ci[k] (bins each). */
+static int tail_histogram(const vfy_row *row, double **buf)
+{
+    const sim_scene *s = &row->solver;
+    const size_t bins = s->steady.bins;
+    if (bins == 0 || row->res.nsteady < SIM_STEADY_BIN0 + bins
+        || (*buf = malloc(3 * bins * sizeof **buf)) == NULL)
+        return -1;
+    double *r = *buf, *f = r + bins, *ci = f + bins;
+    for (size_t k = 0; k < bins; k++) {
+        r[k] = sim_steady_bin_lower(s, k + 1);
+        f[k] = sim_result_steady_mean(&row->res, SIM_STEADY_BIN0 + k);
+        ci[k] = sim_result_steady_ci(&row->res, SIM_STEADY_BIN0 + k);
+    }
+    return 0;
+}
+
+/* The paper's fit anchored at shell k0 from reduced speed c_lo on. */
+static vfy_tail_exponent tail_fit(const vfy_row *row, size_t k0, double c_lo)
+{
+    double *h = NULL;
+    vfy_tail_exponent t = {NAN, NAN, NAN, NAN, NAN, 0};
+    if (tail_histogram(row, &h) == 0) {
+        const size_t bins = row->solver.steady.bins;
+        t = vfy_fit_tail_exponent(h, h + bins, h + 2 * bins, bins, k0, c_lo,
+                                  VFY_TOL_TAILS_REL_MAX, SIM_LAMBDA_P);
+    }
+    free(h);
+    return t;
+}
+
+static double tail_metric(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    const int which = (int)m->x;
+    if (which == TAIL_B_EXPECTED)
+        return 1.0 + 0.5 * row->solver.collisions.exponent;
+    const vfy_tail_exponent t = tail_fit(row, 0, VFY_TOL_TAILS_C_LO);
+    if (which == TAIL_B_FAR || which == TAIL_B_FAR_SE) {
+        const vfy_tail_exponent far = tail_fit(row, 0, VFY_TOL_TAILS_C_FAR);
+        return which == TAIL_B_FAR ? far.b : far.b_se;
+    }
+    if (which == TAIL_B_ANCHORED || which == TAIL_B_ANCHORED_SE) {
+        if (t.used < 3)
+            return NAN;
+        /* the shell whose upper edge is r_first is the anchor */
+        const double delta = row->solver.steady.c_max / (double)row->solver.steady.bins;
+        const size_t k0 = (size_t)lround(t.r_first / delta) - 1;
+        const vfy_tail_exponent a = tail_fit(row, k0, 0.0);
+        return which == TAIL_B_ANCHORED ? a.b : a.b_se;
+    }
+    switch (which) {
+    case TAIL_B:
+        return t.b;
+    case TAIL_B_SE:
+        return t.b_se;
+    case TAIL_B_2SE:
+        return VFY_TOL_TAILS_Z * t.b_se;
+    case TAIL_CHI2:
+        return t.chi2_dof;
+    case TAIL_C_FIRST:
+        return t.r_first;
+    case TAIL_C_LAST:
+        return t.r_last;
+    default:
+        return (double)t.used;
+    }
+}
+
+#define TAIL_METRIC(NAME, WHICH) {NAME, tail_metric, NULL, NULL, WHICH}
+static const vfy_metric tails_metrics[] = {
+    TAIL_METRIC("b", TAIL_B), TAIL_METRIC("b_se", TAIL_B_SE), TAIL_METRIC("b_2se", TAIL_B_2SE),
+    TAIL_METRIC("chi2_dof", TAIL_CHI2), TAIL_METRIC("c_first", TAIL_C_FIRST),
+    TAIL_METRIC("c_last", TAIL_C_LAST), TAIL_METRIC("shells", TAIL_SHELLS),
+    TAIL_METRIC("b_far", TAIL_B_FAR), TAIL_METRIC("b_far_se", TAIL_B_FAR_SE),
+    TAIL_METRIC("b_anchored", TAIL_B_ANCHORED), TAIL_METRIC("b_anchored_se", TAIL_B_ANCHORED_SE),
+    TAIL_METRIC("b_expected", TAIL_B_EXPECTED), {NULL, NULL, NULL, NULL, 0}};
+
+#define TAILS_JUDGED                                                                   \
+    {vfy_guard_at_least, "n", NULL, VFY_TOL_TAILS_JUDGED_N,                            \
+     "n = {n} < 1e6: the clean range ends at c = {c_last:%.2f}, short of the tail; b is " \
+     "judged at paper sizes"}
+#define TAILS_CHECKS                                                                   \
+    {.name = "{case} b = 1 + lambda/2 within two standard errors", .rule = vfy_rule_absolute, \
+     .value = "b", .expected = "b_expected", .plus = "b_2se", .guard = TAILS_JUDGED},  \
+        {.name = "{case} |b - (1 + lambda/2)| <= 0.05", .rule = vfy_rule_absolute,     \
+         .value = "b", .expected = "b_expected", .tol = VFY_TOL_TAILS_B_ABS,           \
+         .guard = TAILS_JUDGED},                                                       \
+        {.name = "{case} standard error of b <= 0.03", .rule = vfy_rule_range,         \
+         .value = "b_se", .lo = 0.0, .hi = VFY_TOL_TAILS_B_SE, .guard = TAILS_JUDGED}, \
+        {.name = "{case} majorant violations", .rule = vfy_rule_count, .value = "violations"}
+static const vfy_check_spec tails_checks[] = {TAILS_CHECKS, {.name = NULL}};
+/* Maxwell molecules: the steady T is exact at every n (reference/heated.h). */
+static const vfy_check_spec tails_maxwell_checks[] = {
+    TAILS_CHECKS,
+    {.name = "{case} T vs exact finite-n expectation", .rule = vfy_rule_zscore, .value = "T",
+     .expected = "T_finite_n", .from = 1, .tol = VFY_TOL_ZMAX, .out = "z_T"},
+    {.name = NULL}};
+static const char tails_columns[] =
+    "n:%.0f N:%.0f T:%.4f T_ci:%.4f b:%.4f b_se:%.4f b_expected:%.2f c_first:%.2f "
+    "c_last:%.2f shells:%.0f chi2_dof:%.2f b_far:%.4f b_far_se:%.4f b_anchored:%.4f "
+    "b_anchored_se:%.4f violations:%.0f " VFY_COST_COLUMNS;
+
+/* The figures: paper A Fig. 6 (the steady histogram beside the initial
+ * Maxwellian, ln f against the speed) and Figs. 7-9 (y_k against x_k with
+ * the lines y = x - 2, 1.25 x - 2, 1.5 x - 2), in the paper's absolute
+ * speed r = c v0 (v0 from the steady T). */
+static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    (void)r;
+    const vfy_row *row = &run->rows[run->nrows - 1];
+    const sim_scene *s = &row->solver;
+    const size_t K = s->steady.bins;
+    const double T = vfy_values_get(&row->values, "T");
+    const double v0 = sqrt(2.0 * T / sim_scene_grain_mass(s));
+    double *h = NULL;
+    double *buf = malloc(10 * (K ? K : 1) * sizeof *buf);
+    if (buf == NULL || tail_histogram(row, &h) != 0) {
+        free(buf);
+        free(h);
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    const double *edge = h, *f = h + K, *fci = h + 2 * K;
+    double *rc = buf, *lnf = rc + K, *lnf_ci = lnf + K, *lnf0 = lnf_ci + K;
+    double *x = lnf0 + K, *y = x + K, *y_ci = y + K, *lines = y_ci + K;
+    const double delta = s->steady.c_max / (double)K;
+    for (size_t k = 0; k < K; k++) {
+        const double c = ((double)k + 0.5) * delta;
+        rc[k] = c * v0;
+        lnf[k] = f[k] > 0.0 ? log(f[k]) : NAN;
+        lnf_ci[k] = f[k] > 0.0 ? fci[k] / f[k] : NAN;
+        lnf0[k] = -1.5 * log(M_PI) - c * c * T / s->particles.maxwellian.temperature;
+        const double d = log(f[0]) - lnf[k];
+        x[k] = k > 0 ? log(v0 * (edge[k] - edge[0])) : NAN;
+        y[k] = k > 0 && d > 0.0 ? log(d) : NAN;
+        y_ci[k] = k > 0 && d > 0.0 ? lnf_ci[k] / d : NAN;
+    }
+    const double b = vfy_values_get(&row->values, "b");
+    vfy_xy_curve hist[] = {
+        {.label = "steady state (DSMC)", .count = K, .x = rc, .y = {lnf}, .ci = {lnf_ci}},
+        {.label = "initial Maxwellian", .reference = 1, .count = K, .x = rc, .y = {lnf0}}};
+    char name[96], title[160];
+    snprintf(name, sizeof name, "%s-histogram", run->c->name);
+    snprintf(title, sizeof title, "paper A Fig. 6: ln f of the speed r, %s", run->c->name);
+    vfy_xy_figure fig = {.name = name, .title = title, .xlabel = "r = |v|",
+                         .comment = run->comment, .npanels = 1, .ylabel = {"ln f"},
+                         .ncurves = 2, .curves = hist};
+    int rc_io = vfy_write_xy(run->o, &fig);
+
+    /* y = b x - 2 for b = 1, 1.25, 1.5 and the fit, each through two points */
+    static const double slopes[] = {1.0, 1.25, 1.5};
+    const double x_lo = 0.0, x_hi = log(v0 * s->steady.c_max);
+    double *lx = lines, *ly = lines + 2;   /* 2 x values, then 2 y values per line */
+    lx[0] = x_lo;
+    lx[1] = x_hi;
+    vfy_xy_curve curves[4] = {
+        {.label = "y_k (DSMC)", .count = K, .x = x, .y = {y}, .ci = {y_ci}}};
+    char labels[3][48];
+    for (size_t i = 0; i < 3; i++) {
+        ly[2 * i] = slopes[i] * x_lo - 2.0;
+        ly[2 * i + 1] = slopes[i] * x_hi - 2.0;
+        snprintf(labels[i], sizeof labels[i], "y = %gx - 2", slopes[i]);
+        curves[1 + i] = (vfy_xy_curve){.label = labels[i], .reference = 1, .count = 2,
+                                       .x = lx, .y = {ly + 2 * i}};
+    }
+    snprintf(title, sizeof title, "paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against "
+             "x_k = ln(r_k - r_1), %s (fitted b = %.3f)", run->c->name, b);
+    snprintf(name, sizeof name, "%s-exponent", run->c->name);
+    fig = (vfy_xy_figure){.name = name, .title = title, .xlabel = "x_k",
+                          .comment = run->comment, .npanels = 1, .ylabel = {"y_k"},
+                          .ncurves = 4, .curves = curves};
+    rc_io |= vfy_write_xy(run->o, &fig);
+    free(buf);
+    free(h);
+    if (rc_io != 0) {
+        snprintf(msg, msglen, "%s: cannot write the figures", run->c->name);
+        return SIM_EIO;
+    }
+    return SIM_OK;
+}
+
+#define TAILS_NOTES                                                                      \
+    "{comment}.\n\nPaper A §4.3 (SPEC §3 Ex 6-8): the steady state of the white-noise "      \
+    "heated gas (alpha = 0.1, beta = 30, gamma = 16, C = 1/(4 pi)), exact jump scheme. The "  \
+    "histogram f_k of the reduced speed c = |C|/v0 (v0 = sqrt(2T/m), the steady T) in K = "   \
+    "128 shells to the paper's R over v0, averaged per ensemble over the steady output "      \
+    "times (t >= steady.from); half-widths over the ensembles. b: the weighted "             \
+    "least-squares slope of y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1) (paper "    \
+    "A's plot, anchored at the first shell) over the clean range c_first <= r_k <= c_last: "  \
+    "from c = 2 to the last shell before one with a relative standard error above 10%; "     \
+    "b_se is the fit's standard error times sqrt(chi2_dof) when chi2_dof > 1. b_far: the "   \
+    "same fit from c = 3.5 on; b_anchored: anchored at the first shell of the clean range "  \
+    "instead (then exact for a pure exponential tail K exp(-a r)). Asymptotically b = 1 + "  \
+    "lambda/2 (b_expected). Figures: {case}-histogram.png (paper A Fig. 6) and "             \
+    "{case}-exponent.png (Figs. 7-9, in the paper's absolute speed r = c v0). Total wall "    \
+    "time {wall_total:%.1f} s."
+#define TAILS_CASE(EX, NEEDS, CHECKS)                                                     \
+    {.paper = EX, .needs = NEEDS, .needs_why = VFY_NEEDS_MAXWELL,                       \
+     .paper_rows = {.keys = {"particles.n"}, .values = {"10000000"}},                   \
+     .quick_rows = {.keys = {"particles.n"}, .values = {"25000"},                       \
+                    .sets = "particles.ensembles=16"},                                  \
+     .metrics = tails_metrics, .checks = CHECKS, .columns = tails_columns,              \
+     .after_rows = tails_figures,                                                       \
+     .title = "{case}: paper A " EX ", the steady tail exponent ({size} sizes)",        \
+     .notes = TAILS_NOTES}
+static const char *const tails_maxwell_needs[] = {"T_finite_n", NULL};
+const vfy_case_desc vfy_grw_ex6 = TAILS_CASE("Ex 6", tails_maxwell_needs, tails_maxwell_checks);
+const vfy_case_desc vfy_grw_ex7 = TAILS_CASE("Ex 7", NULL, tails_checks);
+const vfy_case_desc vfy_grw_ex8 = TAILS_CASE("Ex 8", NULL, tails_checks);

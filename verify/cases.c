@@ -13,7 +13,8 @@
 #include "table.h"
 
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
-extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4, vfy_grw_ex5;
+extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4, vfy_grw_ex5, vfy_grw_ex6, vfy_grw_ex7,
+    vfy_grw_ex8;
 /* case_brs.c */
 extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3, vfy_brs_ex4, vfy_brs_ex5;
 /* case_ms.c (paper C) */
@@ -45,6 +46,12 @@ static const vfy_case cases[] = {
      &vfy_grw_ex4},
     {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
      &vfy_grw_ex5},
+    {"grw-ex6", "grw", "paper A Ex 6: the steady tail exponent of heated Maxwell molecules "
+     "(b = 1)", 1, &vfy_grw_ex6},
+    {"grw-ex7", "grw", "paper A Ex 7: the steady tail exponent of heated hard spheres "
+     "(b = 3/2)", 1, &vfy_grw_ex7},
+    {"grw-ex8", "grw", "paper A Ex 8: the steady tail exponent of heated VHS, lambda = 1/2 "
+     "(b = 5/4)", 1, &vfy_grw_ex8},
     {"vro-grw-ex3", "grw", "paper A Ex 3 observed through the exact conditional expectation "
      "over the pending Brownian increments: the variance reduction", 1, &vfy_vro_grw_ex3},
     {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",

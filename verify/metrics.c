@@ -143,6 +143,65 @@ size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t b
     return m;
 }
 
+/* The slope of y_k against x_k as vfy_fit_tail_exponent describes, with
+ * ln f_k0 shifted by `shift` (the weights do not count f_k0's error, which is
+ * common to every y_k); t gets b, chi2_dof and the range. */
+static void fit_exponent(const double *r, const double *f, const double *ci, size_t bins,
+                         size_t k0, double r_lo, double rel_max, double lambda, double shift,
+                         double *work, vfy_tail_exponent *t)
+{
+    double *x = work, *y = x + bins, *w = y + bins;
+    const double ln0 = log(f[k0]) + shift;
+    size_t m = 0;
+    for (size_t k = k0 + 1; k < bins; k++) {
+        const double s = ci[k] / lambda / f[k];   /* of ln f_k */
+        if (!(f[k] > 0.0) || !(f[k] < f[k0]) || !(s <= rel_max)) {
+            if (m > 0)
+                break;   /* the clean range ends here */
+            continue;
+        }
+        if (r[k] < r_lo)
+            continue;
+        const double d = ln0 - log(f[k]);
+        x[m] = log(r[k] - r[k0]);
+        y[m] = log(d);
+        w[m] = d * d / (s * s);   /* 1/sigma^2 of y */
+        if (m == 0)
+            t->r_first = r[k];
+        t->r_last = r[k];
+        m++;
+    }
+    t->used = m;
+    if (m >= 3) {
+        double c0, c1, cov00, cov01, cov11, chi2;
+        gsl_fit_wlinear(x, 1, w, 1, y, 1, m, &c0, &c1, &cov00, &cov01, &cov11, &chi2);
+        t->b = c1;
+        t->chi2_dof = chi2 / (double)(m - 2);
+        t->b_se = sqrt(cov11 * (t->chi2_dof > 1.0 ? t->chi2_dof : 1.0));
+    }
+}
+
+vfy_tail_exponent vfy_fit_tail_exponent(const double *r, const double *f, const double *ci,
+                                        size_t bins, size_t k0, double r_lo, double rel_max,
+                                        double lambda)
+{
+    vfy_tail_exponent t = {NAN, NAN, NAN, NAN, NAN, 0}, shifted = t;
+    double *work = malloc(3 * (bins ? bins : 1) * sizeof *work);
+    if (work == NULL || k0 >= bins || !(f[k0] > 0.0)) {
+        free(work);
+        return t;
+    }
+    fit_exponent(r, f, ci, bins, k0, r_lo, rel_max, lambda, 0.0, work, &t);
+    /* f_k0's error moves every y_k the same way: its share of b's error is
+     * the change of b when ln f_k0 moves by one standard error */
+    const double s0 = ci[k0] / lambda / f[k0];
+    fit_exponent(r, f, ci, bins, k0, r_lo, rel_max, lambda, s0, work, &shifted);
+    if (t.used >= 3)
+        t.b_se = hypot(t.b_se, shifted.b - t.b);
+    free(work);
+    return t;
+}
+
 /* ------------------------------------------------------------ adapters */
 
 /* Two series of a row into freshly allocated arrays (a's mean and ci, b's

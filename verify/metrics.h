@@ -65,6 +65,28 @@ double vfy_z_pair(double a, double sa, double b, double sb);
 size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t bins, double b,
                     double c_lo, double lambda, double *A, double *A_sd, double *K);
 
+/* Paper A's tail exponent (SPEC §3 Ex 6-8, A §4.3): with f_k a histogram of
+ * the speed in shells, r[k] the upper edge of shell k and k0 < k the anchor
+ * shell, the weighted least-squares slope b of
+ *   y_k = ln(ln f_k0 - ln f_k)  against  x_k = ln(r_k - r_k0),
+ * which is exactly b for f_k = f_k0 exp(-a (r_k - r_k0)^b).  The clean range:
+ * the shells from the first with r_k >= r_lo to the last before one whose
+ * f_k is not below f_k0 (or not positive) or whose relative standard error
+ * ci[k]/(lambda f_k) exceeds rel_max (ci = lambda standard errors).  Weights
+ * from the errors of ln f_k; the standard error of b is the fit's, times
+ * sqrt(chi^2/dof) when that exceeds 1 (a model that does not fit the shells
+ * widens its own error), in quadrature with the change of b when ln f_k0
+ * moves by its standard error (an error common to every y_k). */
+typedef struct vfy_tail_exponent {
+    double b, b_se;           /* NAN with fewer than 3 shells */
+    double chi2_dof;
+    double r_first, r_last;   /* upper edges of the first and last shell used */
+    size_t used;
+} vfy_tail_exponent;
+vfy_tail_exponent vfy_fit_tail_exponent(const double *r, const double *f, const double *ci,
+                                        size_t bins, size_t k0, double r_lo, double rel_max,
+                                        double lambda);
+
 /* ------------------------------------------------- adapters (vfy_metric_fn) */
 
 /* vfy_max_rel_err of series a against series b. */
