@@ -67,7 +67,7 @@ typedef struct sim_effect_type {
     /* For a flow whose increment over dt is Gaussian with mean 0 and the same
      * variance in each component, independent of the velocity (white noise):
      * that variance per unit time; 0 otherwise.  Conditional observation
-     * (observe.h, sim_observe_pending) needs it. */
+     * (observe.h, sim_observe_sums) needs it. */
     double (*spread)(const sim_effect *e);
 
     /* Event processes (NULL for flows). */
@@ -88,6 +88,11 @@ typedef struct sim_effect_type {
      * engine maintains the velocity bound (then every velocity change must be
      * covered). */
     sim_event_fire_fn (*select_fire)(const sim_effect *e, int lazy_flow, int bounded);
+    /* Optional (may be NULL, or return NULL): as select_fire, for an engine
+     * that observes from running sums (observe.h, sim_sums): the fire function
+     * also keeps run->sums current for every particle it changes or brings
+     * forward (scene.observation = conditional, issue 18). */
+    sim_event_fire_fn (*select_fire_sums)(const sim_effect *e, int lazy_flow, int bounded);
     /* The time-step scheme's stage of length h for this process (NULL: none,
      * and the engine refuses the scene).  The per-run state is zeroed at the
      * start of each run and `reset` is called at each output time, as in the

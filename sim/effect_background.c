@@ -106,16 +106,18 @@ static double background_reset(const sim_effect *e, sim_run *run, void *vstate, 
  * bounded are compile-time constants in each instance below. */
 static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t,
                                     const int hard_spheres, const int lazy_flow,
-                                    const int bounded)
+                                    const int bounded, const int sums)
 {
     const background_params *p = e->params;
     background_state *s = vstate;
     gsl_rng *rng = run->rng;
 
     size_t i = (size_t)sim_rng_index(rng, run->p.n);
+    double *v = run->p.v[i];
+    if (sums)   /* out of the running sums until it is put back below */
+        sim_sums_add(&run->sums, v, lazy_flow ? run->p.stamp[i] : 0.0, -1.0);
     if (lazy_flow)
         sim_run_bring(run, i, t);
-    double *v = run->p.v[i];
     double w[3], gnorm;
     run->counts.candidates++;
 
@@ -137,8 +139,11 @@ static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vst
         }
         double g[3] = {v[0] - w[0], v[1] - w[1], v[2] - w[2]};
         gnorm = sim_norm3(g);
-        if (sim_rng_uniform(rng) * (s->a_max + partner_speed) >= gnorm)
+        if (sim_rng_uniform(rng) * (s->a_max + partner_speed) >= gnorm) {
+            if (sums)
+                sim_sums_add(&run->sums, v, lazy_flow ? run->p.stamp[i] : 0.0, 1.0);
             return s->rate;   /* fictitious */
+        }
     } else {
         sim_background_partner(p->velocity, p->sigma, rng, w);
         double g[3] = {v[0] - w[0], v[1] - w[1], v[2] - w[2]};
@@ -149,22 +154,31 @@ static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vst
     sim_rng_unit_sphere(rng, unit);
     sim_collide_elastic(v, w, p->mass_ratio, gnorm, unit);
     run->counts.background++;
+    if (sums)
+        sim_sums_add(&run->sums, v, lazy_flow ? run->p.stamp[i] : 0.0, 1.0);
     if (bounded)
         sim_run_cover(run, v);
     return hard_spheres ? follow_bound(p, s, run) : p->rate_maxwell;
 }
 
-#define FIRE_INSTANCE(name, hard_spheres, lazy, bounded)                                     \
+#define FIRE_INSTANCE(name, hard_spheres, lazy, bounded, sums)                               \
     static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
-        return fire_candidate(e, run, state, t, hard_spheres, lazy, bounded);                \
+        return fire_candidate(e, run, state, t, hard_spheres, lazy, bounded, sums);          \
     }
-FIRE_INSTANCE(fire_maxwell, 0, 0, 0)
-FIRE_INSTANCE(fire_maxwell_flow, 0, 1, 0)
-FIRE_INSTANCE(fire_maxwell_bounded, 0, 0, 1)
-FIRE_INSTANCE(fire_maxwell_flow_bounded, 0, 1, 1)
-FIRE_INSTANCE(fire_hard_spheres, 1, 0, 1)
-FIRE_INSTANCE(fire_hard_spheres_flow, 1, 1, 1)
+FIRE_INSTANCE(fire_maxwell, 0, 0, 0, 0)
+FIRE_INSTANCE(fire_maxwell_flow, 0, 1, 0, 0)
+FIRE_INSTANCE(fire_maxwell_bounded, 0, 0, 1, 0)
+FIRE_INSTANCE(fire_maxwell_flow_bounded, 0, 1, 1, 0)
+FIRE_INSTANCE(fire_hard_spheres, 1, 0, 1, 0)
+FIRE_INSTANCE(fire_hard_spheres_flow, 1, 1, 1, 0)
+/* keeping the running sums (observation = conditional) */
+FIRE_INSTANCE(fire_maxwell_sums, 0, 0, 0, 1)
+FIRE_INSTANCE(fire_maxwell_flow_sums, 0, 1, 0, 1)
+FIRE_INSTANCE(fire_maxwell_bounded_sums, 0, 0, 1, 1)
+FIRE_INSTANCE(fire_maxwell_flow_bounded_sums, 0, 1, 1, 1)
+FIRE_INSTANCE(fire_hard_spheres_sums, 1, 0, 1, 1)
+FIRE_INSTANCE(fire_hard_spheres_flow_sums, 1, 1, 1, 1)
 
 static sim_event_fire_fn background_select_fire(const sim_effect *e, int lazy_flow, int bounded)
 {
@@ -176,6 +190,17 @@ static sim_event_fire_fn background_select_fire(const sim_effect *e, int lazy_fl
     return lazy_flow ? fire_maxwell_flow : fire_maxwell;
 }
 
+static sim_event_fire_fn background_select_fire_sums(const sim_effect *e, int lazy_flow,
+                                                     int bounded)
+{
+    const background_params *p = e->params;
+    if (p->hard_spheres)
+        return lazy_flow ? fire_hard_spheres_flow_sums : fire_hard_spheres_sums;
+    if (bounded)
+        return lazy_flow ? fire_maxwell_flow_bounded_sums : fire_maxwell_bounded_sums;
+    return lazy_flow ? fire_maxwell_flow_sums : fire_maxwell_sums;
+}
+
 static const sim_effect_type background_type = {
     .name = "background",
     .state_size = sizeof(background_state),
@@ -184,6 +209,7 @@ static const sim_effect_type background_type = {
     .reset = background_reset,
     .rate = background_rate,
     .select_fire = background_select_fire,
+    .select_fire_sums = background_select_fire_sums,
 };
 
 sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim_error *err)

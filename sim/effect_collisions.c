@@ -142,15 +142,28 @@ static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, 
 /* The next particle of the index stream, brought to time t by a lazy flow;
  * j != i when called with the first particle i (else i = UINT32_MAX). */
 static inline uint32_t draw_particle(collisions_state *s, sim_run *run, uint32_t other,
-                                     double t, uint32_t *spare, const int lazy_flow)
+                                     double t, uint32_t *spare, const int lazy_flow,
+                                     const int sums)
 {
     uint32_t i;
     do
         i = sim_pick_next(&s->pick, &run->p, run->rng, spare, lazy_flow);
     while (i == other);   /* uniform over the others: redraw (probability 1/n) */
+    if (sums)   /* out of the running sums until the caller puts it back */
+        sim_sums_add(&run->sums, run->p.v[i], lazy_flow ? run->p.stamp[i] : 0.0, -1.0);
     if (lazy_flow)
         sim_run_bring(run, i, t);
     return i;
+}
+
+/* Particles i and j back into the running sums (with sums, a constant). */
+static inline void sums_restore(sim_run *run, uint32_t i, uint32_t j, const int lazy_flow,
+                                const int sums)
+{
+    if (sums) {
+        sim_sums_add(&run->sums, run->p.v[i], lazy_flow ? run->p.stamp[i] : 0.0, 1.0);
+        sim_sums_add(&run->sums, run->p.v[j], lazy_flow ? run->p.stamp[j] : 0.0, 1.0);
+    }
 }
 
 /* Let the bound cover velocity v of a particle that a lazy flow will keep
@@ -194,13 +207,13 @@ static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, voi
     follow_bound(p, s, run);   /* another process may have grown the bound */
     run->counts.candidates++;
 
-    uint32_t ui, i = draw_particle(s, run, UINT32_MAX, t, &ui, lazy_flow);
+    uint32_t ui, i = draw_particle(s, run, UINT32_MAX, t, &ui, lazy_flow, 0);
     double *vi = run->p.v[i];
     const double ai = bounded_distance(p, s, run, vi, lazy_flow);
     if (!sim_rng_accept32(run->rng, ui, ai * s->scale))
         return s->rate;   /* stage 1: fictitious */
 
-    uint32_t uj, j = draw_particle(s, run, i, t, &uj, lazy_flow);
+    uint32_t uj, j = draw_particle(s, run, i, t, &uj, lazy_flow, 0);
     double *vj = run->p.v[j];
     const double aj = bounded_distance(p, s, run, vj, lazy_flow);
     const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
@@ -228,14 +241,14 @@ static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, voi
  * implied by kernel == KERNEL_VHS). */
 static inline double fire_uniform_pair(const sim_effect *e, sim_run *run, void *vstate,
                                        double t, const enum kernel_case kernel,
-                                       const int lazy_flow, const int bounded)
+                                       const int lazy_flow, const int bounded, const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
     run->counts.candidates++;
 
-    uint32_t ui, i = draw_particle(s, run, UINT32_MAX, t, &ui, lazy_flow);
-    uint32_t uj, j = draw_particle(s, run, i, t, &uj, lazy_flow);
+    uint32_t ui, i = draw_particle(s, run, UINT32_MAX, t, &ui, lazy_flow, sums);
+    uint32_t uj, j = draw_particle(s, run, i, t, &uj, lazy_flow, sums);
     double *vi = run->p.v[i], *vj = run->p.v[j];
     const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
     const double gnorm = sim_norm3(g);
@@ -249,14 +262,17 @@ static inline double fire_uniform_pair(const sim_effect *e, sim_run *run, void *
             cover_moving(run, s, vj);
             follow_bound(p, s, run);
         }
-        if (!sim_rng_accept32(run->rng, uj, pow(gnorm / s->umax, p->lambda) * 0x1p32))
+        if (!sim_rng_accept32(run->rng, uj, pow(gnorm / s->umax, p->lambda) * 0x1p32)) {
+            sums_restore(run, i, j, lazy_flow, sums);
             return s->rate;
+        }
     }
 
     double unit[3];
     sim_rng_unit_sphere(run->rng, unit);
     sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
     run->counts.collisions++;
+    sums_restore(run, i, j, lazy_flow, sums);
     if (bounded && lazy_flow) {
         cover_moving(run, s, vi);
         cover_moving(run, s, vj);
@@ -267,17 +283,24 @@ static inline double fire_uniform_pair(const sim_effect *e, sim_run *run, void *
     return kernel == KERNEL_MAXWELL ? p->prefactor : follow_bound(p, s, run);
 }
 
-#define FIRE_INSTANCE(name, kernel, lazy, bounded)                                           \
+#define FIRE_INSTANCE(name, kernel, lazy, bounded, sums)                                     \
     static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
-        return fire_uniform_pair(e, run, state, t, kernel, lazy, bounded);                   \
+        return fire_uniform_pair(e, run, state, t, kernel, lazy, bounded, sums);             \
     }
-FIRE_INSTANCE(fire_maxwell, KERNEL_MAXWELL, 0, 0)
-FIRE_INSTANCE(fire_maxwell_flow, KERNEL_MAXWELL, 1, 0)
-FIRE_INSTANCE(fire_maxwell_bounded, KERNEL_MAXWELL, 0, 1)
-FIRE_INSTANCE(fire_maxwell_flow_bounded, KERNEL_MAXWELL, 1, 1)
-FIRE_INSTANCE(fire_vhs, KERNEL_VHS, 0, 1)
-FIRE_INSTANCE(fire_vhs_flow, KERNEL_VHS, 1, 1)
+FIRE_INSTANCE(fire_maxwell, KERNEL_MAXWELL, 0, 0, 0)
+FIRE_INSTANCE(fire_maxwell_flow, KERNEL_MAXWELL, 1, 0, 0)
+FIRE_INSTANCE(fire_maxwell_bounded, KERNEL_MAXWELL, 0, 1, 0)
+FIRE_INSTANCE(fire_maxwell_flow_bounded, KERNEL_MAXWELL, 1, 1, 0)
+FIRE_INSTANCE(fire_vhs, KERNEL_VHS, 0, 1, 0)
+FIRE_INSTANCE(fire_vhs_flow, KERNEL_VHS, 1, 1, 0)
+/* keeping the running sums (observation = conditional) */
+FIRE_INSTANCE(fire_maxwell_sums, KERNEL_MAXWELL, 0, 0, 1)
+FIRE_INSTANCE(fire_maxwell_flow_sums, KERNEL_MAXWELL, 1, 0, 1)
+FIRE_INSTANCE(fire_maxwell_bounded_sums, KERNEL_MAXWELL, 0, 1, 1)
+FIRE_INSTANCE(fire_maxwell_flow_bounded_sums, KERNEL_MAXWELL, 1, 1, 1)
+FIRE_INSTANCE(fire_vhs_sums, KERNEL_VHS, 0, 1, 1)
+FIRE_INSTANCE(fire_vhs_flow_sums, KERNEL_VHS, 1, 1, 1)
 
 static double fire_hard_spheres(const sim_effect *e, sim_run *run, void *state, double t)
 {
@@ -300,6 +323,23 @@ static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_fl
     if (p->lambda == 1.0)
         return lazy_flow ? fire_hard_spheres_flow : fire_hard_spheres;
     return lazy_flow ? fire_vhs_flow : fire_vhs;
+}
+
+/* Hard spheres keep no running sums (their jump scheme passes over the
+ * particles at every output time for the bound anyway): the engine then
+ * observes conditionally from the particles. */
+static sim_event_fire_fn collisions_select_fire_sums(const sim_effect *e, int lazy_flow,
+                                                     int bounded)
+{
+    const collisions_params *p = e->params;
+    if (p->lambda == 0.0) {
+        if (bounded)
+            return lazy_flow ? fire_maxwell_flow_bounded_sums : fire_maxwell_bounded_sums;
+        return lazy_flow ? fire_maxwell_flow_sums : fire_maxwell_sums;
+    }
+    if (p->lambda == 1.0)
+        return NULL;
+    return lazy_flow ? fire_vhs_flow_sums : fire_vhs_sums;
 }
 
 /* ------------------------------------------------------ batched loops */
@@ -540,6 +580,7 @@ static const sim_effect_type collisions_type = {
     .reset = collisions_reset,
     .rate = collisions_rate,
     .select_fire = collisions_select_fire,
+    .select_fire_sums = collisions_select_fire_sums,
     .select_stage = collisions_select_stage,
     .select_fire_many = collisions_select_fire_many,
 };

@@ -9,7 +9,10 @@
  * particle is brought to that time, the observables are recorded, and the
  * majorants are recomputed from the synchronised system; the pending waiting
  * time is then redrawn, which is exact because the waiting times are
- * exponential (memoryless).  The loop is chosen when the engine is built:
+ * exponential (memoryless).  With scene.observation = conditional nothing is
+ * brought: T .. Pyz are the exact expectations over the pending increments,
+ * from running sums the events keep (observe.h, sim_sums; recomputed every
+ * REBOUND_SWEEPS n candidates), and the bound adds each particle's own reach.  The loop is chosen when the engine is built:
  *
  *  - with a lazy flow (run_jump_timed) every candidate needs its time, so
  *    the waiting times are drawn one by one, tau = -ln(U) / pi_hat;
@@ -60,6 +63,7 @@
 #include <string.h>
 
 #include "effect.h"
+#include "first_stage.h"
 #include "rng.h"
 #include "run.h"
 #include "slab.h"
@@ -98,8 +102,11 @@ struct sim_engine {
                              drag, then a thermostat or the heat-flux force */
     sim_effect flows[MAX_FLOWS];
     int lazy_flow;        /* jump scheme: flows[0] is applied lazily (stamps) */
-    double pending_spread;/* scene.observation = conditional: the lazy flow's variance per
-                             unit time (observe.h, sim_observe_pending), else 0 */
+    int conditional;      /* scene.observation = conditional: T .. Pyz as expectations
+                             over the lazy flow's pending increments, which are never
+                             drawn at output times (observe.h, sim_observe_sums) */
+    double pending_spread;/* ... the lazy flow's variance per unit time, or 0 */
+    int sums;             /* ... from running sums the events keep (else a pass) */
     int bounded;          /* some event needs the velocity bound (run.h) */
     int fixed_centre;     /* ... centred at `centre`, else at the bulk velocity */
     double centre[3];
@@ -320,12 +327,15 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         && (status = sim_effect_heat_flux(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
     if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
-        if (!e->lazy_flow || e->flows[0].type->spread == NULL)
+        if (timestep || scene->steady.present || scene->shear.present
+            || (e->nflows > 0 && (!e->lazy_flow || e->flows[0].type->spread == NULL)))
             status = sim_error_set(err, SIM_EUNSUPPORTED, "scene.observation",
-                                   "conditional needs a lazily applied Gaussian flow "
-                                   "(white-noise heating, scheme = jump)");
+                                   "conditional needs scheme = jump, at most white-noise "
+                                   "heating, and no [steady] or [shear] (they observe every "
+                                   "particle)");
         else
-            e->pending_spread = e->flows[0].type->spread(&e->flows[0]);
+            e->pending_spread = e->lazy_flow ? e->flows[0].type->spread(&e->flows[0]) : 0.0;
+        e->conditional = status == SIM_OK;
     }
     if (status == SIM_OK && timestep)
         status = build_timestep(e, err);
@@ -360,13 +370,23 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         if (ev->type->bound_centre && ev->type->bound_centre(ev, e->centre))
             e->fixed_centre = 1;
     }
+    /* observation from running sums where every event process keeps them */
+    e->sums = e->conditional;
+    for (size_t k = 0; k < e->nevents; k++) {
+        const sim_effect *ev = &e->events[k];
+        e->fire[k] = ev->type->select_fire_sums
+                         ? ev->type->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
+        e->sums &= e->fire[k] != NULL;
+    }
     for (size_t k = 0; k < e->nevents; k++)
-        e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow, e->bounded);
-    if (e->nevents == 1 && e->events[0].type->select_fire_many)
+        if (!e->sums)
+            e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow,
+                                                         e->bounded);
+    if (e->nevents == 1 && !e->sums && e->events[0].type->select_fire_many)
         e->fire_many = e->events[0].type->select_fire_many(&e->events[0]);
     e->fire_some = e->fire_many ? fire_some_alone : e->nevents == 1 ? fire_some_one
                                                                     : fire_some_mixed;
-    e->rebound_every = e->bounded && !e->lazy_flow
+    e->rebound_every = (e->bounded && !e->lazy_flow) || e->sums
                            ? REBOUND_SWEEPS * (uint64_t)scene->particles.n : UINT64_MAX;
     *engine = e;
     return SIM_OK;
@@ -436,6 +456,8 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
     return SIM_OK;
 }
 
+const sim_particles *sim_workspace_particles(const sim_workspace *ws) { return &ws->run.p; }
+
 void sim_workspace_free(sim_workspace *ws)
 {
     if (ws == NULL)
@@ -451,10 +473,11 @@ void sim_workspace_free(sim_workspace *ws)
     free(ws);
 }
 
-/* The velocity bound of run.h from the synchronised system: centre c (fixed,
- * or the bulk velocity), R = max |v_i - c| plus the lazy flow's reach over
- * the horizon; R = +inf (no bound) when no event needs one. */
-static void reset_bound(const sim_engine *e, sim_run *run, double horizon)
+/* The velocity bound of run.h at time t: centre c (fixed, or the bulk
+ * velocity), R = max |v_i - c| plus the lazy flow's reach over the horizon
+ * (over t + horizon - stamp_i per particle when conditional observation left
+ * the system unsynchronised); R = +inf (no bound) when no event needs one. */
+static void reset_bound(const sim_engine *e, sim_run *run, double t, double horizon)
 {
     const size_t n = run->p.n;
     run->bound_grew = 0;
@@ -472,21 +495,31 @@ static void reset_bound(const sim_engine *e, sim_run *run, double horizon)
         for (int k = 0; k < 3; k++)
             c[k] /= (double)n;
     }
+    memcpy(run->centre, c, sizeof c);
+    if (run->flow && e->conditional) {
+        double r = 0.0;
+        for (size_t i = 0; i < n; i++) {
+            const double a = sqrt(sim_dist2(run->p.v[i], c))
+                             + run->flow->type->reach(run->flow, t + horizon - run->p.stamp[i]);
+            r = a > r ? a : r;
+        }
+        run->radius = r;
+        return;
+    }
     for (size_t i = 0; i < n; i++) {
         double d[3] = {run->p.v[i][0] - c[0], run->p.v[i][1] - c[1], run->p.v[i][2] - c[2]};
         const double x = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         r2 = x > r2 ? x : r2;   /* not fmax: a library call on baseline x86-64 */
     }
-    memcpy(run->centre, c, sizeof c);
     run->radius = sqrt(r2) + (run->flow ? run->flow->type->reach(run->flow, horizon) : 0.0);
 }
 
 /* Recompute the bound and every event process's majorant; return their total
  * rate. */
 static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
-                           double horizon)
+                           double t, double horizon)
 {
-    reset_bound(e, &ws->run, horizon);
+    reset_bound(e, &ws->run, t, horizon);
     double total = 0.0;
     for (size_t k = 0; k < e->nevents; k++) {
         rates[k] = e->events[k].type->reset(&e->events[k], &ws->run,
@@ -499,10 +532,19 @@ static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[
 /* Runs without a lazy flow, between output times: R = max |v_i - c| from
  * scratch about the same centre (binary collisions keep the bulk velocity,
  * and a fixed centre stays), and every process's rate for it; returns the
- * total.  One pass over the particles, no reset of the processes. */
+ * total.  One pass over the particles, no reset of the processes.  The
+ * running sums, when kept, are recomputed in the same pass's place. */
 static double rebound(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS])
 {
     sim_run *run = &ws->run;
+    if (e->sums)
+        sim_sums_compute(&run->p, &run->sums);
+    if (!e->bounded) {
+        double total = 0.0;
+        for (size_t k = 0; k < e->nevents; k++)
+            total += rates[k];
+        return total;
+    }
     const double *c = run->centre;
     double r2 = 0.0;
     for (size_t i = 0; i < run->p.n; i++) {
@@ -562,6 +604,15 @@ static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double 
     if (e->slab) {   /* against the layers' velocities (slab.h) */
         sim_slab_observe(e->slab, ws->slab, &ws->run, m, prev, ws->observer_rng, row);
         observed = sim_slab_peculiar(ws->slab);
+    } else if (e->conditional) {   /* no pass over the particles with sums */
+        sim_sums pass;
+        const sim_sums *sums = &ws->run.sums;
+        if (!e->sums) {
+            sim_sums_compute(&ws->run.p, &pass);
+            sums = &pass;
+        }
+        sim_observe_sums(sums, ws->run.p.n, e->mass, sim_scene_output_time(&e->scene, m),
+                         e->pending_spread, row);
     } else {
         sim_observe(&ws->run.p, e->mass, row);
         if (e->scene.shear.present)
@@ -586,8 +637,9 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
 
     const double interval = sim_scene_output_time(scene, 1);   /* between resets */
     double rates[MAX_EVENTS] = {0};
-    double total = reset_events(e, ws, rates, interval);
     double t = 0.0;
+    double total = reset_events(e, ws, rates, t, interval);
+    uint64_t until_resum = e->rebound_every;   /* the running sums' recomputation */
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
         for (;;) {
@@ -598,20 +650,18 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
             size_t k = e->nevents == 1 ? 0 : pick_event(e, rng, rates, total);
             rates[k] = e->fire[k](&e->events[k], run, ws->states + e->state_offset[k], t);
             total = e->nevents == 1 ? rates[0] : update_rates(e, ws, rates, k);
+            if (--until_resum == 0) {   /* only with sums (else 2^64 candidates away) */
+                sim_sums_compute(&run->p, &run->sums);
+                until_resum = e->rebound_every;
+            }
         }
         t = t_out;
-        double expected[SIM_OBS_BASE];   /* before the pending increments are drawn */
-        if (e->pending_spread > 0.0)
-            sim_observe_pending(&run->p, e->mass, t, e->pending_spread, expected);
-        if (run->flow)
+        if (!e->conditional)   /* paper A: draw the pending increments */
             for (size_t i = 0; i < n; i++)
                 sim_run_bring(run, i, t);
         observe_at(e, ws, m, obs, samples);
-        if (e->pending_spread > 0.0)   /* T .. Pyz: their conditional expectations */
-            memcpy(obs + m * e->observables + SIM_OBS_T, expected + SIM_OBS_T,
-                   (SIM_OBS_PYZ + 1 - SIM_OBS_T) * sizeof *expected);
         if (m + 1 < scene->outputs)
-            total = reset_events(e, ws, rates, interval);
+            total = reset_events(e, ws, rates, t, interval);
     }
 }
 
@@ -672,9 +722,9 @@ static void run_jump_counted(const sim_engine *e, sim_workspace *ws, double *obs
     gsl_rng *rng = ws->run.rng;
     const double interval = sim_scene_output_time(scene, 1);   /* between resets */
     double rates[MAX_EVENTS] = {0};
-    double total = reset_events(e, ws, rates, interval);
-    uint64_t until_rebound = e->rebound_every;
     double t = 0.0;
+    double total = reset_events(e, ws, rates, t, interval);
+    uint64_t until_rebound = e->rebound_every;
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
         while (t < t_out && total > 0.0) {
@@ -709,7 +759,7 @@ static void run_jump_counted(const sim_engine *e, sim_workspace *ws, double *obs
         t = t_out;
         observe_at(e, ws, m, obs, samples);
         if (m + 1 < scene->outputs)
-            total = reset_events(e, ws, rates, interval);
+            total = reset_events(e, ws, rates, t, interval);
         until_rebound = e->rebound_every;
     }
 }
@@ -739,13 +789,13 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
     const sim_scene *scene = &e->scene;
     const double interval = sim_scene_output_time(scene, 1);
     double rates[MAX_EVENTS] = {0};
-    reset_events(e, ws, rates, interval);
+    reset_events(e, ws, rates, 0.0, interval);
     for (size_t m = 1; m < scene->outputs; m++) {
         interval_steps(e, ws, obs, m);
         e->interval(e, ws);
         observe_at(e, ws, m, obs, samples);
-        if (m + 1 < scene->outputs)
-            reset_events(e, ws, rates, interval);
+        if (m + 1 < scene->outputs)   /* synchronised: no lazy flow */
+            reset_events(e, ws, rates, sim_scene_output_time(scene, m), interval);
     }
 }
 
@@ -763,6 +813,8 @@ void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, do
     if (ws->observer_rng)
         sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
     sim_particles_sample(&run->p, scene, rng);
+    if (e->sums)
+        sim_sums_compute(&run->p, &run->sums);
     if (e->slab)
         sim_slab_start(e->slab, ws->slab, run);
     observe_at(e, ws, 0, obs, &ws->samples);

@@ -14,6 +14,7 @@
 
 #include "error.h"
 #include "observe.h"
+#include "particles.h"
 #include "scene.h"
 
 typedef struct sim_engine sim_engine;
@@ -68,6 +69,10 @@ double sim_engine_step(const sim_engine *engine);
 /* Per-thread memory: the particle system, the random stream, effect states. */
 sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, sim_error *err);
 void sim_workspace_free(sim_workspace *ws);
+
+/* The particles of the workspace's last run as they are stored (with a lazy
+ * flow and conditional observation, each at its own stamp), for tests. */
+const sim_particles *sim_workspace_particles(const sim_workspace *ws);
 
 /* Simulate ensemble `index` (its random stream is (scene seed, index)) from
  * t = 0 to t_end.  obs must hold outputs * sim_engine_observables() +

@@ -97,24 +97,29 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE])
     out[SIM_OBS_A3] = -w * c6 / (105.0 * theta * theta * theta) + 1.0 + 3.0 * a2;
 }
 
-void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
-                         double out[SIM_OBS_BASE])
+void sim_sums_compute(const sim_particles *p, sim_sums *s)
 {
-    double now[SIM_OBS_BASE];
-    sim_observe(p, mass, now);
-    const size_t n = p->n;
-    double owed = 0.0;
-    for (size_t i = 0; i < n; i++)
-        owed += t - p->stamp[i];
-    const double S = spread * owed / (double)n;
-    const double centred = mass * S * (1.0 - 1.0 / (double)n);
-    now[SIM_OBS_T_RAW] += mass * S;
-    now[SIM_OBS_T] += centred;
-    now[SIM_OBS_PXX] += centred;
-    now[SIM_OBS_PYY] += centred;
-    now[SIM_OBS_PZZ] += centred;
-    for (int k = SIM_OBS_T; k <= SIM_OBS_PYZ; k++)
-        out[k] = now[k];
+    memset(s, 0, sizeof *s);
+    for (size_t i = 0; i < p->n; i++)
+        sim_sums_add(s, p->v[i], p->stamp ? p->stamp[i] : 0.0, 1.0);
+}
+
+void sim_observe_sums(const sim_sums *s, size_t n, double mass, double t, double spread,
+                      double out[SIM_OBS_BASE])
+{
+    const double w = 1.0 / (double)n;
+    const double S = spread * (t - s->stamp * w);   /* the mean variance owed */
+    const double V[3] = {s->v[0] * w, s->v[1] * w, s->v[2] * w};
+    static const int a[6] = {0, 1, 2, 0, 0, 1}, b[6] = {0, 1, 2, 1, 2, 2};
+    for (int k = 0; k < 6; k++)
+        out[SIM_OBS_PXX + k] = mass * (s->vv[k] * w - V[a[k]] * V[b[k]]
+                                       + (k < 3 ? S * (1.0 - w) : 0.0));
+    out[SIM_OBS_T] = (out[SIM_OBS_PXX] + out[SIM_OBS_PYY] + out[SIM_OBS_PZZ]) / 3.0;
+    out[SIM_OBS_T_RAW] = mass * ((s->vv[0] + s->vv[1] + s->vv[2]) * w / 3.0 + S);
+    for (int k = 0; k < 3; k++)
+        out[SIM_OBS_UX + k] = V[k];
+    for (int k = SIM_OBS_QX; k <= SIM_OBS_A3; k++)
+        out[k] = NAN;
 }
 
 size_t sim_observe_row_length(const sim_scene *scene)

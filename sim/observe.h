@@ -64,19 +64,50 @@ int sim_observable_find(const sim_scene *scene, const char *name, size_t len);
 /* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_BASE]. */
 void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE]);
 
-/* The observables at most quadratic in the velocities, T .. Pyz (SIM_OBS_T
- * to SIM_OBS_PYZ), of a lazily flowing system at time t, as exact conditional
- * expectations over the increments it still owes (issue 4, variance-reduced
- * observation): particle i owes a Gaussian increment of mean 0 and variance
- * s_i = spread (t - stamp_i) per component, independent of everything else,
- * so with S = (1/n) Σ s_i
+/* Running sums of the stored velocities and the lazy flow's stamps (issue
+ * 18, O(1) observation): vv = Σ v_x^2, v_y^2, v_z^2, v_x v_y, v_x v_z, v_y v_z.
+ * The event processes keep them current (effect.h, select_fire_sums) and the
+ * engine recomputes them from the particles every few n events, so that their
+ * round-off stays that of a sum over the particles. */
+typedef struct sim_sums {
+    double v[3];
+    double vv[6];
+    double stamp;   /* Σ stamp_i (0 without a lazy flow) */
+} sim_sums;
+
+/* sums += sign (v, v v^T, stamp) of one particle (sign = 1 or -1). */
+static inline void sim_sums_add(sim_sums *s, const double v[3], double stamp, double sign)
+{
+    const double x = sign * v[0], y = sign * v[1], z = sign * v[2];
+    s->v[0] += x;
+    s->v[1] += y;
+    s->v[2] += z;
+    s->vv[0] += x * v[0];
+    s->vv[1] += y * v[1];
+    s->vv[2] += z * v[2];
+    s->vv[3] += x * v[1];
+    s->vv[4] += x * v[2];
+    s->vv[5] += y * v[2];
+    s->stamp += sign * stamp;
+}
+
+/* The sums over every particle of p, from scratch (stamps 0 when p has none). */
+void sim_sums_compute(const sim_particles *p, sim_sums *s);
+
+/* The observables at most quadratic in the velocities, T .. Pyz, of a system
+ * of n particles with sums s at time t, as exact conditional expectations over
+ * the increments a lazy white-noise flow still owes (variance-reduced
+ * observation, SPEC §10; issue 18): particle i owes a Gaussian increment of
+ * mean 0 and variance s_i = spread (t - stamp_i) per component, independent of
+ * everything else, so with S = (1/n) Σ s_i = spread (t - Σ stamp_i/n)
  *   E T_raw = T_raw(v) + m S,   E u = u(v),
  *   E P_kk  = P_kk(v) + m S (1 - 1/n),   E P_kl = P_kl(v) (k != l),
  *   E T     = T(v) + m S (1 - 1/n)
- * (the 1/n: the centring velocity V owes S/n per component).  Writes only
- * those entries of out; p is not changed. */
-void sim_observe_pending(const sim_particles *p, double mass, double t, double spread,
-                         double out[SIM_OBS_BASE]);
+ * (the 1/n: the centring velocity V owes S/n per component); spread = 0: the
+ * system's own values.  q, a2 and a3 are not observed this way: out gets NaN
+ * for them. */
+void sim_observe_sums(const sim_sums *s, size_t n, double mass, double t, double spread,
+                      double out[SIM_OBS_BASE]);
 
 /* Observables in each output row of the scene: SIM_OBS_BASE, SIM_OBS_SHEAR_END
  * with [shear], or SIM_OBS_PROFILE + 4 shear.layers with the Lees-Edwards

@@ -10,6 +10,7 @@
 
 #include "effect.h"
 #include "engine.h"
+#include "observe.h"
 #include "particles.h"
 
 /* The velocity bound shared by the event processes whose majorants depend on
@@ -27,6 +28,8 @@ struct sim_run {
     double radius;
     int bound_grew;           /* set by sim_run_cover; the engine re-reads rates */
     sim_counts counts;
+    sim_sums sums;            /* of the stored velocities and stamps, when the engine
+                                 observes from them (observe.h), else unused */
 };
 
 /* Bring particle i forward to time t with the lazy flow (run->flow != NULL). */

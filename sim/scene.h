@@ -27,9 +27,10 @@ typedef enum sim_splitting {
  * lazily (issue 4): `sampled` brings every particle to the output time,
  * drawing its pending Brownian increment, and observes it (paper A);
  * `conditional` records T, T_raw, u and P as their exact expectations over
- * those increments (sim_observe_pending), then brings the particles as
- * before, so the trajectories are the same and only those estimators lose
- * the increments' noise.  q, a2, a3 are always observed on the brought system. */
+ * those increments from running sums (observe.h, sim_observe_sums; issue 18)
+ * and never draws them at output times, which leaves the trajectory law
+ * unchanged; q, a2, a3 are then not observed (NaN).  Also without heating
+ * (the sums are then the system's own moments, O(1) per output time). */
 typedef enum sim_observation {
     SIM_OBSERVE_SAMPLED,
     SIM_OBSERVE_CONDITIONAL

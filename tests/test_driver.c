@@ -479,6 +479,11 @@ static const char *const rows_variants[] = {"a: scene.seed=1", "b: scene.seed=2"
 static const vfy_check_spec rows_checks[] = {
     {.name = "{case} {label} {kind} b", .rule = vfy_rule_zscore, .value = "T_raw@b",
      .expected = "T_raw_finite_n", .from = 1, .tol = 4.5, .out = "z_b"},
+    /* two seeds of one scene agree; T_raw against T (12% apart at n = 8) does not */
+    {.name = "{case} {label} a vs b", .rule = vfy_rule_zscore_pair, .value = "T_raw@a",
+     .expected = "T_raw@b", .from = 1, .tol = 4.5},
+    {.name = "{case} {label} wrong pair", .rule = vfy_rule_zscore_pair, .value = "T_raw@a",
+     .expected = "T@b", .from = 1, .tol = 4.5, .guard = {vfy_guard_at_most, "n", NULL, 8, ""}},
     {.name = NULL}};
 static const char rows_columns[] = "kind:%s h:%g n:%.0f N:%.0f N_b=N@b:%.0f absent:%s";
 static const vfy_case_desc rows_desc = {
@@ -500,9 +505,11 @@ static void test_rows_variants_adjust(void **state)
     vfy_report_init(&r, NULL);
     char msg[512], path[600], table[2048];
     assert_int_equal(vfy_run_described(&rows_case, &o, &r, msg, sizeof msg), SIM_OK);
-    assert_int_equal(r.count, 2);
-    assert_int_equal(r.failed, 0);
+    assert_int_equal(r.count, 6);   /* the wrong pair is skipped at n = 32 */
+    assert_int_equal(r.failed, 1);
     assert_string_equal(r.checks[0].name, "driver-rows small tiny b");
+    assert_string_equal(r.checks[2].name, "driver-rows small wrong pair");
+    assert_int_equal(r.checks[2].verdict, VFY_FAIL);
     vfy_report_free(&r);
     snprintf(path, sizeof path, "%s/driver-rows.csv", out_dir);
     FILE *f = fopen(path, "r");

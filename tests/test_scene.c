@@ -411,7 +411,7 @@ static void test_all_scene_files(void **state)
     (void)state;
     static const char *const shipped[] = {
         "brs-ex1", "brs-ex2", "brs-ex3", "brs-ex4", "brs-ex5", "grw-ex3", "grw-ex4",
-        "grw-ex5", "hard-dissipation", "hard-extreme", "hard-long-run", "hard-nongaussian",
+        "grw-ex5", "grw-ex6", "grw-ex7", "grw-ex8", "hard-dissipation", "hard-extreme", "hard-long-run", "hard-nongaussian",
         "hard-stiff", "hard-tails", "ms-gaussian", "ms-non-gaussian", "ms-white-noise",
         "as", "as-slab", "msg", "split-ex5"};
     const size_t nshipped = sizeof shipped / sizeof *shipped;
@@ -487,7 +487,7 @@ static void test_write_shipped_scenes(void **state)
         count++;
     }
     closedir(d);
-    assert_int_equal(count, 21);
+    assert_int_equal(count, 24);
 }
 
 /* Random valid scenes: random values for random keys (awkward decimals,
@@ -798,9 +798,10 @@ TRAP(trap_exponent_contradicts_maxwell, "[collisions]\nkernel = maxwell\nexponen
      "t.ini:3: collisions.exponent: 1 contradicts kernel = maxwell (allowed 0, or kernel = vhs)")
 TRAP(trap_observation_unknown, "[scene]\nobservation = exact\n",
      "t.ini:2: scene.observation: 'exact' is unknown (allowed sampled, conditional)")
-TRAP(trap_observation_without_heating, "[scene]\nobservation = conditional\n[collisions]\n",
-     "t.ini:2: scene.observation: conditional needs white-noise heating and scheme = jump (it "
-     "averages over the heating's pending Brownian increments)")
+TRAP(trap_observation_with_steady, "[scene]\nobservation = conditional\n[collisions]\n[steady]\n",
+     "t.ini:2: scene.observation: conditional needs scheme = jump, no heating or white-noise "
+     "heating (it averages over the pending Brownian increments), and no [steady], [shear] or "
+     "[heat-flux] (they observe every particle)")
 TRAP(trap_unknown_section_no_keys, "[collisions]\nrate = 2\n[Heating]\n",
      "t.ini:3: [Heating]: unknown section (allowed " SECTIONS ")")
 
@@ -1172,7 +1173,7 @@ int main(void)
         cmocka_unit_test(trap_mixture_key_with_shell),
         cmocka_unit_test(trap_exponent_contradicts_maxwell),
         cmocka_unit_test(trap_observation_unknown),
-        cmocka_unit_test(trap_observation_without_heating),
+        cmocka_unit_test(trap_observation_with_steady),
         cmocka_unit_test(trap_unknown_section_no_keys),
         cmocka_unit_test(trap_override_too_long),
         cmocka_unit_test(trap_file_too_large),

@@ -1,4 +1,4 @@
-/* Conditional observation (sim/observe.h, sim_observe_pending): its values
+/* Conditional observation (sim/observe.h, sim_observe_sums): its values
  * are the exact expectations of the observables over the pending white-noise
  * increments.  A Monte Carlo average over many draws of those increments
  * (fixed seed) must agree within |z| <= 4.5, and must reject the formula
@@ -55,9 +55,9 @@ static void test_pending_is_the_conditional_expectation(void **state)
     memcpy(stamp, stamp0, sizeof stamp);
     sim_particles p = {N, v0, stamp, NULL};
     double exact[SIM_OBS_BASE], mc[SIM_OBS_BASE], se[SIM_OBS_BASE];
-    for (int k = 0; k < SIM_OBS_BASE; k++)
-        exact[k] = NAN;   /* must stay untouched beyond Pyz */
-    sim_observe_pending(&p, mass, t_obs, spread, exact);
+    sim_sums sums;
+    sim_sums_compute(&p, &sums);
+    sim_observe_sums(&sums, N, mass, t_obs, spread, exact);
     assert_memory_equal(stamp, stamp0, sizeof stamp);   /* p is not changed */
     monte_carlo(mc, se);
     for (int k = SIM_OBS_T; k <= SIM_OBS_PYZ; k++) {
@@ -72,7 +72,30 @@ static void test_pending_is_the_conditional_expectation(void **state)
         assert_true(zk <= 4.5);
     }
     for (int k = SIM_OBS_QX; k < SIM_OBS_BASE; k++)
-        assert_true(isnan(exact[k]));
+        assert_true(isnan(exact[k]));   /* not observed this way */
+    /* spread 0: the system's own values, as sim_observe computes them */
+    double own[SIM_OBS_BASE];
+    sim_observe(&p, mass, own);
+    sim_observe_sums(&sums, N, mass, t_obs, 0.0, exact);
+    for (int k = SIM_OBS_T; k <= SIM_OBS_PYZ; k++)
+        assert_close(exact[k], own[k], 1e-13, 1e-15);
+    /* a particle taken out and put back changed leaves the sums of the new system */
+    sim_sums_add(&sums, v0[1], stamp[1], -1.0);
+    const double changed[3] = {-0.4, 2.0, 0.1};
+    sim_sums_add(&sums, changed, 0.5, 1.0);
+    double v[N][3], st[N];
+    memcpy(v, v0, sizeof v);
+    memcpy(st, stamp0, sizeof st);
+    memcpy(v[1], changed, sizeof changed);
+    st[1] = 0.5;
+    sim_particles q = {N, v, st, NULL};
+    sim_sums direct;
+    sim_sums_compute(&q, &direct);
+    for (int k = 0; k < 3; k++)
+        assert_close(sums.v[k], direct.v[k], 1e-13, 1e-15);
+    for (int k = 0; k < 6; k++)
+        assert_close(sums.vv[k], direct.vv[k], 1e-13, 1e-15);
+    assert_close(sums.stamp, direct.stamp, 1e-13, 1e-15);
 }
 
 /* The wrong answer: the centred temperature without the 1/n of the centring

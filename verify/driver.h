@@ -358,6 +358,9 @@ vfy_rule_func vfy_rule_count;
  * tol (vfy_check_zscore); value `out` becomes the largest max |z| of the
  * checks that name it on this row. */
 vfy_rule_func vfy_rule_zscore;
+/* As vfy_rule_zscore for two independent estimates (two simulations): the
+ * half-widths of value and expected in quadrature. */
+vfy_rule_func vfy_rule_zscore_pair;
 
 /* value within half a unit of the last of `tol` printed decimals of expected
  * (or x), plus value `plus` (its half-width) when given (vfy_check_printed). */

@@ -27,18 +27,26 @@ int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
             VFY_RESULT_VERSION, solver, res->n, N);
     fprintf(f, "# cpu_seconds = %.17g\n# events = %" PRIu64 "\n# violations = %" PRIu64 "\n",
             res->cpu_seconds, res->counts.candidates, res->counts.violations);
+    /* an observable the run did not observe (NaN, e.g. q with conditional
+     * observation) is not reported: no column */
+    int reported[SIM_OBS_MAX];
     fputs("t", f);
     for (int k = 0; k < K; k++) {
         char column[SIM_OBS_NAME_LEN];
+        reported[k] = 1;
+        for (size_t m = 0; m < res->outputs; m++)
+            reported[k] &= !isnan(sim_result_mean(res, m, k));
         sim_observable_name(scene, (size_t)k, column);
-        fprintf(f, ",%s,%s_var", column, column);
+        if (reported[k])
+            fprintf(f, ",%s,%s_var", column, column);
     }
     fputc('\n', f);
     for (size_t m = 0; m < res->outputs; m++) {
         fprintf(f, "%.17g", res->t[m]);
         for (int k = 0; k < K; k++)
-            fprintf(f, ",%.17g,%.17g", sim_result_mean(res, m, k),
-                    sample_variance(sim_result_var(res, m, k), N));
+            if (reported[k])
+                fprintf(f, ",%.17g,%.17g", sim_result_mean(res, m, k),
+                        sample_variance(sim_result_var(res, m, k), N));
         fputc('\n', f);
     }
     if (res->nsteady > 0) {

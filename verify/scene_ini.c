@@ -584,11 +584,14 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
         return sim_error_set(err, SIM_EINVAL, "scene.step_follows_temperature",
                              "only used with scheme = timestep (scheme is jump)");
     if (s->observation == SIM_OBSERVE_CONDITIONAL
-        && (s->scheme != SIM_SCHEME_JUMP || !s->heating.present
-            || s->heating.type != SIM_HEATING_WHITE_NOISE))
+        && (s->scheme != SIM_SCHEME_JUMP
+            || (s->heating.present && s->heating.type != SIM_HEATING_WHITE_NOISE)
+            || s->steady.present || s->shear.present || s->heat_flux.present))
         return sim_error_set(err, SIM_EINVAL, "scene.observation",
-                             "conditional needs white-noise heating and scheme = jump (it "
-                             "averages over the heating's pending Brownian increments)");
+                             "conditional needs scheme = jump, no heating or white-noise "
+                             "heating (it averages over the pending Brownian increments), "
+                             "and no [steady], [shear] or [heat-flux] (they observe every "
+                             "particle)");
 
     int mix = s->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS;
     for (size_t i = 0; i < N_TWO; i++) {
