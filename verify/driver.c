@@ -315,37 +315,19 @@ vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, v
                            (uint64_t)expected_of(run, row, c));
 }
 
-vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
-                            const vfy_check_spec *c)
+/* Series value against series expected (pair: a second simulation, whose
+ * half-widths join value's in quadrature). */
+static vfy_verdict zscore_rule(vfy_report *r, const char *name, vfy_row *row,
+                               const vfy_check_spec *c, int pair)
 {
-    (void)run;
-    size_t M = row->res.outputs;
-    double *buf = malloc(3 * M * sizeof *buf), z = INFINITY;
-    vfy_verdict v = VFY_FAIL;
-    if (buf == NULL || vfy_row_series(row, c->value, buf, buf + M) != 0
-        || vfy_row_series(row, c->expected, buf + 2 * M, NULL) != 0)
-        vfy_check_true(r, name, 0, "no series %s or %s in this row", c->value, c->expected);
-    else
-        v = vfy_check_zscore(r, name, buf + c->from, buf + M + c->from, buf + 2 * M + c->from,
-                             M - c->from, c->tol, &z);
-    if (c->out != NULL && !(vfy_values_get(&row->values, c->out) >= z))
-        vfy_values_set(&row->values, c->out, z);
-    free(buf);
-    return v;
-}
-
-vfy_verdict vfy_rule_zscore_pair(vfy_report *r, const char *name, vfy_case_run *run,
-                                 vfy_row *row, const vfy_check_spec *c)
-{
-    (void)run;
     size_t M = row->res.outputs;
     double *buf = malloc(4 * M * sizeof *buf), z = INFINITY;
     vfy_verdict v = VFY_FAIL;
     if (buf == NULL || vfy_row_series(row, c->value, buf, buf + M) != 0
-        || vfy_row_series(row, c->expected, buf + 2 * M, buf + 3 * M) != 0) {
+        || vfy_row_series(row, c->expected, buf + 2 * M, pair ? buf + 3 * M : NULL) != 0) {
         vfy_check_true(r, name, 0, "no series %s or %s in this row", c->value, c->expected);
     } else {
-        for (size_t m = 0; m < M; m++)   /* independent: half-widths in quadrature */
+        for (size_t m = 0; pair && m < M; m++)
             buf[M + m] = hypot(buf[M + m], buf[3 * M + m]);
         v = vfy_check_zscore(r, name, buf + c->from, buf + M + c->from, buf + 2 * M + c->from,
                              M - c->from, c->tol, &z);
@@ -354,6 +336,20 @@ vfy_verdict vfy_rule_zscore_pair(vfy_report *r, const char *name, vfy_case_run *
         vfy_values_set(&row->values, c->out, z);
     free(buf);
     return v;
+}
+
+vfy_verdict vfy_rule_zscore(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
+                            const vfy_check_spec *c)
+{
+    (void)run;
+    return zscore_rule(r, name, row, c, 0);
+}
+
+vfy_verdict vfy_rule_zscore_pair(vfy_report *r, const char *name, vfy_case_run *run,
+                                 vfy_row *row, const vfy_check_spec *c)
+{
+    (void)run;
+    return zscore_rule(r, name, row, c, 1);
 }
 
 vfy_verdict vfy_rule_printed(vfy_report *r, const char *name, vfy_case_run *run, vfy_row *row,
