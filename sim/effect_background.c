@@ -180,25 +180,31 @@ FIRE_INSTANCE(fire_maxwell_flow_bounded_sums, 0, 1, 1, 1)
 FIRE_INSTANCE(fire_hard_spheres_sums, 1, 0, 1, 1)
 FIRE_INSTANCE(fire_hard_spheres_flow_sums, 1, 1, 1, 1)
 
+/* The instance for the engine's shape, [sums][bounded][lazy_flow]. */
+static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int bounded,
+                                         int sums)
+{
+    static const sim_event_fire_fn maxwell[2][2][2] = {
+        {{fire_maxwell, fire_maxwell_flow}, {fire_maxwell_bounded, fire_maxwell_flow_bounded}},
+        {{fire_maxwell_sums, fire_maxwell_flow_sums},
+         {fire_maxwell_bounded_sums, fire_maxwell_flow_bounded_sums}}};
+    static const sim_event_fire_fn hard_spheres[2][2] = {
+        {fire_hard_spheres, fire_hard_spheres_flow},
+        {fire_hard_spheres_sums, fire_hard_spheres_flow_sums}};
+    const background_params *p = e->params;
+    const int l = lazy_flow != 0, b = bounded != 0, k = sums != 0;
+    return p->hard_spheres ? hard_spheres[k][l] : maxwell[k][b][l];
+}
+
 static sim_event_fire_fn background_select_fire(const sim_effect *e, int lazy_flow, int bounded)
 {
-    const background_params *p = e->params;
-    if (p->hard_spheres)
-        return lazy_flow ? fire_hard_spheres_flow : fire_hard_spheres;
-    if (bounded)
-        return lazy_flow ? fire_maxwell_flow_bounded : fire_maxwell_bounded;
-    return lazy_flow ? fire_maxwell_flow : fire_maxwell;
+    return select_instance(e, lazy_flow, bounded, 0);
 }
 
 static sim_event_fire_fn background_select_fire_sums(const sim_effect *e, int lazy_flow,
                                                      int bounded)
 {
-    const background_params *p = e->params;
-    if (p->hard_spheres)
-        return lazy_flow ? fire_hard_spheres_flow_sums : fire_hard_spheres_sums;
-    if (bounded)
-        return lazy_flow ? fire_maxwell_flow_bounded_sums : fire_maxwell_bounded_sums;
-    return lazy_flow ? fire_maxwell_flow_sums : fire_maxwell_sums;
+    return select_instance(e, lazy_flow, bounded, 1);
 }
 
 static const sim_effect_type background_type = {

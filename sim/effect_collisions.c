@@ -312,34 +312,36 @@ static double fire_hard_spheres_flow(const sim_effect *e, sim_run *run, void *st
     return fire_hard_spheres_at(e, run, state, t, 1);
 }
 
-static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow, int bounded)
+/* The instance for the engine's shape, [sums][bounded][lazy_flow].  Hard
+ * spheres keep no running sums (their jump scheme passes over the particles
+ * at every output time for the bound anyway): NULL, and the engine then
+ * observes conditionally from the particles. */
+static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int bounded,
+                                         int sums)
 {
+    static const sim_event_fire_fn maxwell[2][2][2] = {
+        {{fire_maxwell, fire_maxwell_flow}, {fire_maxwell_bounded, fire_maxwell_flow_bounded}},
+        {{fire_maxwell_sums, fire_maxwell_flow_sums},
+         {fire_maxwell_bounded_sums, fire_maxwell_flow_bounded_sums}}};
+    static const sim_event_fire_fn hard_spheres[2][2] = {
+        {fire_hard_spheres, fire_hard_spheres_flow}, {NULL, NULL}};
+    static const sim_event_fire_fn vhs[2][2] = {{fire_vhs, fire_vhs_flow},
+                                                {fire_vhs_sums, fire_vhs_flow_sums}};
     const collisions_params *p = e->params;
-    if (p->lambda == 0.0) {
-        if (bounded)
-            return lazy_flow ? fire_maxwell_flow_bounded : fire_maxwell_bounded;
-        return lazy_flow ? fire_maxwell_flow : fire_maxwell;
-    }
-    if (p->lambda == 1.0)
-        return lazy_flow ? fire_hard_spheres_flow : fire_hard_spheres;
-    return lazy_flow ? fire_vhs_flow : fire_vhs;
+    const int l = lazy_flow != 0, b = bounded != 0, k = sums != 0;
+    return p->lambda == 0.0 ? maxwell[k][b][l] : p->lambda == 1.0 ? hard_spheres[k][l]
+                                                                 : vhs[k][l];
 }
 
-/* Hard spheres keep no running sums (their jump scheme passes over the
- * particles at every output time for the bound anyway): the engine then
- * observes conditionally from the particles. */
+static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow, int bounded)
+{
+    return select_instance(e, lazy_flow, bounded, 0);
+}
+
 static sim_event_fire_fn collisions_select_fire_sums(const sim_effect *e, int lazy_flow,
                                                      int bounded)
 {
-    const collisions_params *p = e->params;
-    if (p->lambda == 0.0) {
-        if (bounded)
-            return lazy_flow ? fire_maxwell_flow_bounded_sums : fire_maxwell_bounded_sums;
-        return lazy_flow ? fire_maxwell_flow_sums : fire_maxwell_sums;
-    }
-    if (p->lambda == 1.0)
-        return NULL;
-    return lazy_flow ? fire_vhs_flow_sums : fire_vhs_sums;
+    return select_instance(e, lazy_flow, bounded, 1);
 }
 
 /* ------------------------------------------------------ batched loops */
