@@ -69,6 +69,17 @@ typedef struct sim_effect_type {
      * that variance per unit time; 0 otherwise.  Conditional observation
      * (observe.h, sim_observe_sums) needs it. */
     double (*spread)(const sim_effect *e);
+    /* For a flow that maps every velocity by one affine map over a step,
+     * v -> o + f (v - o) (the Gaussian thermostat, paper C Eqs. (12), (61)):
+     * the factor f over a step of h, given the run (run->scale, the product of
+     * the factors not yet applied to the stored velocities, and run->sums, of
+     * the stored velocities); NULL otherwise.  The engine then keeps the map
+     * global instead of stepping every particle (engine.c): collisions are
+     * covariant under it, so they act on the stored velocities with their rate
+     * scaled by f^lambda. */
+    double (*linear_factor)(const sim_effect *e, const sim_run *run, double h);
+    int linear_centred;      /* ... o = the bulk velocity (else o = 0) */
+    int linear_reads_sums;   /* ... f reads run->sums (the stages keep them) */
 
     /* Event processes (NULL for flows). */
     size_t state_size;
@@ -94,10 +105,11 @@ typedef struct sim_effect_type {
      * forward (scene.observation = conditional, issue 18). */
     sim_event_fire_fn (*select_fire_sums)(const sim_effect *e, int lazy_flow, int bounded);
     /* The time-step scheme's stage of length h for this process (NULL: none,
-     * and the engine refuses the scene).  The per-run state is zeroed at the
-     * start of each run and `reset` is called at each output time, as in the
-     * jump scheme. */
-    sim_event_stage_fn (*select_stage)(const sim_effect *e);
+     * and the engine refuses the scene); with sums, the stage also keeps
+     * run->sums current (a linear flow that reads the temperature, engine.c).
+     * The per-run state is zeroed at the start of each run and `reset` is
+     * called at each output time, as in the jump scheme. */
+    sim_event_stage_fn (*select_stage)(const sim_effect *e, int sums);
     /* Optional (may be NULL): the fast path of the jump scheme for an engine in
      * which this is the only event process and no flow is lazy, so candidate
      * times are never needed (engine.c).  See sim_event_fire_many_fn. */

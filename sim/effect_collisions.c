@@ -57,6 +57,9 @@
  * bound, so the paper's "omega_max updated when exceeded" never has to act;
  * a drawn particle beyond R would still be counted as a violation.  When R
  * grows within the stage, the remaining stage time is spent at the new rate.
+ * With collisions.rule = relative-speed the stage accepts as the jump scheme
+ * does (stage 2: |g| / (a_i + a_j), then e uniform) at the jump scheme's rate
+ * 4 pi gamma C (n - 1) R, a quarter of R_c: equal in distribution (SPEC §5).
  * Paper E's frictional elastic hard spheres (collisions.model = ehs) collide
  * elastically at beta = (1 + alpha)/2 times this rate.
  * Maxwell molecules and VHS (issue 15: the heat-flux force on any kernel):
@@ -78,8 +81,10 @@ typedef struct collisions_params {
     double lambda;      /* VHS exponent */
     double alpha;       /* restitution */
     double prefactor;   /* 2 pi gamma C (n - 1) */
-    double stage_time;  /* time-step scheme: 1 / (8 pi gamma C (n - 1)), the time per
-                           candidate times U_max */
+    double stage_time;  /* time-step scheme, hard spheres: the time per candidate times
+                           U_max, 1 / (8 pi gamma C (n - 1)) by the contact rule and
+                           1 / (2 pi gamma C (n - 1)) by |g| (collisions.rule) */
+    int contact;        /* ... the contact rule (paper C), else |g| (paper A) */
 } collisions_params;
 
 typedef struct collisions_state {
@@ -166,6 +171,17 @@ static inline void sums_restore(sim_run *run, uint32_t i, uint32_t j, const int 
     }
 }
 
+/* Velocities vi and vj (no lazy flow: stamps 0) out of the running sums
+ * before a collision changes them (with sums, a constant). */
+static inline void sums_remove(sim_run *run, const double vi[3], const double vj[3],
+                               const int sums)
+{
+    if (sums) {
+        sim_sums_add(&run->sums, vi, 0.0, -1.0);
+        sim_sums_add(&run->sums, vj, 0.0, -1.0);
+    }
+}
+
 /* Let the bound cover velocity v of a particle that a lazy flow will keep
  * moving: with the flow's reach until the next reset as a margin, as the
  * engine gives every particle at the reset.  Without it a particle just
@@ -200,7 +216,7 @@ static inline double bounded_distance(const collisions_params *p, collisions_sta
 /* One candidate hard-sphere collision at time t (paper A Algorithm, steps
  * 2.3-2.10, with the two-stage acceptance of the header comment). */
 static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate,
-                                          double t, const int lazy_flow)
+                                          double t, const int lazy_flow, const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -223,7 +239,9 @@ static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, voi
 
     double unit[3];
     sim_rng_unit_sphere(run->rng, unit);
+    sums_remove(run, vi, vj, sums);   /* no lazy flow with sums (select_instance) */
     sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
+    sums_restore(run, i, j, 0, sums);
     run->counts.collisions++;
     if (lazy_flow) {
         cover_moving(run, s, vi);
@@ -304,18 +322,24 @@ FIRE_INSTANCE(fire_vhs_flow_sums, KERNEL_VHS, 1, 1, 1)
 
 static double fire_hard_spheres(const sim_effect *e, sim_run *run, void *state, double t)
 {
-    return fire_hard_spheres_at(e, run, state, t, 0);
+    return fire_hard_spheres_at(e, run, state, t, 0, 0);
 }
 
 static double fire_hard_spheres_flow(const sim_effect *e, sim_run *run, void *state, double t)
 {
-    return fire_hard_spheres_at(e, run, state, t, 1);
+    return fire_hard_spheres_at(e, run, state, t, 1, 0);
+}
+
+static double fire_hard_spheres_sums(const sim_effect *e, sim_run *run, void *state, double t)
+{
+    return fire_hard_spheres_at(e, run, state, t, 0, 1);
 }
 
 /* The instance for the engine's shape, [sums][bounded][lazy_flow].  Hard
- * spheres keep no running sums (their jump scheme passes over the particles
- * at every output time for the bound anyway): NULL, and the engine then
- * observes conditionally from the particles. */
+ * spheres keep running sums only without a lazy flow (for the jump scheme's
+ * keep-temperature rescaling; with white noise their jump scheme passes over
+ * the particles at every output time for the bound anyway): NULL with one,
+ * and the engine then observes conditionally from the particles. */
 static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int bounded,
                                          int sums)
 {
@@ -324,7 +348,7 @@ static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int
         {{fire_maxwell_sums, fire_maxwell_flow_sums},
          {fire_maxwell_bounded_sums, fire_maxwell_flow_bounded_sums}}};
     static const sim_event_fire_fn hard_spheres[2][2] = {
-        {fire_hard_spheres, fire_hard_spheres_flow}, {NULL, NULL}};
+        {fire_hard_spheres, fire_hard_spheres_flow}, {fire_hard_spheres_sums, NULL}};
     static const sim_event_fire_fn vhs[2][2] = {{fire_vhs, fire_vhs_flow},
                                                 {fire_vhs_sums, fire_vhs_flow_sums}};
     const collisions_params *p = e->params;
@@ -363,8 +387,8 @@ static inline uint32_t bit_range(unsigned lo, unsigned hi)
  * the rule of collide.h); 1: the time-step scheme's contact rule (s uniform,
  * stage 2: Θ(g.s) (g.s) / (a_i + a_j)); a constant in each caller. */
 static inline __attribute__((always_inline)) uint64_t
-batched_hard_spheres(const collisions_params *p, collisions_state *s,
-                                            sim_run *run, uint64_t max, const int contact)
+batched_hard_spheres(const collisions_params *p, collisions_state *s, sim_run *run, uint64_t max,
+                     const int contact, const int sums)
 {
     gsl_rng *rng = run->rng;
     sim_particles *ps = &run->p;
@@ -416,6 +440,7 @@ batched_hard_spheres(const collisions_params *p, collisions_state *s,
             /* Θ(g.s): gs <= 0 (the spheres move apart) never passes */
             if (!sim_rng_accept32_ratio(rng, uj, gs, ai + aj))
                 continue;
+            sums_remove(run, vi, vj, sums);
             sim_collide_contact(vi, vj, alpha, gs, unit);
         } else {
             const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
@@ -423,7 +448,12 @@ batched_hard_spheres(const collisions_params *p, collisions_state *s,
             if (!sim_rng_accept32_ratio(rng, uj, gnorm, ai + aj))
                 continue;
             sim_rng_unit_sphere(rng, unit);
+            sums_remove(run, vi, vj, sums);
             sim_collide_inelastic(vi, vj, alpha, gnorm, unit);
+        }
+        if (sums) {
+            sim_sums_add(&run->sums, vi, 0.0, 1.0);
+            sim_sums_add(&run->sums, vj, 0.0, 1.0);
         }
         collisions++;
         /* sim_run_cover, with the loop's copies of the centre and of R
@@ -456,7 +486,7 @@ static uint64_t fire_many_hard_spheres(const sim_effect *e, sim_run *run, void *
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
     follow_bound(p, s, run);
-    const uint64_t done = batched_hard_spheres(p, s, run, max, 0);
+    const uint64_t done = batched_hard_spheres(p, s, run, max, 0, 0);
     *rate = follow_bound(p, s, run);
     return done;
 }
@@ -495,11 +525,13 @@ static sim_event_fire_many_fn collisions_select_fire_many(const sim_effect *e)
                               : NULL;
 }
 
-/* One collision stage of the time-step scheme (hard spheres, contact rule,
- * the two-stage acceptance of the header comment): floor(credit / dtc)
- * candidates at dtc = stage_time / U_max each; when a collision grows the
- * bound, the stage time left is spent at the new U_max. */
-static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h)
+/* One collision stage of the time-step scheme (hard spheres, the two-stage
+ * acceptance of the header comment, by the contact rule or by |g|):
+ * floor(credit / dtc) candidates at dtc = stage_time / U_max each; when a
+ * collision grows the bound, the stage time left is spent at the new U_max.
+ * contact and sums (keep run->sums current) are constants in each instance. */
+static inline void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h,
+                                      const int contact, const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -514,7 +546,7 @@ static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, 
         const double count = floor(credit / dtc);
         if (!(count >= 1.0))
             break;
-        const uint64_t done = batched_hard_spheres(p, s, run, (uint64_t)count, 1);
+        const uint64_t done = batched_hard_spheres(p, s, run, (uint64_t)count, contact, sums);
         credit -= (double)done * dtc;
         if (done == (uint64_t)count)
             break;
@@ -523,13 +555,23 @@ static void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, 
     run->bound_grew = 0;   /* followed above; no other process shares the bound */
 }
 
+#define STAGE_HS_INSTANCE(name, contact, sums)                                      \
+    static void name(const sim_effect *e, sim_run *run, void *state, double h)      \
+    {                                                                               \
+        stage_hard_spheres(e, run, state, h, contact, sums);                        \
+    }
+STAGE_HS_INSTANCE(stage_hs_contact, 1, 0)
+STAGE_HS_INSTANCE(stage_hs_speed, 0, 0)
+STAGE_HS_INSTANCE(stage_hs_contact_sums, 1, 1)
+STAGE_HS_INSTANCE(stage_hs_speed_sums, 0, 1)
+
 /* One collision stage of the time-step scheme for Maxwell molecules and VHS
  * (paper A's rule: a uniform pair, accepted with (|g|/U_max)^lambda, e
  * uniform): floor(credit x rate) candidates at the jump scheme's majorant
  * rate, fired as the jump scheme fires them; when a collision grows the bound
  * (VHS), the stage time left is spent at the new rate. */
 static inline void stage_uniform_pair(const sim_effect *e, sim_run *run, void *vstate, double h,
-                                      const enum kernel_case kernel)
+                                      const enum kernel_case kernel, const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -547,8 +589,8 @@ static inline void stage_uniform_pair(const sim_effect *e, sim_run *run, void *v
         while (done < (uint64_t)count) {
             done++;
             if (kernel == KERNEL_MAXWELL)
-                fire_maxwell(e, run, vstate, 0.0);
-            else if (fire_vhs(e, run, vstate, 0.0) != rate)
+                (sums ? fire_maxwell_sums : fire_maxwell)(e, run, vstate, 0.0);
+            else if ((sums ? fire_vhs_sums : fire_vhs)(e, run, vstate, 0.0) != rate)
                 break;
         }
         credit -= (double)done / rate;
@@ -559,20 +601,26 @@ static inline void stage_uniform_pair(const sim_effect *e, sim_run *run, void *v
     run->bound_grew = 0;   /* followed above; no other process shares the bound */
 }
 
-static void stage_maxwell(const sim_effect *e, sim_run *run, void *vstate, double h)
-{
-    stage_uniform_pair(e, run, vstate, h, KERNEL_MAXWELL);
-}
+#define STAGE_PAIR_INSTANCE(name, kernel, sums)                                     \
+    static void name(const sim_effect *e, sim_run *run, void *state, double h)      \
+    {                                                                               \
+        stage_uniform_pair(e, run, state, h, kernel, sums);                         \
+    }
+STAGE_PAIR_INSTANCE(stage_maxwell, KERNEL_MAXWELL, 0)
+STAGE_PAIR_INSTANCE(stage_vhs, KERNEL_VHS, 0)
+STAGE_PAIR_INSTANCE(stage_maxwell_sums, KERNEL_MAXWELL, 1)
+STAGE_PAIR_INSTANCE(stage_vhs_sums, KERNEL_VHS, 1)
 
-static void stage_vhs(const sim_effect *e, sim_run *run, void *vstate, double h)
-{
-    stage_uniform_pair(e, run, vstate, h, KERNEL_VHS);
-}
-
-static sim_event_stage_fn collisions_select_stage(const sim_effect *e)
+static sim_event_stage_fn collisions_select_stage(const sim_effect *e, int sums)
 {
     const collisions_params *p = e->params;
-    return p->lambda == 1.0 ? stage_hard_spheres : p->lambda == 0.0 ? stage_maxwell : stage_vhs;
+    if (p->lambda == 1.0 && p->contact)
+        return sums ? stage_hs_contact_sums : stage_hs_contact;
+    if (p->lambda == 1.0)
+        return sums ? stage_hs_speed_sums : stage_hs_speed;
+    if (p->lambda == 0.0)
+        return sums ? stage_maxwell_sums : stage_maxwell;
+    return sums ? stage_vhs_sums : stage_vhs;
 }
 
 static const sim_effect_type collisions_type = {
@@ -600,7 +648,8 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
     p->alpha = ehs ? 1.0 : alpha;
     p->prefactor = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
                    * (double)(scene->particles.n - 1) * sim_scene_collision_rate_factor(scene);
-    p->stage_time = 1.0 / (4.0 * p->prefactor);
+    p->contact = scene->collisions.rule == SIM_RULE_CONTACT;
+    p->stage_time = p->contact ? 1.0 / (4.0 * p->prefactor) : 1.0 / p->prefactor;
     *effect = (sim_effect){.type = &collisions_type, .params = p};
     return SIM_OK;
 }

@@ -18,8 +18,11 @@
  * with k = (1/n) Σ v̂_j (Eq. (62)), so the total momentum is kept to round-off.
  * It couples the particles (through k), so it has only `step`.
  *
- * Only white noise runs in the jump scheme; the constructor refuses the others
- * there, naming heating.type.
+ * The Gaussian thermostats are linear maps (linear_factor): the engine keeps
+ * one global factor instead of stepping every particle.  The jump scheme runs
+ * white noise and the keep-temperature rescaling (after each collision: the
+ * h -> 0 limit of rescaling after every step); the constructor refuses the
+ * others there, naming heating.type.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -104,9 +107,18 @@ static void gaussian_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
+/* v -> e^{zeta h} v about the origin. */
+static double gaussian_factor(const sim_effect *e, const sim_run *run, double h)
+{
+    (void)run;
+    const heating_params *p = e->params;
+    return exp(p->strength * h);
+}
+
 static const sim_effect_type gaussian_type = {
     .name = "heating",
     .step = gaussian_step,
+    .linear_factor = gaussian_factor,
 };
 
 /* Rescale the peculiar velocities so that T/m = target (h does not enter). */
@@ -137,9 +149,28 @@ static void keep_temperature_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
+/* The factor that brings T/m of the velocities o + scale f (w - o) to the
+ * target, o the bulk velocity, from the sums of the stored w (h does not
+ * enter): f = sqrt(target / (scale^2 theta_w)), theta_w = T_w/m. */
+static double keep_temperature_factor(const sim_effect *e, const sim_run *run, double h)
+{
+    (void)h;
+    const heating_params *p = e->params;
+    const sim_sums *s = &run->sums;
+    const double n = (double)run->p.n;
+    const double c2 = s->vv[0] + s->vv[1] + s->vv[2]
+                      - (s->v[0] * s->v[0] + s->v[1] * s->v[1] + s->v[2] * s->v[2]) / n;
+    if (!(c2 > 0.0))   /* every velocity equal: nothing to rescale */
+        return 1.0;
+    return sqrt(3.0 * n * p->target / c2) / run->scale;
+}
+
 static const sim_effect_type keep_temperature_type = {
     .name = "heating",
     .step = keep_temperature_step,
+    .linear_factor = keep_temperature_factor,
+    .linear_centred = 1,
+    .linear_reads_sums = 1,
 };
 
 /* ----------------------------------------------------------- non-Gaussian */
@@ -190,10 +221,15 @@ sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_er
         type = &non_gaussian_type;
         break;
     }
-    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL)
+    /* the jump scheme: a lazy flow, or the keep-temperature rescaling, which
+     * acts only at collisions (between them T does not change), so the engine
+     * applies it after each one, exactly (engine.c) */
+    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL
+        && type != &keep_temperature_type)
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
                              "%s heating needs scene.scheme = timestep (the jump scheme "
-                             "supports white-noise)",
+                             "supports white-noise, and gaussian with keep_temperature = "
+                             "true)",
                              scene->heating.type == SIM_HEATING_GAUSSIAN ? "gaussian"
                                                                          : "non-gaussian");
     heating_params *p = malloc(sizeof *p);

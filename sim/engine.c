@@ -42,7 +42,12 @@
  * "euler", first order in h), or Strang splitting, flow h/2, collisions h,
  * flow h/2 (second order); the engine picks the step function once.  The
  * velocity bound is recomputed from scratch at each output time and grows
- * (sim_run_cover) whenever a stage moves a velocity beyond it.
+ * (sim_run_cover) whenever a stage moves a velocity beyond it.  When white
+ * noise is the only flow and the stages fire the jump scheme's candidates
+ * (collisions.rule = relative-speed, or a kernel other than hard spheres) it
+ * is lazy here too (interval_lazy); a Gaussian thermostat alone is a linear
+ * map kept global (stages_scaled, apply_linear), which the jump scheme also
+ * runs for the keep-temperature rescaling (run_jump_linear).
  *
  * The Lees-Edwards slab (shear.boundary = lees-edwards, slab.h) is the
  * time-step scheme with positions: its own ordered stages per step (streaming
@@ -84,6 +89,8 @@
 #define POISSON_MAX 1e9
 
 typedef void (*step_fn)(const sim_engine *e, sim_workspace *ws, double h);
+typedef void (*stages_fn)(const sim_engine *e, sim_workspace *ws, double h);
+typedef void (*flows_fn)(const sim_engine *e, sim_workspace *ws, double h);
 typedef void (*interval_fn)(const sim_engine *e, sim_workspace *ws);
 typedef uint64_t (*fire_some_fn)(const sim_engine *e, sim_workspace *ws, double *rates,
                                  double *total, uint64_t max);
@@ -101,7 +108,10 @@ struct sim_engine {
     size_t nflows;        /* the flows in the order a step applies them: shear, the EHS
                              drag, then a thermostat or the heat-flux force */
     sim_effect flows[MAX_FLOWS];
-    int lazy_flow;        /* jump scheme: flows[0] is applied lazily (stamps) */
+    int lazy_flow;        /* flows[0] is applied lazily (stamps): white noise */
+    int linear;           /* flows[0] is a linear map kept global (run->scale) */
+    double rate_exponent; /* ... the collisions' lambda: their rate scales as scale^lambda */
+    int stage_sums;       /* ... its factor reads run->sums: the stages keep them */
     int conditional;      /* scene.observation = conditional: T .. Pyz as expectations
                              over the lazy flow's pending increments, which are never
                              drawn at output times (observe.h, sim_observe_sums) */
@@ -122,6 +132,8 @@ struct sim_engine {
     /* time-step scheme */
     sim_event_stage_fn stage[MAX_EVENTS];
     step_fn step;         /* Lie (euler) step, or collisions only */
+    stages_fn stages;     /* the stages of a step (scaled by a linear flow's factor) */
+    flows_fn flow_step;   /* the flows of a step (or the linear flow's factor) */
     interval_fn interval; /* one output interval of steps */
     size_t steps;         /* steps per output interval */
     double h;             /* the step */
@@ -141,6 +153,9 @@ struct sim_workspace {
     size_t samples;          /* how many samples those sums hold */
     size_t steps;            /* time-step scheme: steps in the current output interval */
     double h;                /* ... and their length */
+    double t0;               /* ... and its start */
+    double rates[MAX_EVENTS];/* ... with a lazy flow: the processes' majorant rates */
+    double credit[MAX_EVENTS];/* ... and the stage time they have not spent */
 };
 
 static void append_name(sim_engine *e, const char *name)
@@ -179,10 +194,27 @@ static void flow_steps(const sim_engine *e, sim_workspace *ws, double h)
         e->flows[k].type->step(&e->flows[k], &ws->run, h);
 }
 
+/* With a linear flow kept global (effect.h, linear_factor): the stored
+ * velocities w stand for o + scale (w - o), and a collision rule is covariant
+ * under that map (collide.h: translation and scaling commute with it), so the
+ * stages act on w; only the rate scales, as |g|^lambda, so a stage of h at the
+ * true velocities is one of h scale^lambda at the stored ones.  O(1) per step;
+ * the map is applied to every particle at output times (apply_linear). */
+static void stages_scaled(const sim_engine *e, sim_workspace *ws, double h)
+{
+    const double s = ws->run.scale, lambda = e->rate_exponent;
+    stages(e, ws, h * (lambda == 1.0 ? s : lambda == 0.0 ? 1.0 : pow(s, lambda)));
+}
+
+static void linear_step(const sim_engine *e, sim_workspace *ws, double h)
+{
+    ws->run.scale *= e->flows[0].type->linear_factor(&e->flows[0], &ws->run, h);
+}
+
 static void step_euler(const sim_engine *e, sim_workspace *ws, double h)
 {
-    stages(e, ws, h);
-    flow_steps(e, ws, h);
+    e->stages(e, ws, h);
+    e->flow_step(e, ws, h);
 }
 
 static void step_no_flow(const sim_engine *e, sim_workspace *ws, double h)
@@ -195,6 +227,53 @@ static void interval_lie(const sim_engine *e, sim_workspace *ws)
 {
     for (size_t k = 0; k < ws->steps; k++)
         e->step(e, ws, ws->h);
+}
+
+/* A stage of length h of event process k made of the jump scheme's
+ * candidates, all at time t (each brings the particles it draws to t):
+ * floor(credit x rate) of them at the process's majorant rate, the remainder
+ * kept for the next stage, as the other stages do; when a candidate changes
+ * the rate (a collision grows the bound) the stage time left is spent at the
+ * new rate. */
+static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double h, double t)
+{
+    void *state = ws->states + e->state_offset[k];
+    double credit = ws->credit[k] + h, rate = ws->rates[k];
+    for (;;) {
+        if (!(rate > 0.0)) {   /* every velocity equal: no collision can happen */
+            credit = 0.0;
+            break;
+        }
+        const double count = floor(credit * rate);
+        if (!(count >= 1.0))
+            break;
+        double after = rate;
+        uint64_t done = 0;
+        while (done < (uint64_t)count && after == rate) {
+            done++;
+            after = e->fire[k](&e->events[k], &ws->run, state, t);
+        }
+        credit -= (double)done / rate;
+        rate = after;
+        if (done == (uint64_t)count)
+            break;
+    }
+    ws->credit[k] = fmax(credit, 0.0);
+    ws->rates[k] = rate;
+}
+
+/* The time-step scheme with a lazy flow (white noise, effect.h): the flow's
+ * steps only move the clock, and step k's stages fire at t0 + (k + theta) h,
+ * theta = 0 for Lie splitting (collisions, then the flow) and 1/2 for Strang
+ * (half the flow, collisions, half the flow): each particle a stage draws is
+ * brought to that time, so the same increments are drawn, in law, as by
+ * stepping every particle (Gaussian increments over adjoining times add). */
+static void interval_lazy(const sim_engine *e, sim_workspace *ws)
+{
+    const double theta = e->scene.splitting == SIM_SPLIT_STRANG ? 0.5 : 0.0;
+    for (size_t k = 0; k < ws->steps; k++)
+        for (size_t q = 0; q < e->nevents; q++)
+            stage_fired(e, ws, q, ws->h, ws->t0 + ((double)k + theta) * ws->h);
 }
 
 /* Strang: flow h/2, collisions h, flow h/2 per step, with the two half flows
@@ -210,13 +289,13 @@ static void interval_lie(const sim_engine *e, sim_workspace *ws)
 static void interval_strang(const sim_engine *e, sim_workspace *ws)
 {
     const double h = ws->h;
-    flow_steps(e, ws, 0.5 * h);
+    e->flow_step(e, ws, 0.5 * h);
     for (size_t k = 1; k < ws->steps; k++) {
-        stages(e, ws, h);
-        flow_steps(e, ws, h);
+        e->stages(e, ws, h);
+        e->flow_step(e, ws, h);
     }
-    stages(e, ws, h);
-    flow_steps(e, ws, 0.5 * h);
+    e->stages(e, ws, h);
+    e->flow_step(e, ws, 0.5 * h);
 }
 
 /* One output interval of the Lees-Edwards slab: its own ordered stages per
@@ -233,7 +312,7 @@ static sim_status build_timestep(sim_engine *e, sim_error *err)
     const sim_scene *scene = &e->scene;
     for (size_t k = 0; k < e->nevents; k++) {
         const sim_effect *ev = &e->events[k];
-        e->stage[k] = ev->type->select_stage ? ev->type->select_stage(ev) : NULL;
+        e->stage[k] = ev->type->select_stage ? ev->type->select_stage(ev, e->stage_sums) : NULL;
         if (e->stage[k] == NULL)
             return sim_error_set(err, SIM_EUNSUPPORTED, ev->type->name,
                                  "%s is not implemented in the time-step scheme",
@@ -243,9 +322,12 @@ static sim_status build_timestep(sim_engine *e, sim_error *err)
         if (e->flows[k].type->step == NULL)
             return sim_error_set(err, SIM_EUNSUPPORTED, e->flows[k].type->name,
                                  "%s has no time-step form", e->flows[k].type->name);
+    e->stages = e->linear ? stages_scaled : stages;
+    e->flow_step = e->linear ? linear_step : flow_steps;
     e->step = e->nflows ? step_euler : step_no_flow;
-    e->interval = e->nflows && scene->splitting == SIM_SPLIT_STRANG ? interval_strang
-                                                                    : interval_lie;
+    e->interval = e->lazy_flow ? interval_lazy
+                  : e->nflows && scene->splitting == SIM_SPLIT_STRANG ? interval_strang
+                                                                      : interval_lie;
     if (!(scene->dt > 0.0) || !isfinite(scene->dt))
         return sim_error_set(err, SIM_EINVAL, "scene.dt", "%g is not a positive step",
                              scene->dt);
@@ -319,13 +401,34 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         && (status = sim_effect_ehs_drag(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
     if (status == SIM_OK && scene->heating.present
-        && (status = sim_effect_heating(scene, &flow, err)) == SIM_OK) {
-        e->lazy_flow = !timestep;   /* the jump scheme's one flow (white noise only) */
+        && (status = sim_effect_heating(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
-    }
     if (status == SIM_OK && scene->heat_flux.present   /* refuses [heating] */
         && (status = sim_effect_heat_flux(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
+    /* White noise is lazy, and a Gaussian thermostat a global linear map, when
+     * it is the only flow: always in the jump scheme; in the time-step scheme
+     * when the stage fires the jump scheme's candidates (not by the contact
+     * rule, which the batched stage draws without bringing particles) and
+     * the background and the slab are absent (the heating constructor
+     * refuses the other thermostats in the jump scheme). */
+    const int hard_contact = scene->collisions.present && scene->collisions.exponent == 1.0
+                             && scene->collisions.rule == SIM_RULE_CONTACT;
+    if (status == SIM_OK && e->nflows == 1 && scene->heating.present && !slab) {
+        const sim_effect_type *type = e->flows[0].type;
+        e->lazy_flow = type->advance != NULL && (!timestep || !hard_contact);
+        e->linear = type->advance == NULL && type->linear_factor != NULL
+                    && e->nevents == 1 && scene->collisions.present;
+        e->rate_exponent = scene->collisions.exponent;
+        e->stage_sums = e->linear && type->linear_reads_sums;
+    }
+    if (status == SIM_OK && !timestep && e->nflows > 0 && !e->lazy_flow && !e->linear
+        && e->nevents > 0)
+        status = sim_error_set(err, SIM_EUNSUPPORTED,
+                               scene->heating.present ? "heating.type" : "scene.scheme",
+                               "the jump scheme applies this flow only lazily (white noise) or "
+                               "after binary collisions (keep_temperature, without "
+                               "[background])");
     if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
         if (timestep || scene->steady.present || scene->shear.present
             || (e->nflows > 0 && (!e->lazy_flow || e->flows[0].type->spread == NULL)))
@@ -370,8 +473,11 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         if (ev->type->bound_centre && ev->type->bound_centre(ev, e->centre))
             e->fixed_centre = 1;
     }
-    /* observation from running sums where every event process keeps them */
-    e->sums = e->conditional;
+    /* running sums where every event process keeps them: for conditional
+     * observation, and for the jump scheme's keep-temperature rescaling
+     * (run_jump_linear), which needs them */
+    const int linear_sums = e->linear && !timestep && e->flows[0].type->linear_reads_sums;
+    e->sums = e->conditional || linear_sums;
     for (size_t k = 0; k < e->nevents; k++) {
         const sim_effect *ev = &e->events[k];
         e->fire[k] = ev->type->select_fire_sums
@@ -382,6 +488,12 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         if (!e->sums)
             e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow,
                                                          e->bounded);
+    if (linear_sums && !e->sums) {
+        sim_engine_free(e);
+        return sim_error_set(err, SIM_EUNSUPPORTED, "heating.keep_temperature",
+                             "the jump scheme's rescaling needs collisions that keep running "
+                             "sums (supported: maxwell, vhs, hard-spheres)");
+    }
     if (e->nevents == 1 && !e->sums && e->events[0].type->select_fire_many)
         e->fire_many = e->events[0].type->select_fire_many(&e->events[0]);
     e->fire_some = e->fire_many ? fire_some_alone : e->nevents == 1 ? fire_some_one
@@ -593,6 +705,14 @@ static size_t pick_event(const sim_engine *e, gsl_rng *rng, const double *rates,
     return k;
 }
 
+/* Bring every particle to time t with the lazy flow (paper A's sampled
+ * observation: the pending increments are drawn). */
+static void bring_all(sim_run *run, double t)
+{
+    for (size_t i = 0; i < run->p.n; i++)
+        sim_run_bring(run, i, t);
+}
+
 /* Output time m: the standard observables (with [shear], paper E's after
  * them), and a steady sample if t_m >= from. */
 static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double *obs,
@@ -633,7 +753,6 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
     const sim_scene *scene = &e->scene;
     sim_run *run = &ws->run;
     gsl_rng *rng = run->rng;
-    const size_t n = run->p.n;
 
     const double interval = sim_scene_output_time(scene, 1);   /* between resets */
     double rates[MAX_EVENTS] = {0};
@@ -657,8 +776,7 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
         }
         t = t_out;
         if (!e->conditional)   /* paper A: draw the pending increments */
-            for (size_t i = 0; i < n; i++)
-                sim_run_bring(run, i, t);
+            bring_all(run, t);
         observe_at(e, ws, m, obs, samples);
         if (m + 1 < scene->outputs)
             total = reset_events(e, ws, rates, t, interval);
@@ -783,19 +901,94 @@ static void interval_steps(const sim_engine *e, sim_workspace *ws, const double 
     ws->h = interval / steps;
 }
 
+/* Apply a linear flow's pending factor to every stored velocity (at output
+ * times): v -> o + scale (v - o), o the bulk velocity for a centred map, else
+ * 0; the running sums follow. */
+static void apply_linear(const sim_engine *e, sim_run *run)
+{
+    const size_t n = run->p.n;
+    const double f = run->scale;
+    double o[3] = {0, 0, 0};
+    if (e->flows[0].type->linear_centred) {
+        for (size_t i = 0; i < n; i++)
+            for (int k = 0; k < 3; k++)
+                o[k] += run->p.v[i][k];
+        for (int k = 0; k < 3; k++)
+            o[k] /= (double)n;
+    }
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            run->p.v[i][k] = o[k] + f * (run->p.v[i][k] - o[k]);
+    run->scale = 1.0;
+    if (e->sums || e->stage_sums)
+        sim_sums_compute(&run->p, &run->sums);
+}
+
 /* The time-step scheme from t = 0 to t_end. */
 static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
 {
     const sim_scene *scene = &e->scene;
     const double interval = sim_scene_output_time(scene, 1);
-    double rates[MAX_EVENTS] = {0};
-    reset_events(e, ws, rates, 0.0, interval);
+    reset_events(e, ws, ws->rates, 0.0, interval);
     for (size_t m = 1; m < scene->outputs; m++) {
         interval_steps(e, ws, obs, m);
+        ws->t0 = sim_scene_output_time(scene, m - 1);
         e->interval(e, ws);
+        const double t = sim_scene_output_time(scene, m);
+        if (e->lazy_flow)
+            bring_all(&ws->run, t);
+        if (e->linear)
+            apply_linear(e, &ws->run);
         observe_at(e, ws, m, obs, samples);
-        if (m + 1 < scene->outputs)   /* synchronised: no lazy flow */
-            reset_events(e, ws, rates, sim_scene_output_time(scene, m), interval);
+        if (m + 1 < scene->outputs)   /* synchronised */
+            reset_events(e, ws, ws->rates, t, interval);
+    }
+}
+
+/* The exact jump scheme with the keep-temperature rescaling (the homogeneous
+ * cooling state in scaled variables, paper C Eq. (12)): T changes only at
+ * collisions, so the rescaling that keeps it acts right after each one (the
+ * h -> 0 limit of the time-step scheme, which rescales after every step).
+ * The factor goes into run->scale; candidates arrive at the stored
+ * velocities' majorant rate times scale^lambda (their rate at the true
+ * velocities, constant between collisions), and the map is applied to every
+ * particle at output times. */
+static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
+{
+    const sim_scene *scene = &e->scene;
+    sim_run *run = &ws->run;
+    gsl_rng *rng = run->rng;
+    const sim_effect *flow = &e->flows[0];
+    const double interval = sim_scene_output_time(scene, 1), lambda = e->rate_exponent;
+    double rates[MAX_EVENTS] = {0};
+    double t = 0.0;
+    double total = reset_events(e, ws, rates, t, interval), speed = 1.0;
+    uint64_t until_resum = e->rebound_every;
+    for (size_t m = 1; m < scene->outputs; m++) {
+        const double t_out = sim_scene_output_time(scene, m);
+        for (;;) {
+            const double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total * speed)
+                                              : INFINITY;
+            if (t_next >= t_out)
+                break;
+            t = t_next;
+            const uint64_t before = run->counts.collisions;
+            total = rates[0] = e->fire[0](&e->events[0], run, ws->states, t);
+            if (--until_resum == 0) {
+                sim_sums_compute(&run->p, &run->sums);
+                until_resum = e->rebound_every;
+            }
+            if (run->counts.collisions != before) {
+                run->scale *= flow->type->linear_factor(flow, run, 0.0);
+                speed = lambda == 1.0 ? run->scale : pow(run->scale, lambda);
+            }
+        }
+        t = t_out;
+        apply_linear(e, run);
+        speed = 1.0;
+        observe_at(e, ws, m, obs, samples);
+        if (m + 1 < scene->outputs)
+            total = reset_events(e, ws, rates, t, interval);
     }
 }
 
@@ -813,7 +1006,8 @@ void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, do
     if (ws->observer_rng)
         sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
     sim_particles_sample(&run->p, scene, rng);
-    if (e->sums)
+    run->scale = 1.0;
+    if (e->sums || e->stage_sums)
         sim_sums_compute(&run->p, &run->sums);
     if (e->slab)
         sim_slab_start(e->slab, ws->slab, run);
@@ -828,8 +1022,11 @@ void sim_engine_evolve(const sim_engine *e, sim_workspace *ws, double *obs, sim_
     /* the processes' per-run states start at 0 (the stages' remainders, the
      * index streams, which their first reset fills) */
     memset(ws->states, 0, e->state_bytes);
+    memset(ws->credit, 0, sizeof ws->credit);
     if (scene->scheme == SIM_SCHEME_TIMESTEP)
         run_timestep(e, ws, obs, &ws->samples);
+    else if (e->linear)
+        run_jump_linear(e, ws, obs, &ws->samples);
     else if (e->lazy_flow)
         run_jump_timed(e, ws, obs, &ws->samples);
     else

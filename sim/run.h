@@ -30,6 +30,8 @@ struct sim_run {
     sim_counts counts;
     sim_sums sums;            /* of the stored velocities and stamps, when the engine
                                  observes from them (observe.h), else unused */
+    double scale;             /* a linear flow's factor not yet applied to the stored
+                                 velocities (effect.h, linear_factor), else 1 */
 };
 
 /* Bring particle i forward to time t with the lazy flow (run->flow != NULL). */

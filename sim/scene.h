@@ -53,6 +53,16 @@ typedef enum sim_collision_model {
     SIM_MODEL_EHS   /* frictional elastic hard spheres with drag, paper E */
 } sim_collision_model;
 
+/* How the time-step scheme's hard-sphere stage accepts a candidate pair (SPEC §5;
+ * collisions.rule).  Equal in distribution: both give each pair the rate
+ * 4 pi gamma C |g|/n and the same post-collision law. */
+typedef enum sim_collision_rule {
+    SIM_RULE_CONTACT,        /* paper C: s uniform on S^2, accepted with
+                                Θ(g.s) (g.s)/U_max, the contact rule (the default) */
+    SIM_RULE_RELATIVE_SPEED  /* paper A: accepted with |g|/U_max, then e uniform (the
+                                jump scheme's rule; about 4 times fewer candidates) */
+} sim_collision_rule;
+
 typedef enum sim_heating_kind {
     SIM_HEATING_WHITE_NOISE,   /* stochastic thermostat, variance 2 beta per unit time */
     SIM_HEATING_GAUSSIAN,      /* anti-drag F = m zeta v */
@@ -136,6 +146,8 @@ typedef struct sim_scene {
         sim_collision_model model;
         double beta;         /* the collision rate factor; 0: the model's (ihs 1, ehs paper
                                 E's (1 + alpha)/2) */
+        sim_collision_rule rule;  /* homogeneous time-step scheme, hard spheres only (the
+                                     jump scheme always accepts by |g|) */
     } collisions;
 
     /* [heating] thermostats (SPEC §3, §5) */

@@ -91,7 +91,8 @@ gdsmc_add_cli_test(cli_run_small 0
 gdsmc_add_cli_test(cli_run_result 0
                    "^# gdsmc-result 1\n# solver = gdsmc [0-9.]+ \\(built-in engine\\)\n# n = 8\n# ensembles = 20\n# cpu_seconds = [0-9.e+-]+\n# events = [1-9][0-9]*\n# violations = 0\nt,T,T_var,T_raw,T_raw_var,ux,ux_var,[^\n]*,a2,a2_var,a3,a3_var\n0,[01]\\.[0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][^\n]*\n4,[^\n]*\n8,[^\n]*\n$"
                    run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=20
-                   --set scene.outputs=3 --result /dev/stdout --quiet)
+                   --set scene.outputs=3 --set scene.observation=sampled --result /dev/stdout
+                   --quiet)
 
 # Byte-identical output for 1 and 2 threads (hard spheres with heating: the
 # majorant, fictitious collisions and Brownian catch-ups all take part).
@@ -247,7 +248,7 @@ gdsmc_add_cli_exact(cli_x_run_restitution 2
                     "gdsmc run: tests/scenes/restitution-1.7.ini:6: collisions.restitution: '1.7' is out of range (allowed 0 < restitution <= 1)"
                     run ${B}/restitution-1.7.ini)
 gdsmc_add_cli_exact(cli_x_run_unknown_key 2
-                    "gdsmc run: tests/scenes/unknown-key.ini:5: collisions.speed: unknown key (allowed kernel, exponent, constant, rate, restitution, model, beta)"
+                    "gdsmc run: tests/scenes/unknown-key.ini:5: collisions.speed: unknown key (allowed kernel, exponent, constant, rate, restitution, model, beta, rule)"
                     run ${B}/unknown-key.ini)
 gdsmc_add_cli_exact(cli_x_run_negative_temperature 2
                     "gdsmc run: --set particles.temperature=-2: particles.temperature: '-2' is out of range (allowed temperature > 0)"
@@ -274,15 +275,16 @@ gdsmc_add_cli_exact(cli_x_run_steady_without 2
                     run ${S}/grw-ex3.ini --steady s.csv)
 gdsmc_add_cli_exact(cli_x_run_heat_flux 2
                     "gdsmc run: verify/scenes/grw-ex3.ini:10: scene.scheme: the heat-flux force couples the particles (through the mean and the temperature) and needs scheme = timestep"
-                    run ${S}/grw-ex3.ini --set heat-flux.strength=0.025)
+                    run ${S}/grw-ex3.ini --set heat-flux.strength=0.025
+                    --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_run_ehs 2
                     "gdsmc run: verify/scenes/grw-ex3.ini: --set collisions.model: ehs (its drag depends on the temperature) needs scheme = timestep"
                     run ${S}/grw-ex3.ini --set collisions.model=ehs)
 gdsmc_add_cli_exact(cli_x_run_heat_flux_heating 2
-                    "gdsmc run: verify/scenes/ms-gaussian.ini:46: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"
+                    "gdsmc run: verify/scenes/ms-gaussian.ini:50: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"
                     run ${S}/ms-gaussian.ini --set heat-flux.strength=0.025)
 gdsmc_add_cli_exact(cli_x_run_gaussian_jump 2
-                    "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise)"
+                    "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise, and gaussian with keep_temperature = true)"
                     run ${S}/grw-ex5.ini --set heating.type=gaussian)
 gdsmc_add_cli_exact(cli_x_run_too_many_steps 2
                     "gdsmc run: verify/scenes/grw-ex5.ini: --set scene.dt: 1e-300 gives 5e+298 steps between output times (allowed at most 1e12)"
@@ -315,7 +317,8 @@ gdsmc_add_cli_exact(cli_x_reference_no_collisions 2
                     reference ${B}/no-collisions.ini)
 gdsmc_add_cli_exact(cli_x_reference_gaussian 2
                     "gdsmc reference: verify/scenes/grw-ex3.ini: --set heating.type: paper A references need white-noise heating"
-                    reference ${S}/grw-ex3.ini --set heating.type=gaussian)
+                    reference ${S}/grw-ex3.ini --set heating.type=gaussian
+                    --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_reference_drift 2
                     "gdsmc reference: verify/scenes/grw-ex3.ini: --set particles.velocity: paper A references need an initial Maxwellian at rest (allowed 0 0 0)"
                     reference ${S}/grw-ex3.ini "--set" "particles.velocity=0 1 0")
@@ -332,8 +335,8 @@ gdsmc_add_cli_test(cli_reference_bgk 0
                    reference ${S}/as.ini --set scene.t_end=40 --set scene.outputs=11
                    --set steady.from=0)
 gdsmc_add_cli_exact(cli_x_reference_shear 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini:24: collisions.kernel: the BGK reference of paper E needs hard spheres"
-                    reference ${S}/grw-ex3.ini --set shear.rate=1)
+                    "gdsmc reference: verify/scenes/grw-ex3.ini:28: collisions.kernel: the BGK reference of paper E needs hard spheres"
+                    reference ${S}/grw-ex3.ini --set shear.rate=1 --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_reference_background_heating 2
                     "gdsmc reference: verify/scenes/brs-ex1.ini: background: no reference for a background combined with heating, shear or a heat-flux force"
                     reference ${S}/brs-ex1.ini --set heating.strength=1)
@@ -648,7 +651,7 @@ gdsmc_add_no_output_test(cli_solver_result_time 2
     ${SB}-result_time/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_time
     --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '11s/^[^,]*/0.25/'")
 gdsmc_add_no_output_test(cli_solver_result_fields 2
-    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:12: 32 fields, the header has 33\n$"
+    "^gdsmc verify: [^\n]*/\\.solver/[0-9a-f]+\\.result:12: 22 fields, the header has 23\n$"
     ${SB}-result_fields/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-result_fields
     --solver "sh tests/solvers/corrupt.sh $<TARGET_FILE:gdsmc> {scene} {out} '12s/,[^,]*$//'")
 gdsmc_add_no_output_test(cli_solver_result_short 2

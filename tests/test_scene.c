@@ -353,7 +353,7 @@ static void test_grw_ex3_file(void **state)
     assert_int_equal(s.collisions.kernel, SIM_KERNEL_MAXWELL);
     assert_close(s.collisions.exponent, 0.0, 0.0, 0.0);
     assert_int_equal(s.heating.type, SIM_HEATING_WHITE_NOISE);
-    assert_int_equal(sim_scene_key_line(&s, "collisions.restitution"), 29);
+    assert_int_equal(sim_scene_key_line(&s, "collisions.restitution"), 33);
 }
 
 static void load_scene_file(const char *name, sim_scene *s)
@@ -378,6 +378,8 @@ static void test_split_and_ms_files(void **state)
     load_scene_file("split-ex5.ini", &b);
     assert_int_equal(b.scheme, SIM_SCHEME_TIMESTEP);
     assert_int_equal(b.steady.present, 1);
+    assert_int_equal(b.collisions.rule, SIM_RULE_RELATIVE_SPEED);   /* the jump scheme's */
+    b.collisions.rule = a.collisions.rule;
     assert_memory_equal(&a.collisions, &b.collisions, sizeof a.collisions);
     assert_memory_equal(&a.heating, &b.heating, sizeof a.heating);
     assert_memory_equal(&a.particles.maxwellian, &b.particles.maxwellian,
@@ -625,7 +627,7 @@ static void expect_error(const char *text, const char *const *ov, size_t nov,
 
 TRAP(trap_unknown_key, "[collisions]\nrestitution = 0.5\nalpha = 0.5\n",
      "t.ini:3: collisions.alpha: unknown key (allowed kernel, exponent, constant, rate, "
-     "restitution, model, beta)")
+     "restitution, model, beta, rule)")
 TRAP(trap_unknown_section, "[scene]\nt_end = 1\n\n[collision]\n",
      "t.ini:4: [collision]: unknown section (allowed " SECTIONS ")")
 TRAP(trap_key_outside_section, "; no section yet\nt_end = 1\n",
@@ -911,15 +913,19 @@ ENGINE_TRAP(engine_heat_flux_moving,
 ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\nrestitution = 0.5\n",
             "t.ini:3: collisions.model: ehs (its drag depends on the temperature) needs scheme "
             "= timestep")
+#define JUMP_HEATING "(the jump scheme supports white-noise, and gaussian with " \
+                     "keep_temperature = true)"
 ENGINE_TRAP(engine_gaussian_jump, "[heating]\ntype = gaussian\nstrength = 0.5\n",
-            "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep (the jump "
-            "scheme supports white-noise)")
-ENGINE_TRAP(engine_keep_temperature_jump, "[heating]\ntype = gaussian\nkeep_temperature = true\n",
-            "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep (the jump "
-            "scheme supports white-noise)")
+            "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep " JUMP_HEATING)
+/* the jump scheme rescales after binary collisions, not after background ones */
+ENGINE_TRAP(engine_keep_temperature_background,
+            "[heating]\ntype = gaussian\nkeep_temperature = true\n[collisions]\n"
+            "[background]\n",
+            "t.ini:2: heating.type: the jump scheme applies this flow only lazily (white noise) "
+            "or after binary collisions (keep_temperature, without [background])")
 ENGINE_TRAP(engine_non_gaussian_jump, "[heating]\ntype = non-gaussian\nstrength = 0.5\n",
-            "t.ini:2: heating.type: non-gaussian heating needs scene.scheme = timestep (the jump "
-            "scheme supports white-noise)")
+            "t.ini:2: heating.type: non-gaussian heating needs scene.scheme = timestep "
+            JUMP_HEATING)
 
 /* At most 1e12 steps between output times: interval 1 (the defaults t_end = 1,
  * outputs = 2), dt = 1e-13 gives ceil(1e13 (1 - 1e-9)) = 9.99999999e12 steps. */
@@ -1192,7 +1198,7 @@ int main(void)
         cmocka_unit_test(engine_heat_flux_moving),
         cmocka_unit_test(engine_ehs),
                         cmocka_unit_test(engine_gaussian_jump),
-        cmocka_unit_test(engine_keep_temperature_jump),
+        cmocka_unit_test(engine_keep_temperature_background),
         cmocka_unit_test(engine_non_gaussian_jump),
         cmocka_unit_test(engine_too_many_steps),
     };

@@ -219,11 +219,11 @@ static void test_white_noise_only(void **state)
         assert_true(z < ZMAX);
         assert_true(max_z_against(&r, SIM_OBS_T_RAW, wrong) > ZMAX);
         assert_int_equal(r.counts.candidates, 0);
-        /* h = 1/6 (the largest h <= 0.2 dividing the output interval 0.5): 3 n
-         * normals for the start, 3 n per flow; 3 flows per interval (Euler) or
-         * 4 (Strang: the half flows inside an interval merged, not those at
-         * its ends) */
-        assert_int_equal(r.counts.normals, 3u * 5u * 3000u * (split ? 1 + 4 * 4 : 1 + 4 * 3));
+        /* white noise is lazy (engine.c, interval_lazy): 3 n normals for the
+         * start and 3 n at each of the 4 later output times, whatever h (1/6
+         * here) and the splitting; stepping every particle drew 3 n per flow,
+         * 3 or 4 flows per interval */
+        assert_int_equal(r.counts.normals, 3u * 5u * 3000u * (1 + 4));
         sim_ensemble_result_free(&r);
     }
 }
@@ -317,9 +317,10 @@ static void test_elastic_rate(void **state)
     const double t_end = 2.0;
     const double expected = 2.0 * M_PI * 4.0 / (4.0 * M_PI) * (double)(n - 1)
                             * 4.0 / sqrt(M_PI) * t_end * (double)N;
-    for (int scheme = 0; scheme < 2; scheme++) {
+    for (int scheme = 0; scheme < 3; scheme++) {   /* jump, time-step by contact, by |g| */
         sim_scene s = ex5_scene(n, N, 0.05, SIM_SPLIT_EULER);
         s.scheme = scheme ? SIM_SCHEME_TIMESTEP : SIM_SCHEME_JUMP;
+        s.collisions.rule = scheme == 1 ? SIM_RULE_CONTACT : SIM_RULE_RELATIVE_SPEED;
         s.collisions.restitution = 1.0;
         s.heating.present = 0;
         s.t_end = t_end;
@@ -341,7 +342,8 @@ static void test_elastic_rate(void **state)
         double count = (double)c.collisions, z = (count - expected) / sqrt(expected);
         double z4 = (count - 4.0 * expected) / sqrt(4.0 * expected);
         print_message("%s: %.0f collisions, expected %.0f (z = %.2f); %llu candidates\n",
-                      scheme ? "time-step" : "jump", count, expected, z,
+                      scheme == 0 ? "jump" : scheme == 1 ? "time-step, contact"
+                                                         : "time-step, |g|", count, expected, z,
                       (unsigned long long)c.candidates);
         assert_true(fabs(z) < ZMAX);
         /* the wrong answer: accepting with Θ(g.s) g.s / U_max at the jump
@@ -357,16 +359,17 @@ static void test_elastic_rate(void **state)
  * paper A Ex 5's transient, Strang at h = 1/80 agrees with the jump scheme
  * within the statistical error at every output time, while Euler at h = 0.1
  * is told apart (its O(h) splitting error, about beta h in T). */
-static void test_converges_to_jump(void **state)
+static void converges_to_jump(sim_collision_rule rule, uint64_t *normals)
 {
-    (void)state;
     const size_t n = 64, N = 6000;
     sim_scene s = ex5_scene(n, N, 0.0125, SIM_SPLIT_STRANG);
     sim_ensemble_result jump, fine, coarse;
     s.scheme = SIM_SCHEME_JUMP;
     run(&s, &jump);
     s.scheme = SIM_SCHEME_TIMESTEP;
+    s.collisions.rule = rule;
     run(&s, &fine);
+    *normals = fine.counts.normals;
     s.dt = 0.1;
     s.splitting = SIM_SPLIT_EULER;
     run(&s, &coarse);
@@ -381,14 +384,72 @@ static void test_converges_to_jump(void **state)
         z_coarse = fmax(z_coarse, fabs(sim_result_mean(&coarse, m, SIM_OBS_T) - mj)
                                       / sqrt(cj * cj + cc * cc));
     }
-    print_message("T(t) time-step vs jump: Strang h = 1/80 max z %.2f, Euler h = 0.1 max z "
-                  "%.2f\n", z_fine, z_coarse);
+    print_message("T(t) time-step (%s) vs jump: Strang h = 1/80 max z %.2f, Euler h = 0.1 max "
+                  "z %.2f; %llu normals\n", rule == SIM_RULE_CONTACT ? "contact" : "|g|, lazy",
+                  z_fine, z_coarse, (unsigned long long)*normals);
     assert_true(z_fine < ZMAX);
     assert_true(z_coarse > ZMAX);
     assert_int_equal(fine.counts.violations, 0);
     sim_ensemble_result_free(&jump);
     sim_ensemble_result_free(&fine);
     sim_ensemble_result_free(&coarse);
+}
+
+/* By the contact rule the white noise steps every particle; by |g| it is lazy
+ * (engine.c, interval_lazy): the same process, with fewer Gaussian numbers. */
+static void test_converges_to_jump(void **state)
+{
+    (void)state;
+    uint64_t eager, lazy;
+    converges_to_jump(SIM_RULE_CONTACT, &eager);
+    converges_to_jump(SIM_RULE_RELATIVE_SPEED, &lazy);
+    assert_true(lazy < eager / 2);
+}
+
+/* The keep-T rescaling in the exact jump scheme (after each collision,
+ * engine.c run_jump_linear) is the h -> 0 limit of the time-step scheme's
+ * (after each step): a2(t) of the homogeneous cooling state at alpha = 0.3
+ * agrees with Strang at h = 0.01 within the statistical error, and not with
+ * a wrong restitution (0.4); T = T0 to round-off at every output time. */
+static void test_keep_temperature_jump(void **state)
+{
+    (void)state;
+    sim_scene s = ex5_scene(64, 3000, 0.01, SIM_SPLIT_STRANG);
+    s.collisions.restitution = 0.3;
+    s.collisions.rule = SIM_RULE_RELATIVE_SPEED;
+    s.heating.type = SIM_HEATING_GAUSSIAN;
+    s.heating.keep_temperature = 1;
+    s.heating.strength = 0.0;
+    s.particles.zero_momentum = 1;
+    s.t_end = 1.5;
+    s.outputs = 6;
+    sim_ensemble_result jump, step, wrong;
+    s.scheme = SIM_SCHEME_JUMP;
+    run(&s, &jump);
+    s.scheme = SIM_SCHEME_TIMESTEP;
+    run(&s, &step);
+    s.collisions.restitution = 0.4;
+    run(&s, &wrong);
+    double z = 0.0, z_wrong = 0.0;
+    for (size_t m = 1; m < jump.outputs; m++) {
+        assert_close(sim_result_mean(&jump, m, SIM_OBS_T), 1.0, 1e-13, 0.0);
+        const double mj = sim_result_mean(&jump, m, SIM_OBS_A2);
+        const double cj = sim_result_ci(&jump, m, SIM_OBS_A2) / SIM_LAMBDA_P;
+        const double cs = sim_result_ci(&step, m, SIM_OBS_A2) / SIM_LAMBDA_P;
+        const double cw = sim_result_ci(&wrong, m, SIM_OBS_A2) / SIM_LAMBDA_P;
+        z = fmax(z, fabs(sim_result_mean(&step, m, SIM_OBS_A2) - mj) / sqrt(cj * cj + cs * cs));
+        z_wrong = fmax(z_wrong, fabs(sim_result_mean(&wrong, m, SIM_OBS_A2) - mj)
+                                    / sqrt(cj * cj + cw * cw));
+    }
+    print_message("HCS a2(t), jump vs time-step h = 0.01: max z %.2f (alpha = 0.4: %.2f); a2 "
+                  "at t = 1.5: %.4f\n", z, z_wrong,
+                  sim_result_mean(&jump, jump.outputs - 1, SIM_OBS_A2));
+    assert_true(z < ZMAX);
+    assert_true(z_wrong > ZMAX);
+    assert_int_equal(jump.counts.violations, 0);
+    sim_ensemble_result_free(&jump);
+    sim_ensemble_result_free(&step);
+    sim_ensemble_result_free(&wrong);
 }
 
 /* Bit-identical results for 1 and 2 threads, steady observers included. */
@@ -531,6 +592,7 @@ int main(void)
         cmocka_unit_test(test_non_gaussian_momentum),
         cmocka_unit_test(test_elastic_rate),
         cmocka_unit_test(test_converges_to_jump),
+        cmocka_unit_test(test_keep_temperature_jump),
         cmocka_unit_test(test_thread_count_independence),
         cmocka_unit_test(test_steady_maxwellian),
         cmocka_unit_test(test_steady_time_average),

@@ -85,6 +85,7 @@ _Static_assert(sizeof(sim_observation) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_initial) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_kernel_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_collision_model) == sizeof(int), "enum size");
+_Static_assert(sizeof(sim_collision_rule) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_heating_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_shear_boundary) == sizeof(int), "enum size");
 _Static_assert(sizeof(sim_slab_pairs) == sizeof(int), "enum size");
@@ -108,6 +109,8 @@ static const word_desc background_kernel_words[] = {
     {"maxwell", SIM_KERNEL_MAXWELL}, {"hard-spheres", SIM_KERNEL_HARD_SPHERES}, {NULL, 0}};
 static const word_desc model_words[] = {
     {"ihs", SIM_MODEL_IHS}, {"ehs", SIM_MODEL_EHS}, {NULL, 0}};
+static const word_desc rule_words[] = {
+    {"contact", SIM_RULE_CONTACT}, {"relative-speed", SIM_RULE_RELATIVE_SPEED}, {NULL, 0}};
 static const word_desc heating_words[] = {{"white-noise", SIM_HEATING_WHITE_NOISE},
                                           {"gaussian", SIM_HEATING_GAUSSIAN},
                                           {"non-gaussian", SIM_HEATING_NON_GAUSSIAN},
@@ -166,6 +169,7 @@ static const key_desc keys[] = {
     REAL(S_COLLISIONS, "restitution", collisions.restitution, LO_GT | HI_LE, 0.0, 1.0),
     WORDS(S_COLLISIONS, "model", collisions.model, model_words),
     POSITIVE(S_COLLISIONS, "beta", collisions.beta),
+    WORDS(S_COLLISIONS, "rule", collisions.rule, rule_words),
 
     WORDS(S_HEATING, "type", heating.type, heating_words),
     FINITE(S_HEATING, "strength", heating.strength), /* sign checked in check_scene() */
@@ -628,6 +632,21 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
                              k == SIM_KERNEL_MAXWELL ? "maxwell" : "hard-spheres",
                              k == SIM_KERNEL_MAXWELL ? "0" : "1");
 
+    if (is_set(s, "collisions.rule")) {   /* SPEC §5: only the time-step stage chooses */
+        const int slab = s->shear.present && s->shear.boundary == SIM_SHEAR_LEES_EDWARDS;
+        if (s->collisions.rule == SIM_RULE_CONTACT && k != SIM_KERNEL_HARD_SPHERES)
+            return sim_error_set(err, SIM_EINVAL, "collisions.rule",
+                                 "contact needs kernel = hard-spheres (other kernels collide "
+                                 "by paper A's rule: allowed relative-speed)");
+        if (s->collisions.rule == SIM_RULE_CONTACT && s->scheme == SIM_SCHEME_JUMP)
+            return sim_error_set(err, SIM_EINVAL, "collisions.rule",
+                                 "the jump scheme accepts by |g| (allowed relative-speed, or "
+                                 "scheme = timestep)");
+        if (slab)
+            return sim_error_set(err, SIM_EINVAL, "collisions.rule",
+                                 "not used by the Lees-Edwards slab (its layers accept by "
+                                 "|g|, paper A's rule)");
+    }
     if (s->heating.type == SIM_HEATING_WHITE_NOISE && s->heating.strength < 0.0)
         return sim_error_set(err, SIM_EINVAL, "heating.strength",
                              "%g is negative (allowed strength >= 0 for type = white-noise)",
