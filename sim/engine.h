@@ -74,6 +74,12 @@ void sim_workspace_free(sim_workspace *ws);
  * flow and conditional observation, each at its own stamp), for tests. */
 const sim_particles *sim_workspace_particles(const sim_workspace *ws);
 
+/* For the bench: with on, every later run adds the CPU time its output times
+ * take (the pending increments drawn and the observables computed, not the
+ * events' own upkeep of running sums) to a total, reset here. */
+void sim_workspace_time_outputs(sim_workspace *ws, int on);
+double sim_workspace_output_seconds(const sim_workspace *ws);
+
 /* Simulate ensemble `index` (its random stream is (scene seed, index)) from
  * t = 0 to t_end.  obs must hold outputs * sim_engine_observables() +
  * sim_engine_steady_count() doubles; row m gets the observables at output

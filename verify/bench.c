@@ -75,6 +75,7 @@ typedef struct bench_row {
     double candidates; /* candidate events (the acceptance's denominator) */
     double accepted;   /* accepted collisions (binary and background) */
     double cpu, wall;
+    double output_cpu; /* ... of it at output times (sim_workspace_time_outputs) */
     double bytes_per_particle;
     int threads;
 } bench_row;
@@ -101,6 +102,7 @@ static sim_status run_engine(const sim_scene *s, size_t runs, bench_row *row, si
     if (status == SIM_OK) {
         sim_counts counts = {0};
         row->cpu = row->wall = 0.0;
+        sim_workspace_time_outputs(ws, 1);
         for (size_t k = 0; k < runs; k++) {
             sim_engine_start(e, ws, k, obs);
             const double cpu = thread_cpu_seconds(), wall = wall_seconds();
@@ -108,6 +110,7 @@ static sim_status run_engine(const sim_scene *s, size_t runs, bench_row *row, si
             row->cpu += thread_cpu_seconds() - cpu;
             row->wall += wall_seconds() - wall;
         }
+        row->output_cpu = sim_workspace_output_seconds(ws);
         row->candidates = (double)counts.candidates;
         row->accepted = (double)(counts.collisions + counts.background);
         row->events = row->candidates;
@@ -229,10 +232,62 @@ static sim_status run_floor(const sim_scene *s, double collisions, bench_row *ro
     return SIM_OK;
 }
 
-/* One table row; floor_rate <= 0 and speedup <= 0 leave their cells empty.
- * Single-thread rows are rated per CPU second, ensemble rows per wall second. */
-static void add_row(vfy_table *t, const char *name, size_t n, const bench_row *row,
-                    double floor_rate, double speedup)
+/* Where a row's time per event goes, in ns per event of the row (by
+ * difference of the scene's variants, breakdown_rows). */
+typedef struct bench_breakdown {
+    double events, flows, observation;
+} bench_breakdown;
+
+/* The Maxwell floor: `collisions` collisions of Maxwell molecules (every
+ * candidate accepted) on the scene's initial state with the engine's kernel
+ * (sim/effect_collisions.c, fire_many_maxwell): i and j != i from the index
+ * stream, Marsaglia's unit vector, the collision rule; without candidate
+ * times, counters or output times. */
+static sim_status run_floor_maxwell(const sim_scene *s, double collisions, bench_row *row,
+                                    sim_error *err)
+{
+    sim_particles p;
+    sim_status status = sim_particles_alloc(&p, s->particles.n, 0, err);
+    gsl_rng *rng = sim_rng_alloc();
+    if (status != SIM_OK || rng == NULL) {
+        sim_particles_free(&p);
+        if (rng)
+            gsl_rng_free(rng);
+        return status != SIM_OK ? status : sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    }
+    sim_rng_set_stream(rng, s->seed, 0);
+    sim_particles_sample(&p, s, rng);
+    const double alpha = s->collisions.restitution;
+    sim_pick pick;
+    sim_pick_start(&pick, &p, rng);
+    const uint64_t target = (uint64_t)collisions;
+    const double start = thread_cpu_seconds(), wall = wall_seconds();
+    for (uint64_t k = 0; k < target; k++) {
+        uint32_t spare, i = sim_pick_next(&pick, &p, rng, &spare, 0), j;
+        do
+            j = sim_pick_next(&pick, &p, rng, &spare, 0);
+        while (j == i);
+        double *vi = p.v[i], *vj = p.v[j];
+        const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+        double e[3];
+        sim_rng_unit_sphere(rng, e);
+        sim_collide_inelastic(vi, vj, alpha, sim_norm3(g), e);
+    }
+    row->cpu = thread_cpu_seconds() - start;
+    row->wall = wall_seconds() - wall;
+    row->events = row->accepted = row->candidates = (double)target;
+    row->bytes_per_particle = (double)sim_particles_bytes_per_particle(0);
+    row->threads = 1;
+    sim_particles_free(&p);
+    gsl_rng_free(rng);
+    return SIM_OK;
+}
+
+/* One table row; floor_rate <= 0, speedup <= 0 and a NULL breakdown leave
+ * their cells empty.  Single-thread rows are rated per CPU second, ensemble
+ * rows per wall second. */
+static void add_row_split(vfy_table *t, const char *name, size_t n, const bench_row *row,
+                          double floor_rate, double speedup, const bench_breakdown *split)
 {
     const double rate = row->events / (row->threads > 1 ? row->wall : row->cpu);
     vfy_table_cell(t, "%s", name);
@@ -248,6 +303,15 @@ static void add_row(vfy_table *t, const char *name, size_t n, const bench_row *r
     vfy_table_number(t, speedup > 0, "%.3f", speedup);
     vfy_table_cell(t, "%.1f", row->bytes_per_particle);
     vfy_table_cell(t, "%.1f", peak_rss_mb());
+    vfy_table_number(t, split != NULL, "%.1f", split ? split->events : 0.0);
+    vfy_table_number(t, split != NULL, "%.1f", split ? split->flows : 0.0);
+    vfy_table_number(t, split != NULL, "%.1f", split ? split->observation : 0.0);
+}
+
+static void add_row(vfy_table *t, const char *name, size_t n, const bench_row *row,
+                    double floor_rate, double speedup)
+{
+    add_row_split(t, name, n, row, floor_rate, speedup, NULL);
 }
 
 static void say(const vfy_bench_options *o, const char *name, size_t n, const bench_row *row)
@@ -297,6 +361,101 @@ static sim_status paper_rows(const vfy_bench_options *o, const char *name, size_
     return SIM_OK;
 }
 
+/* The scene's variants: `bare` has no heating and observes only at the start
+ * and the end (outputs = 2, the same t_end, no steady observers, sampled: the
+ * events keep no running sums); `plain` has no heating and the scene's output
+ * times, observed as paper A does (sampled). */
+static sim_scene bare_scene(sim_scene s)
+{
+    s.outputs = 2;
+    s.steady.present = 0;
+    s.observation = SIM_OBSERVE_SAMPLED;
+    s.heating.present = 0;
+    return s;
+}
+
+static sim_scene plain_scene(sim_scene s)
+{
+    s.observation = SIM_OBSERVE_SAMPLED;
+    s.heating.present = 0;
+    return s;
+}
+
+/* Row `label` for scene s (n, t_end and outputs as given) timed over `runs`
+ * ensembles, its rate in accepted collisions (binary and background) per CPU
+ * second, with its breakdown in ns per collision: observation = the CPU time
+ * of its output times (the pending increments drawn, the observables
+ * computed: sim_workspace_time_outputs); events = the plain scene's time
+ * outside its output times (the same events without heating; their
+ * majorants see the same output times); flows = the rest (the heating, and
+ * the upkeep of running sums when the scene observes conditionally).  With
+ * bare_label, the bare scene is a row of its own too (its events and no
+ * output times between start and end).  floor_rate: the floor beside it. */
+static sim_status breakdown_rows(const vfy_bench_options *o, const sim_scene *s, size_t runs,
+                                 const char *label, const char *bare_label, double floor_rate,
+                                 vfy_table *t, char *msg, size_t msglen)
+{
+    const sim_scene variants[3] = {*s, plain_scene(*s), bare_scene(*s)};
+    bench_row rows[3] = {{0}};
+    double ns[3], ns_out[3];
+    sim_error err = {{0}, {0}};
+    for (int k = 0; k < (bare_label ? 3 : 2); k++) {
+        sim_status status = run_engine(&variants[k], runs, &rows[k], &err);
+        if (status != SIM_OK) {
+            vfy_scene_format_error(&variants[k], &err, msg, msglen);
+            return status;
+        }
+        rows[k].events = rows[k].accepted;
+        ns[k] = 1e9 * rows[k].cpu / fmax(rows[k].events, 1.0);
+        ns_out[k] = 1e9 * rows[k].output_cpu / fmax(rows[k].events, 1.0);
+    }
+    const double events = ns[1] - ns_out[1];
+    const bench_breakdown split = {events, ns[0] - ns_out[0] - events, ns_out[0]};
+    say(o, label, s->particles.n, &rows[0]);
+    add_row_split(t, label, s->particles.n, &rows[0], floor_rate, 0.0, &split);
+    if (bare_label) {
+        const bench_breakdown bare = {ns[2] - ns_out[2], 0.0, ns_out[2]};
+        say(o, bare_label, s->particles.n, &rows[2]);
+        add_row_split(t, bare_label, s->particles.n, &rows[2], floor_rate, 0.0, &bare);
+    }
+    return SIM_OK;
+}
+
+/* Paper A Ex 3 and paper B Ex 2 (Maxwell kernels) at n = 1024 as their
+ * scenes observe them (81 and 513 output times), beside the same scenes
+ * bare (rows grw-ex3-bare, brs-ex2-bare) and the Maxwell floor; enough
+ * ensembles for about o->seconds per variant. */
+static sim_status maxwell_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
+                               size_t msglen)
+{
+    static const char *const names[2][2] = {{"grw-ex3", "grw-ex3-bare"},
+                                            {"brs-ex2", "brs-ex2-bare"}};
+    sim_status status = SIM_OK;
+    for (int k = 0; k < 2 && status == SIM_OK; k++) {
+        sim_scene s;
+        status = load_scene(o, names[k][0], &s, msg, msglen);
+        if (status != SIM_OK)
+            return status;
+        s.particles.n = 1024;
+        sim_error err = {{0}, {0}};
+        bench_row probe = {0}, floor_row = {0};
+        status = run_engine(&s, 1, &probe, &err);
+        const double runs = fmin(fmax(ceil(o->seconds / fmax(probe.cpu, 1e-6)), 1.0), 1e6);
+        if (status == SIM_OK)
+            status = run_floor_maxwell(&s, probe.candidates * runs, &floor_row, &err);
+        if (status != SIM_OK) {
+            vfy_scene_format_error(&s, &err, msg, msglen);
+            return status;
+        }
+        const double floor_rate = floor_row.events / floor_row.cpu;
+        say(o, "floor-maxwell", 1024, &floor_row);
+        add_row(t, "floor-maxwell", 1024, &floor_row, floor_rate, 0.0);
+        status = breakdown_rows(o, &s, (size_t)runs, names[k][0], names[k][1], floor_rate, t,
+                                msg, msglen);
+    }
+    return status;
+}
+
 /* The engine and the floor on hs-relax at n: rows floor and hs-relax.  Each
  * is run REPEATS times (alternately, each for about a third of o->seconds, or
  * 2 collisions per particle if that is longer) and the fastest run of each is
@@ -337,7 +496,8 @@ static sim_status hs_relax_rows(const vfy_bench_options *o, size_t n, double *fl
  * whole output intervals adding up to about o->seconds; beside it the floor
  * at n: rows floor and `label` (accepted collisions per second). */
 static sim_status timed_scene_rows(const vfy_bench_options *o, sim_scene s, size_t n,
-                                   const char *label, vfy_table *t, char *msg, size_t msglen)
+                                   const char *label, int with_breakdown, vfy_table *t,
+                                   char *msg, size_t msglen)
 {
     const double interval = s.t_end / (double)(s.outputs - 1);
     s.particles.n = n;
@@ -368,21 +528,39 @@ static sim_status timed_scene_rows(const vfy_bench_options *o, sim_scene s, size
     const double floor_rate = floor_row.events / floor_row.cpu;
     say(o, "floor", n, &floor_row);
     add_row(t, "floor", n, &floor_row, floor_rate, 0.0);
+    if (with_breakdown)
+        return breakdown_rows(o, &s, 1, label, NULL, floor_rate, t, msg, msglen);
     row.events = row.accepted;
     say(o, label, n, &row);
     add_row(t, label, n, &row, floor_rate, 0.0);
     return SIM_OK;
 }
 
-/* (d) The time-step scheme on paper C's gas (ms-white-noise.ini: white noise,
- * alpha = 0.5, h = 0.05, Strang), one system of n = 2e5 particles. */
+/* (d) Paper C's gas (alpha = 0.5, hard spheres accepted by |g|), one system
+ * of n = 2e5 particles: the time-step scheme (h = 0.05, Strang) with white
+ * noise (ms-white-noise.ini) and with the Gaussian thermostat (ms-gaussian.ini,
+ * keep-T), and the exact jump scheme with the Gaussian thermostat (hcs-jump:
+ * the homogeneous cooling state in scaled variables), each with its
+ * breakdown and the hard-sphere floor at n = 2e5. */
 static sim_status timestep_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
                                 size_t msglen)
 {
-    sim_scene s;
-    sim_status status = load_scene(o, "ms-white-noise", &s, msg, msglen);
-    return status == SIM_OK ? timed_scene_rows(o, s, 200000, "ms-timestep", t, msg, msglen)
-                            : status;
+    static const struct {
+        const char *scene, *label;
+        int jump;
+    } rows[] = {{"ms-white-noise", "ms-timestep-white", 0},
+                {"ms-gaussian", "ms-timestep-gaussian", 0},
+                {"ms-gaussian", "hcs-jump", 1}};
+    sim_status status = SIM_OK;
+    for (size_t k = 0; k < sizeof rows / sizeof rows[0] && status == SIM_OK; k++) {
+        sim_scene s;
+        status = load_scene(o, rows[k].scene, &s, msg, msglen);
+        if (status == SIM_OK && rows[k].jump)
+            s.scheme = SIM_SCHEME_JUMP;
+        if (status == SIM_OK)
+            status = timed_scene_rows(o, s, 200000, rows[k].label, 1, t, msg, msglen);
+    }
+    return status;
 }
 
 /* (e) Paper E's Lees-Edwards slab (as-slab.ini: IHS, alpha = 0.9, a tau0 = 4,
@@ -396,7 +574,7 @@ static sim_status slab_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
     sim_status status = load_scene(o, "as-slab", &s, msg, msglen);
     for (size_t n = 10000; status == SIM_OK && n <= 1000000 && (n == 10000 || n <= o->max_n);
          n *= 100)
-        status = timed_scene_rows(o, s, n, "as-slab", t, msg, msglen);
+        status = timed_scene_rows(o, s, n, "as-slab", 0, t, msg, msglen);
     return status;
 }
 
@@ -481,7 +659,7 @@ sim_status vfy_bench_run(const vfy_bench_options *o, vfy_table *t, char *msg, si
     /* The paper scenes at n = 1024; their floor_ratio is against the floor
      * at n = 1000 (same cache regime). */
     if (status == SIM_OK)
-        status = paper_rows(o, "grw-ex3", 1024, floor_rate_1000, t, msg, msglen);
+        status = maxwell_rows(o, t, msg, msglen);
     if (status == SIM_OK)
         status = paper_rows(o, "brs-ex4", 1024, floor_rate_1000, t, msg, msglen);
     if (status == SIM_OK)

@@ -10,15 +10,26 @@
  *             engine's row beside it, on the same initial state
  *   hs-relax  the engine on elastic hard spheres in one homogeneous cell,
  *             relaxing from two counter-streaming Maxwellians, n = 1e3 ...
- *   grw-ex3   paper A Ex 3 (Maxwell molecules, white-noise heating), n = 1024
+ *   floor-maxwell  the engine's Maxwell kernel without its bookkeeping
+ *             (pair, unit vector, collision rule), n = 1024
+ *   grw-ex3, brs-ex2  paper A Ex 3 (Maxwell molecules, white-noise heating,
+ *             81 output times) and paper B Ex 2 (Maxwell kernels with a
+ *             background, 513 output times) at n = 1024 as their scenes run
+ *             them, and -bare: the same without heating and without output
+ *             times between start and end
  *   brs-ex4   paper B Ex 4 (hard spheres, Algorithm 2 with its background)
- *   ms-timestep  the time-step scheme (paper C's white-noise gas, h = 0.05,
- *             Strang) on one system of n = 2e5 particles
+ *   ms-timestep-white, ms-timestep-gaussian  the time-step scheme on paper
+ *             C's gas (h = 0.05, Strang, pairs accepted by |g|) with white
+ *             noise and with the keep-T Gaussian thermostat, n = 2e5
+ *   hcs-jump  the exact jump scheme with the keep-T Gaussian thermostat (the
+ *             homogeneous cooling state in scaled variables), n = 2e5
+ * The rows with a `-bare` partner and the n = 2e5 rows carry a breakdown in
+ * ns per collision (ns_events, ns_flows, ns_observation: breakdown_rows).
  *   grw-ex3-ensembles  paper A Ex 3 with N = 10 000 ensembles (fewer for
  *             short runs) on 1 and on 2 OpenMP threads: wall time and the
  *             speed-up
- * Rates are events (accepted collisions for floor, hs-relax and ms-timestep,
- * candidate events for the paper scenes) per CPU second of the thread that
+ * Rates are events (accepted collisions for the floors, hs-relax and the
+ * rows with a breakdown, candidate events for brs-ex4) per CPU second of the thread that
  * ran them, or per wall second for the ensemble rows; floor_ratio = a row's
  * rate / the floor's rate at the same n (the paper scenes: the floor at
  * n = 1000).  Every figure is one measurement on a machine that may be
@@ -44,7 +55,8 @@ typedef struct vfy_bench_options {
 /* The columns of the bench table, in order. */
 #define VFY_BENCH_COLUMNS                                                                     \
     "case", "n", "threads", "events", "cpu_s", "wall_s", "events_per_s", "ns_per_event",    \
-        "floor_ratio", "acceptance", "speedup", "bytes_per_particle", "peak_rss_mb"
+        "floor_ratio", "acceptance", "speedup", "bytes_per_particle", "peak_rss_mb",          \
+        "ns_events", "ns_flows", "ns_observation"
 
 /* Run every case into table (initialised here with VFY_BENCH_COLUMNS; free
  * it with vfy_table_free).  Returns SIM_OK, or an error with msg. */
