@@ -104,8 +104,9 @@ typedef struct sim_effect_type {
      * also keeps run->sums current for every particle it changes or brings
      * forward (scene.observation = conditional, issue 18). */
     sim_event_fire_fn (*select_fire_sums)(const sim_effect *e, int lazy_flow, int bounded);
-    /* The time-step scheme's stage of length h for this process (NULL: none,
-     * and the engine refuses the scene); with sums, the stage also keeps
+    /* The time-step scheme's stage of length h for this process (NULL, or
+     * NULL returned: the engine's stage, which fires the process's candidates
+     * at its majorant rate for the stage time); with sums, the stage also keeps
      * run->sums current (a linear flow that reads the temperature, engine.c).
      * The per-run state is zeroed at the start of each run and `reset` is
      * called at each output time, as in the jump scheme. */

@@ -63,8 +63,9 @@
  * Paper E's frictional elastic hard spheres (collisions.model = ehs) collide
  * elastically at beta = (1 + alpha)/2 times this rate.
  * Maxwell molecules and VHS (issue 15: the heat-flux force on any kernel):
- * the stage fires the jump scheme's candidates (uniform pair, paper A's rule)
- * at its majorant rate for the stage time, with the same remainder.
+ * the engine's stage fires the jump scheme's candidates (uniform pair, paper
+ * A's rule) at their majorant rate for the stage time, with the same
+ * remainder (engine.c, stage_fired).
  */
 #include <math.h>
 #include <stdint.h>
@@ -565,62 +566,18 @@ STAGE_HS_INSTANCE(stage_hs_speed, 0, 0)
 STAGE_HS_INSTANCE(stage_hs_contact_sums, 1, 1)
 STAGE_HS_INSTANCE(stage_hs_speed_sums, 0, 1)
 
-/* One collision stage of the time-step scheme for Maxwell molecules and VHS
- * (paper A's rule: a uniform pair, accepted with (|g|/U_max)^lambda, e
- * uniform): floor(credit x rate) candidates at the jump scheme's majorant
- * rate, fired as the jump scheme fires them; when a collision grows the bound
- * (VHS), the stage time left is spent at the new rate. */
-static inline void stage_uniform_pair(const sim_effect *e, sim_run *run, void *vstate, double h,
-                                      const enum kernel_case kernel, const int sums)
-{
-    const collisions_params *p = e->params;
-    collisions_state *s = vstate;
-    double credit = s->credit + h;
-    for (;;) {
-        const double rate = kernel == KERNEL_MAXWELL ? p->prefactor : follow_bound(p, s, run);
-        if (!(rate > 0.0)) {   /* every velocity equal: no collision can happen */
-            credit = 0.0;
-            break;
-        }
-        const double count = floor(credit * rate);
-        if (!(count >= 1.0))
-            break;
-        uint64_t done = 0;
-        while (done < (uint64_t)count) {
-            done++;
-            if (kernel == KERNEL_MAXWELL)
-                (sums ? fire_maxwell_sums : fire_maxwell)(e, run, vstate, 0.0);
-            else if ((sums ? fire_vhs_sums : fire_vhs)(e, run, vstate, 0.0) != rate)
-                break;
-        }
-        credit -= (double)done / rate;
-        if (done == (uint64_t)count)
-            break;
-    }
-    s->credit = fmax(credit, 0.0);
-    run->bound_grew = 0;   /* followed above; no other process shares the bound */
-}
-
-#define STAGE_PAIR_INSTANCE(name, kernel, sums)                                     \
-    static void name(const sim_effect *e, sim_run *run, void *state, double h)      \
-    {                                                                               \
-        stage_uniform_pair(e, run, state, h, kernel, sums);                         \
-    }
-STAGE_PAIR_INSTANCE(stage_maxwell, KERNEL_MAXWELL, 0)
-STAGE_PAIR_INSTANCE(stage_vhs, KERNEL_VHS, 0)
-STAGE_PAIR_INSTANCE(stage_maxwell_sums, KERNEL_MAXWELL, 1)
-STAGE_PAIR_INSTANCE(stage_vhs_sums, KERNEL_VHS, 1)
-
+/* Hard spheres have their batched stage; Maxwell molecules and VHS none
+ * (NULL): the engine's stage fires their jump-scheme candidates (paper A's
+ * rule: a uniform pair, accepted with (|g|/U_max)^lambda, e uniform) at the
+ * majorant rate for the stage time (engine.c, stage_fired). */
 static sim_event_stage_fn collisions_select_stage(const sim_effect *e, int sums)
 {
     const collisions_params *p = e->params;
-    if (p->lambda == 1.0 && p->contact)
+    if (p->lambda != 1.0)
+        return NULL;
+    if (p->contact)
         return sums ? stage_hs_contact_sums : stage_hs_contact;
-    if (p->lambda == 1.0)
-        return sums ? stage_hs_speed_sums : stage_hs_speed;
-    if (p->lambda == 0.0)
-        return sums ? stage_maxwell_sums : stage_maxwell;
-    return sums ? stage_vhs_sums : stage_vhs;
+    return sums ? stage_hs_speed_sums : stage_hs_speed;
 }
 
 static const sim_effect_type collisions_type = {

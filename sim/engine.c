@@ -112,7 +112,7 @@ struct sim_engine {
     int lazy_flow;        /* flows[0] is applied lazily (stamps): white noise */
     int linear;           /* flows[0] is a linear map kept global (run->scale) */
     double rate_exponent; /* ... the collisions' lambda: their rate scales as scale^lambda */
-    int stage_sums;       /* ... its factor reads run->sums: the stages keep them */
+    int stage_sums;       /* ... its factor reads run->sums: the stages keep them (then sums) */
     int conditional;      /* scene.observation = conditional: T .. Pyz as expectations
                              over the lazy flow's pending increments, which are never
                              drawn at output times (observe.h, sim_observe_sums) */
@@ -183,11 +183,19 @@ static void add_event(sim_engine *e, sim_effect effect)
     append_name(e, effect.type->name);
 }
 
-/* The time-step scheme's steps: stages and the flow's step composed. */
+static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double h, double t);
+
+/* The time-step scheme's steps: stages and the flow's step composed.  A
+ * process without a stage of its own fires its candidates (stage_fired; no
+ * lazy flow here, so their time does not matter). */
 static void stages(const sim_engine *e, sim_workspace *ws, double h)
 {
-    for (size_t k = 0; k < e->nevents; k++)
-        e->stage[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], h);
+    for (size_t k = 0; k < e->nevents; k++) {
+        if (e->stage[k])
+            e->stage[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], h);
+        else
+            stage_fired(e, ws, k, h, 0.0);
+    }
 }
 
 /* Every flow's step of length h, in order. */
@@ -316,10 +324,6 @@ static sim_status build_timestep(sim_engine *e, sim_error *err)
     for (size_t k = 0; k < e->nevents; k++) {
         const sim_effect *ev = &e->events[k];
         e->stage[k] = ev->type->select_stage ? ev->type->select_stage(ev, e->stage_sums) : NULL;
-        if (e->stage[k] == NULL)
-            return sim_error_set(err, SIM_EUNSUPPORTED, ev->type->name,
-                                 "%s is not implemented in the time-step scheme",
-                                 ev->type->name);
     }
     for (size_t k = 0; k < e->nflows; k++)
         if (e->flows[k].type->step == NULL)
@@ -477,9 +481,9 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
             e->fixed_centre = 1;
     }
     /* running sums where every event process keeps them: for conditional
-     * observation, and for the jump scheme's keep-temperature rescaling
-     * (run_jump_linear), which needs them */
-    const int linear_sums = e->linear && !timestep && e->flows[0].type->linear_reads_sums;
+     * observation, and for the keep-temperature rescaling (run_jump_linear,
+     * linear_step), which needs them */
+    const int linear_sums = e->stage_sums;
     e->sums = e->conditional || linear_sums;
     for (size_t k = 0; k < e->nevents; k++) {
         const sim_effect *ev = &e->events[k];
@@ -494,8 +498,8 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     if (linear_sums && !e->sums) {
         sim_engine_free(e);
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.keep_temperature",
-                             "the jump scheme's rescaling needs collisions that keep running "
-                             "sums (supported: maxwell, vhs, hard-spheres)");
+                             "the keep-temperature rescaling needs collisions that keep "
+                             "running sums (supported: maxwell, vhs, hard-spheres)");
     }
     if (e->nevents == 1 && !e->sums && e->events[0].type->select_fire_many)
         e->fire_many = e->events[0].type->select_fire_many(&e->events[0]);
@@ -951,7 +955,7 @@ static void apply_linear(const sim_engine *e, sim_run *run)
         for (int k = 0; k < 3; k++)
             run->p.v[i][k] = o[k] + f * (run->p.v[i][k] - o[k]);
     run->scale = 1.0;
-    if (e->sums || e->stage_sums)
+    if (e->sums)
         sim_sums_compute(&run->p, &run->sums);
 }
 
@@ -1036,7 +1040,7 @@ void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, do
         sim_rng_set_substream(ws->observer_rng, scene->seed, index, 1);
     sim_particles_sample(&run->p, scene, rng);
     run->scale = 1.0;
-    if (e->sums || e->stage_sums)
+    if (e->sums)
         sim_sums_compute(&run->p, &run->sums);
     if (e->slab)
         sim_slab_start(e->slab, ws->slab, run);

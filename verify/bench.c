@@ -134,6 +134,24 @@ static double radius_of(const sim_particles *p, const double c[3])
     return sqrt(r2);
 }
 
+/* A floor loop's particles: the scene's initial state drawn from stream
+ * (seed, 0), as the engine's first ensemble's; *rng continues that stream. */
+static sim_status floor_start(const sim_scene *s, sim_particles *p, gsl_rng **rng,
+                              sim_error *err)
+{
+    sim_status status = sim_particles_alloc(p, s->particles.n, 0, err);
+    *rng = sim_rng_alloc();
+    if (status != SIM_OK || *rng == NULL) {
+        sim_particles_free(p);
+        if (*rng)
+            gsl_rng_free(*rng);
+        return status != SIM_OK ? status : sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    }
+    sim_rng_set_stream(*rng, s->seed, 0);
+    sim_particles_sample(p, s, *rng);
+    return SIM_OK;
+}
+
 /* The floor: `collisions` accepted elastic hard-sphere collisions on the
  * scene's initial state (stream (seed, 0), as the engine's first ensemble),
  * with the engine's kernel (sim/effect_collisions.c, batched_hard_spheres):
@@ -147,16 +165,10 @@ static sim_status run_floor(const sim_scene *s, double collisions, bench_row *ro
                             sim_error *err)
 {
     sim_particles p;
-    sim_status status = sim_particles_alloc(&p, s->particles.n, 0, err);
-    gsl_rng *rng = sim_rng_alloc();
-    if (status != SIM_OK || rng == NULL) {
-        sim_particles_free(&p);
-        if (rng)
-            gsl_rng_free(rng);
-        return status != SIM_OK ? status : sim_error_set(err, SIM_ENOMEM, "", "out of memory");
-    }
-    sim_rng_set_stream(rng, s->seed, 0);
-    sim_particles_sample(&p, s, rng);
+    gsl_rng *rng = NULL;
+    sim_status status = floor_start(s, &p, &rng, err);
+    if (status != SIM_OK)
+        return status;
     const size_t n = p.n;
     double c[3] = {0, 0, 0};
     for (size_t i = 0; i < n; i++)
@@ -247,16 +259,10 @@ static sim_status run_floor_maxwell(const sim_scene *s, double collisions, bench
                                     sim_error *err)
 {
     sim_particles p;
-    sim_status status = sim_particles_alloc(&p, s->particles.n, 0, err);
-    gsl_rng *rng = sim_rng_alloc();
-    if (status != SIM_OK || rng == NULL) {
-        sim_particles_free(&p);
-        if (rng)
-            gsl_rng_free(rng);
-        return status != SIM_OK ? status : sim_error_set(err, SIM_ENOMEM, "", "out of memory");
-    }
-    sim_rng_set_stream(rng, s->seed, 0);
-    sim_particles_sample(&p, s, rng);
+    gsl_rng *rng = NULL;
+    sim_status status = floor_start(s, &p, &rng, err);
+    if (status != SIM_OK)
+        return status;
     const double alpha = s->collisions.restitution;
     sim_pick pick;
     sim_pick_start(&pick, &p, rng);
