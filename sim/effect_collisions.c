@@ -321,20 +321,14 @@ FIRE_INSTANCE(fire_maxwell_flow_bounded_sums, KERNEL_MAXWELL, 1, 1, 1)
 FIRE_INSTANCE(fire_vhs_sums, KERNEL_VHS, 0, 1, 1)
 FIRE_INSTANCE(fire_vhs_flow_sums, KERNEL_VHS, 1, 1, 1)
 
-static double fire_hard_spheres(const sim_effect *e, sim_run *run, void *state, double t)
-{
-    return fire_hard_spheres_at(e, run, state, t, 0, 0);
-}
-
-static double fire_hard_spheres_flow(const sim_effect *e, sim_run *run, void *state, double t)
-{
-    return fire_hard_spheres_at(e, run, state, t, 1, 0);
-}
-
-static double fire_hard_spheres_sums(const sim_effect *e, sim_run *run, void *state, double t)
-{
-    return fire_hard_spheres_at(e, run, state, t, 0, 1);
-}
+#define FIRE_HS_INSTANCE(name, lazy, sums)                                                  \
+    static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
+    {                                                                                        \
+        return fire_hard_spheres_at(e, run, state, t, lazy, sums);                           \
+    }
+FIRE_HS_INSTANCE(fire_hard_spheres, 0, 0)
+FIRE_HS_INSTANCE(fire_hard_spheres_flow, 1, 0)
+FIRE_HS_INSTANCE(fire_hard_spheres_sums, 0, 1)
 
 /* The instance for the engine's shape, [sums][bounded][lazy_flow].  Hard
  * spheres keep running sums only without a lazy flow (for the jump scheme's
