@@ -72,11 +72,12 @@ void sim_particles_free(sim_particles *p)
     memset(p, 0, sizeof *p);
 }
 
-/* One velocity from a Maxwellian: drift + sqrt(T/m) xi. */
+/* One velocity from a Maxwellian: drift + sqrt(T/m) xi (GSL's normals: the
+ * initial states of the committed tables, rng.h). */
 static void sample_maxwellian(const sim_maxwellian *m, gsl_rng *rng, double v[3])
 {
     double xi[3], s = sqrt(m->temperature / m->mass);
-    sim_rng_normal3(rng, xi);
+    sim_rng_normal3_gsl(rng, xi);
     for (int k = 0; k < 3; k++)
         v[k] = m->velocity[k] + s * xi[k];
 }

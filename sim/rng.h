@@ -35,6 +35,8 @@ typedef struct sim_rng_state {
     uint64_t word[SIM_RNG_WORDS];   /* blocks ctr - SIM_RNG_BLOCKS .. ctr - 1 */
     unsigned next;          /* next unused word, SIM_RNG_WORDS = empty */
     uint64_t normals;       /* standard normal variates drawn so far */
+    uint32_t half;          /* the unused high half of a word (sim_rng_u32) */
+    unsigned has_half;
 } sim_rng_state;
 
 extern const gsl_rng_type *sim_rng_philox4x64;
@@ -71,6 +73,20 @@ static inline uint64_t sim_rng_u64(gsl_rng *r)
     if (s->next == SIM_RNG_WORDS)
         sim_rng_refill(s);
     return s->word[s->next++];
+}
+
+/* Next 32 random bits: the low half of a fresh word, then its high half. */
+static inline uint32_t sim_rng_u32(gsl_rng *r)
+{
+    sim_rng_state *s = sim_rng_state_of(r);
+    if (s->has_half) {
+        s->has_half = 0;
+        return s->half;
+    }
+    const uint64_t w = sim_rng_u64(r);
+    s->half = (uint32_t)(w >> 32);
+    s->has_half = 1;
+    return (uint32_t)w;
 }
 
 /* Uniform on [0, 1) with 53 random bits. */
@@ -160,12 +176,60 @@ static inline double sim_rng_exponential(gsl_rng *r, double rate)
     return -log(sim_rng_uniform_pos(r)) / rate;
 }
 
-/* Three independent standard normal variates (GSL's ziggurat, exact). */
-static inline void sim_rng_normal3(gsl_rng *r, double xi[3])
+/* Three independent standard normal variates (GSL's ziggurat, exact).  The
+ * initial states draw these: their streams fix every committed table. */
+static inline void sim_rng_normal3_gsl(gsl_rng *r, double xi[3])
 {
     xi[0] = gsl_ran_gaussian_ziggurat(r, 1.0);
     xi[1] = gsl_ran_gaussian_ziggurat(r, 1.0);
     xi[2] = gsl_ran_gaussian_ziggurat(r, 1.0);
+    sim_rng_state_of(r)->normals += 3;
+}
+
+/* The ziggurat of Marsaglia and Tsang (J. Stat. Softw. 5(8), 2000) for
+ * exp(-x^2/2), 128 layers of equal area (rng.c builds the tables): layer i
+ * spans [0, x[i]) in x; its part left of x[i+1] lies under the curve.  Layer
+ * 0 is the base strip with the tail beyond r = x[1]; x[128] = 0. */
+#define SIM_ZIGGURAT_LAYERS 128
+typedef struct sim_ziggurat {
+    double k[SIM_ZIGGURAT_LAYERS];         /* 2^24 x[i+1] / x[i]: |u| < k[i] is under the curve */
+    double w[SIM_ZIGGURAT_LAYERS];         /* x[i] / 2^24 */
+    double f[SIM_ZIGGURAT_LAYERS + 1];     /* exp(-x[i]^2 / 2), f[128] = 1 (f[0] unused) */
+    double r;                              /* x[1], where the tail begins */
+} sim_ziggurat;
+extern sim_ziggurat sim_ziggurat_table;
+
+/* The signed position u in (-2^24, 2^24) on a grid of half-integers,
+ * symmetric about 0, from bits 7..31 (bits 0..6 pick the layer). */
+static inline double sim_ziggurat_position(uint32_t bits)
+{
+    return (double)(bits >> 7) - 0x1p24 + 0.5;
+}
+
+/* The rare rest of sim_rng_normal (about 1.2% of draws): the base strip's
+ * tail, the wedges, and fresh draws after a rejection (rng.c). */
+double sim_rng_normal_rest(gsl_rng *r, uint32_t bits);
+
+/* A standard normal variate from 32 bits: 7 of layer and 25 of signed
+ * position (GSL's ziggurat takes the same 7 + 1 + 24 from a whole word),
+ * inline, without a branch on the sign. */
+static inline double sim_rng_normal(gsl_rng *r)
+{
+    const uint32_t bits = sim_rng_u32(r);
+    const unsigned i = bits & 0x7f;
+    const double u = sim_ziggurat_position(bits);
+    if (fabs(u) < sim_ziggurat_table.k[i])
+        return u * sim_ziggurat_table.w[i];
+    return sim_rng_normal_rest(r, bits);
+}
+
+/* Three independent standard normal variates (sim_rng_normal): the hot path
+ * of white-noise heating, 1.5 words and no call for the three. */
+static inline void sim_rng_normal3(gsl_rng *r, double xi[3])
+{
+    xi[0] = sim_rng_normal(r);
+    xi[1] = sim_rng_normal(r);
+    xi[2] = sim_rng_normal(r);
     sim_rng_state_of(r)->normals += 3;
 }
 

@@ -7,6 +7,9 @@
 #include <stdint.h>
 #include <string.h>
 
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_randist.h>
+
 #include "collide.h"
 #include "particles.h"
 #include "rng.h"
@@ -22,6 +25,15 @@ static void assert_mean_z(double sum, double expected, double variance, double c
         print_error("sample mean %.10g, expected %.10g, z = %.3f\n", sum / count, expected, z);
         fail();
     }
+}
+
+/* Pearson's chi-square of counts against equal expectations. */
+static double chi2_equal(const double *count, int bins, double total)
+{
+    double chi2 = 0.0, expected = total / bins;
+    for (int k = 0; k < bins; k++)
+        chi2 += (count[k] - expected) * (count[k] - expected) / expected;
+    return chi2;
 }
 
 static gsl_rng *stream(uint64_t seed, uint64_t id)
@@ -50,15 +62,15 @@ static void test_uniform(void **state)
     gsl_rng_free(r);
 }
 
-/* Standard normal: E x = 0, E x^2 = 1 (Var x^2 = 2), E x^4 = 3 (Var 96). */
-static void test_normal(void **state)
+/* Standard normal: E x = 0, E x^2 = 1 (Var x^2 = 2), E x^4 = 3 (Var 96);
+ * the inline ziggurat and GSL's (the initial states) alike. */
+static void check_normal3(void (*normal3)(gsl_rng *, double *), uint64_t id)
 {
-    (void)state;
-    gsl_rng *r = stream(2385, 1);
+    gsl_rng *r = stream(2385, id);
     double s1 = 0, s2 = 0, s4 = 0;
     for (int i = 0; i < SAMPLES / 3; i++) {
         double xi[3];
-        sim_rng_normal3(r, xi);
+        normal3(r, xi);
         for (int k = 0; k < 3; k++) {
             s1 += xi[k];
             s2 += xi[k] * xi[k];
@@ -71,6 +83,99 @@ static void test_normal(void **state)
     assert_mean_z(s4, 3.0, 96.0, count);
     assert_int_equal(sim_rng_state_of(r)->normals, (uint64_t)count);
     gsl_rng_free(r);
+}
+
+static void test_normal(void **state)
+{
+    (void)state;
+    check_normal3(sim_rng_normal3, 1);
+    check_normal3(sim_rng_normal3_gsl, 11);
+}
+
+/* The ziggurat's tables close: every layer has the area V of the base strip
+ * (rectangle and tail), the top one (x[128] = 0) included. */
+static void test_ziggurat_table(void **state)
+{
+    (void)state;
+    gsl_rng *r = stream(1, 1);   /* builds the tables */
+    const sim_ziggurat *z = &sim_ziggurat_table;
+    const double r_edge = z->r, V = z->w[0] * 0x1p24 * z->f[1];
+    for (int i = 1; i < SIM_ZIGGURAT_LAYERS; i++) {
+        const double x = z->w[i] * 0x1p24;
+        assert_close(x * (z->f[i + 1] - z->f[i]), V, 1e-13, 0.0);
+        assert_close(z->f[i], exp(-0.5 * x * x), 1e-15, 0.0);
+    }
+    assert_close(r_edge, 3.442619855899, 1e-12, 0.0);   /* Marsaglia and Tsang's */
+    assert_close(z->w[1] * 0x1p24, r_edge, 1e-15, 0.0);
+    /* the base strip: the rectangle under f(r) and the tail beyond r */
+    assert_close(V, r_edge * z->f[1] + sqrt(M_PI / 2.0) * erfc(r_edge / M_SQRT2), 1e-14, 0.0);
+    assert_true(z->k[SIM_ZIGGURAT_LAYERS - 1] == 0.0 && z->f[SIM_ZIGGURAT_LAYERS] == 1.0);
+    gsl_rng_free(r);
+}
+
+/* The ziggurat's tail sampler, replaced by a plain exponential beyond r: the
+ * wrong sampler its tail test must fail. */
+static double normal_wrong_tail(gsl_rng *r)
+{
+    const double x = sim_rng_normal(r), edge = sim_ziggurat_table.r;
+    return fabs(x) > edge ? copysign(edge - log(sim_rng_uniform_pos(r)) / edge, x) : x;
+}
+
+static double normal_wide(gsl_rng *r) { return 1.003 * sim_rng_normal(r); }
+
+typedef struct normal_test {
+    double chi2;       /* 40 equal-probability bins, 39 dof */
+    double z_tail;     /* P(|x| > r), r = 3.4426: the tail sampler's share */
+    double z_excess;   /* E(|x| - r | |x| > r) = 0.26516... against its mean */
+    double z_pair;     /* E x_k x_k+1 = 0: the two halves of a word */
+} normal_test;
+
+#define NORMAL_SAMPLES 8000000
+
+static normal_test test_normals(double (*normal)(gsl_rng *), uint64_t id)
+{
+    gsl_rng *r = stream(2385, id);
+    enum { BINS = 40 };
+    double count[BINS] = {0}, tail = 0, excess = 0, excess2 = 0, pair = 0, last = 0;
+    const double edge = 3.442619855899;
+    for (long i = 0; i < NORMAL_SAMPLES; i++) {
+        const double x = normal(r);
+        int b = (int)(gsl_cdf_ugaussian_P(x) * BINS);
+        count[b < BINS ? b : BINS - 1] += 1.0;
+        if (fabs(x) > edge) {
+            tail += 1.0;
+            excess += fabs(x) - edge;
+            excess2 += (fabs(x) - edge) * (fabs(x) - edge);
+        }
+        pair += x * last;
+        last = x;
+    }
+    gsl_rng_free(r);
+    const double p = 2.0 * gsl_cdf_ugaussian_Q(edge), N = NORMAL_SAMPLES;
+    /* the excess's exact mean: E(x - r | x > r) = phi(r)/Q(r) - r */
+    const double mean = gsl_ran_ugaussian_pdf(edge) / gsl_cdf_ugaussian_Q(edge) - edge;
+    const double var = excess2 / tail - (excess / tail) * (excess / tail);
+    return (normal_test){chi2_equal(count, BINS, N), (tail - N * p) / sqrt(N * p * (1 - p)),
+                         (excess / tail - mean) / sqrt(var / tail), pair / sqrt(N)};
+}
+
+/* sim_rng_normal against the normal law: 40 equal-probability bins (0.999
+ * quantile of chi-square with 39 dof: 72.05), the tail beyond r (count and
+ * mean excess, z within 4) and the two normals of one word uncorrelated.  A
+ * width 0.3% too large fails the chi-square; an exponential tail fails the
+ * excess. */
+static void test_normal_law(void **state)
+{
+    (void)state;
+    const normal_test t = test_normals(sim_rng_normal, 12);
+    const normal_test wide = test_normals(normal_wide, 12), tail = test_normals(normal_wrong_tail, 12);
+    print_message("normals: chi^2 %.1f, tail z %.2f, excess z %.2f, pair z %.2f; 1.003 wide chi^2 "
+                  "%.1f; exponential tail excess z %.2f\n",
+                  t.chi2, t.z_tail, t.z_excess, t.z_pair, wide.chi2, tail.z_excess);
+    assert_true(t.chi2 < 72.05);
+    assert_true(fabs(t.z_tail) < ZMAX && fabs(t.z_excess) < ZMAX && fabs(t.z_pair) < ZMAX);
+    assert_true(wide.chi2 > 72.05);
+    assert_true(fabs(tail.z_excess) > ZMAX);
 }
 
 /* Uniform on S^2: |e| = 1, E e = 0, E e_k^2 = 1/3 (Var 4/45), E e_z^4 = 1/5. */
@@ -116,15 +221,6 @@ static void test_index(void **state)
         chi2 += (count[k] - expected) * (count[k] - expected) / expected;
     assert_true(chi2 < 22.46);
     gsl_rng_free(r);
-}
-
-/* Pearson's chi-square of counts against equal expectations. */
-static double chi2_equal(const double *count, int bins, double total)
-{
-    double chi2 = 0.0, expected = total / bins;
-    for (int k = 0; k < bins; k++)
-        chi2 += (count[k] - expected) * (count[k] - expected) / expected;
-    return chi2;
 }
 
 /* sim_rng_index32 with n = 3 2^30, where Lemire's method rejects a quarter of
@@ -340,6 +436,7 @@ int main(void)
         cmocka_unit_test(test_streams),     cmocka_unit_test(test_index32),
         cmocka_unit_test(test_accept32),    cmocka_unit_test(test_unit_sphere_uniform),
         cmocka_unit_test(test_index_streams), cmocka_unit_test(test_stream_is_philox),
+        cmocka_unit_test(test_ziggurat_table), cmocka_unit_test(test_normal_law),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
