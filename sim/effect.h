@@ -80,6 +80,11 @@ typedef struct sim_effect_type {
     double (*linear_factor)(const sim_effect *e, const sim_run *run, double h);
     int linear_centred;      /* ... o = the bulk velocity (else o = 0) */
     int linear_reads_sums;   /* ... f reads run->sums (the stages keep them) */
+    /* ... a map that flows in time, f = e^{rate h} whatever the velocities (the
+     * Gaussian thermostat with a fixed zeta): rate; NULL for one that acts at
+     * collisions (keep_temperature).  The jump scheme then runs candidates at
+     * the rate that grows as e^{lambda rate t} (engine.c, run_jump_linear). */
+    double (*linear_rate)(const sim_effect *e);
 
     /* Event processes (NULL for flows). */
     size_t state_size;

@@ -20,9 +20,10 @@
  *
  * The Gaussian thermostats are linear maps (linear_factor): the engine keeps
  * one global factor instead of stepping every particle.  The jump scheme runs
- * white noise and the keep-temperature rescaling (after each collision: the
- * h -> 0 limit of rescaling after every step); the constructor refuses the
- * others there, naming heating.type.
+ * white noise, the Gaussian thermostat exactly (a fixed zeta: candidates at a
+ * rate growing as e^{lambda zeta t}; keep_temperature: the rescaling after
+ * each collision, the h -> 0 limit of rescaling after every step); the
+ * constructor refuses the non-Gaussian thermostat there, naming heating.type.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -115,10 +116,17 @@ static double gaussian_factor(const sim_effect *e, const sim_run *run, double h)
     return exp(p->strength * h);
 }
 
+static double gaussian_rate(const sim_effect *e)
+{
+    const heating_params *p = e->params;
+    return p->strength;
+}
+
 static const sim_effect_type gaussian_type = {
     .name = "heating",
     .step = gaussian_step,
     .linear_factor = gaussian_factor,
+    .linear_rate = gaussian_rate,
 };
 
 /* Rescale the peculiar velocities so that T/m = target (h does not enter). */
@@ -221,17 +229,12 @@ sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_er
         type = &non_gaussian_type;
         break;
     }
-    /* the jump scheme: a lazy flow, or the keep-temperature rescaling, which
-     * acts only at collisions (between them T does not change), so the engine
-     * applies it after each one, exactly (engine.c) */
-    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL
-        && type != &keep_temperature_type)
+    /* the jump scheme: a lazy flow (white noise) or a linear map kept global
+     * (engine.c, run_jump_linear) */
+    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL && type->linear_factor == NULL)
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
-                             "%s heating needs scene.scheme = timestep (the jump scheme "
-                             "supports white-noise, and gaussian with keep_temperature = "
-                             "true)",
-                             scene->heating.type == SIM_HEATING_GAUSSIAN ? "gaussian"
-                                                                         : "non-gaussian");
+                             "non-gaussian heating needs scene.scheme = timestep (the jump "
+                             "scheme supports white-noise and gaussian)");
     heating_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");

@@ -47,7 +47,7 @@
  * (collisions.rule = relative-speed, or a kernel other than hard spheres) it
  * is lazy here too (interval_lazy); a Gaussian thermostat alone is a linear
  * map kept global (stages_scaled, apply_linear), which the jump scheme also
- * runs for the keep-temperature rescaling (run_jump_linear).
+ * runs, exactly (run_jump_linear).
  *
  * The Lees-Edwards slab (shear.boundary = lees-edwards, slab.h) is the
  * time-step scheme with positions: its own ordered stages per step (streaming
@@ -434,7 +434,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         status = sim_error_set(err, SIM_EUNSUPPORTED,
                                scene->heating.present ? "heating.type" : "scene.scheme",
                                "the jump scheme applies this flow only lazily (white noise) or "
-                               "after binary collisions (keep_temperature, without "
+                               "as one global map with binary collisions (gaussian, without "
                                "[background])");
     if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
         if (timestep || scene->steady.present || scene->shear.present
@@ -978,14 +978,33 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
     }
 }
 
-/* The exact jump scheme with the keep-temperature rescaling (the homogeneous
- * cooling state in scaled variables, paper C Eq. (12)): T changes only at
- * collisions, so the rescaling that keeps it acts right after each one (the
- * h -> 0 limit of the time-step scheme, which rescales after every step).
- * The factor goes into run->scale; candidates arrive at the stored
- * velocities' majorant rate times scale^lambda (their rate at the true
- * velocities, constant between collisions), and the map is applied to every
- * particle at output times. */
+/* The next candidate after t of a Poisson process whose rate at time s is
+ * total e^{growth (s - t0)} (growth = 0: constant), from an Exp(1) variate:
+ * the s with total (e^{growth (s - t0)} - e^{growth (t - t0)}) / growth = E;
+ * +inf when a decaying rate leaves too little to reach E (no more candidates,
+ * which has probability e^{-total e^{growth (t - t0)} / |growth|}). */
+static double next_candidate(gsl_rng *rng, double t, double t0, double total, double growth)
+{
+    if (!(total > 0.0))
+        return INFINITY;
+    const double E = sim_rng_exponential(rng, 1.0);
+    if (growth == 0.0)
+        return t + E / total;
+    const double x = exp(growth * (t - t0)) + growth * E / total;
+    return x > 0.0 ? t0 + log(x) / growth : INFINITY;
+}
+
+/* The exact jump scheme with a Gaussian thermostat kept as one global factor
+ * in run->scale (paper C Eq. (12)); candidates arrive at the stored
+ * velocities' majorant rate times scale^lambda, their rate at the true
+ * velocities, and the map is applied to every particle at output times.
+ *  - keep_temperature (the homogeneous cooling state in scaled variables): T
+ *    changes only at collisions, so the rescaling that keeps it acts right
+ *    after each one (the h -> 0 limit of the time-step scheme, which rescales
+ *    after every step); the rate is constant between collisions.
+ *  - a fixed zeta: scale = e^{zeta (t - t0)} since the last output time t0,
+ *    so the candidates are an inhomogeneous Poisson process of rate
+ *    total e^{lambda zeta (t - t0)} (next_candidate): no splitting error. */
 static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
 {
     const sim_scene *scene = &e->scene;
@@ -993,30 +1012,35 @@ static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs,
     gsl_rng *rng = run->rng;
     const sim_effect *flow = &e->flows[0];
     const double interval = sim_scene_output_time(scene, 1), lambda = e->rate_exponent;
+    const int flowing = flow->type->linear_rate != NULL;
+    const double growth = flowing ? lambda * flow->type->linear_rate(flow) : 0.0;
     double rates[MAX_EVENTS] = {0};
-    double t = 0.0;
+    double t = 0.0, t0 = 0.0;
     double total = reset_events(e, ws, rates, t, interval), speed = 1.0;
     uint64_t until_resum = e->rebound_every;
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
         for (;;) {
-            const double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total * speed)
-                                              : INFINITY;
+            const double t_next = flowing ? next_candidate(rng, t, t0, total, growth)
+                                  : total > 0.0 ? t + sim_rng_exponential(rng, total * speed)
+                                                : INFINITY;
             if (t_next >= t_out)
                 break;
             t = t_next;
             const uint64_t before = run->counts.collisions;
             total = rates[0] = e->fire[0](&e->events[0], run, ws->states, t);
-            if (--until_resum == 0) {
+            if (e->sums && --until_resum == 0) {
                 sim_sums_compute(&run->p, &run->sums);
                 until_resum = e->rebound_every;
             }
-            if (run->counts.collisions != before) {
+            if (!flowing && run->counts.collisions != before) {
                 run->scale *= flow->type->linear_factor(flow, run, 0.0);
                 speed = lambda == 1.0 ? run->scale : pow(run->scale, lambda);
             }
         }
-        t = t_out;
+        if (flowing)
+            run->scale = flow->type->linear_factor(flow, run, t_out - t0);
+        t = t0 = t_out;
         apply_linear(e, run);
         speed = 1.0;
         observe_output(e, ws, m, t, obs, samples);

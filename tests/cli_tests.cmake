@@ -283,9 +283,9 @@ gdsmc_add_cli_exact(cli_x_run_ehs 2
 gdsmc_add_cli_exact(cli_x_run_heat_flux_heating 2
                     "gdsmc run: verify/scenes/ms-gaussian.ini:50: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"
                     run ${S}/ms-gaussian.ini --set heat-flux.strength=0.025)
-gdsmc_add_cli_exact(cli_x_run_gaussian_jump 2
-                    "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise, and gaussian with keep_temperature = true)"
-                    run ${S}/grw-ex5.ini --set heating.type=gaussian)
+gdsmc_add_cli_exact(cli_x_run_non_gaussian_jump 2
+                    "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: non-gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise and gaussian)"
+                    run ${S}/grw-ex5.ini --set heating.type=non-gaussian)
 gdsmc_add_cli_exact(cli_x_run_too_many_steps 2
                     "gdsmc run: verify/scenes/grw-ex5.ini: --set scene.dt: 1e-300 gives 5e+298 steps between output times (allowed at most 1e12)"
                     run ${S}/grw-ex5.ini --set scene.scheme=timestep --set scene.dt=1e-300)

@@ -913,16 +913,18 @@ ENGINE_TRAP(engine_heat_flux_moving,
 ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\nrestitution = 0.5\n",
             "t.ini:3: collisions.model: ehs (its drag depends on the temperature) needs scheme "
             "= timestep")
-#define JUMP_HEATING "(the jump scheme supports white-noise, and gaussian with " \
-                     "keep_temperature = true)"
-ENGINE_TRAP(engine_gaussian_jump, "[heating]\ntype = gaussian\nstrength = 0.5\n",
-            "t.ini:2: heating.type: gaussian heating needs scene.scheme = timestep " JUMP_HEATING)
-/* the jump scheme rescales after binary collisions, not after background ones */
+#define JUMP_HEATING "(the jump scheme supports white-noise and gaussian)"
+/* the jump scheme keeps the Gaussian thermostat global with binary collisions
+ * alone (a background's rate does not scale with the map) */
 ENGINE_TRAP(engine_keep_temperature_background,
             "[heating]\ntype = gaussian\nkeep_temperature = true\n[collisions]\n"
             "[background]\n",
             "t.ini:2: heating.type: the jump scheme applies this flow only lazily (white noise) "
-            "or after binary collisions (keep_temperature, without [background])")
+            "or as one global map with binary collisions (gaussian, without [background])")
+ENGINE_TRAP(engine_gaussian_background,
+            "[heating]\ntype = gaussian\nstrength = 0.5\n[collisions]\n[background]\n",
+            "t.ini:2: heating.type: the jump scheme applies this flow only lazily (white noise) "
+            "or as one global map with binary collisions (gaussian, without [background])")
 ENGINE_TRAP(engine_non_gaussian_jump, "[heating]\ntype = non-gaussian\nstrength = 0.5\n",
             "t.ini:2: heating.type: non-gaussian heating needs scene.scheme = timestep "
             JUMP_HEATING)
@@ -1197,7 +1199,7 @@ int main(void)
         cmocka_unit_test(engine_heat_flux_heating),
         cmocka_unit_test(engine_heat_flux_moving),
         cmocka_unit_test(engine_ehs),
-                        cmocka_unit_test(engine_gaussian_jump),
+                        cmocka_unit_test(engine_gaussian_background),
         cmocka_unit_test(engine_keep_temperature_background),
         cmocka_unit_test(engine_non_gaussian_jump),
         cmocka_unit_test(engine_too_many_steps),

@@ -452,6 +452,74 @@ static void test_keep_temperature_jump(void **state)
     sim_ensemble_result_free(&wrong);
 }
 
+/* A fixed-zeta Gaussian thermostat in the exact jump scheme (candidates at a
+ * rate growing as e^{lambda zeta t}, engine.c run_jump_linear): with elastic
+ * collisions T_raw(t) = T_raw(0) e^{2 zeta t} and u(t) = u(0) e^{zeta t} to
+ * round-off; with alpha = 0.5, T(t) and a2(t) agree with the time-step
+ * scheme at h = 0.01 (Strang, its h -> 0 limit) within the statistical error,
+ * for a heating and a cooling zeta, and not with a zeta 5% off. */
+static void test_gaussian_jump(void **state)
+{
+    (void)state;
+    sim_scene s = ex5_scene(40, 20, 0.01, SIM_SPLIT_STRANG);
+    s.scheme = SIM_SCHEME_JUMP;
+    s.collisions.restitution = 1.0;
+    s.heating.type = SIM_HEATING_GAUSSIAN;
+    s.heating.strength = 0.7;
+    s.particles.maxwellian.velocity[0] = 0.4;
+    sim_ensemble_result r;
+    run(&s, &r);
+    for (size_t m = 1; m < r.outputs; m++) {
+        const double f = exp(2.0 * 0.7 * r.t[m]);
+        assert_close(sim_result_mean(&r, m, SIM_OBS_T_RAW),
+                     sim_result_mean(&r, 0, SIM_OBS_T_RAW) * f, 1e-12, 0.0);
+        assert_close(sim_result_mean(&r, m, SIM_OBS_UX),
+                     sim_result_mean(&r, 0, SIM_OBS_UX) * sqrt(f), 1e-12, 0.0);
+    }
+    assert_true(r.counts.collisions > 1000);
+    sim_ensemble_result_free(&r);
+
+    const double zetas[2] = {0.4, -0.3};
+    for (int k = 0; k < 2; k++) {
+        s = ex5_scene(64, 3000, 0.01, SIM_SPLIT_STRANG);
+        s.collisions.rule = SIM_RULE_RELATIVE_SPEED;
+        s.heating.type = SIM_HEATING_GAUSSIAN;
+        s.heating.strength = zetas[k];
+        s.t_end = 1.5;
+        s.outputs = 6;
+        sim_ensemble_result jump, step, wrong;
+        run(&s, &step);
+        s.scheme = SIM_SCHEME_JUMP;
+        run(&s, &jump);
+        s.heating.strength = 1.05 * zetas[k];
+        run(&s, &wrong);
+        double z[2] = {0.0, 0.0}, z_wrong = 0.0;
+        const int obs[2] = {SIM_OBS_T, SIM_OBS_A2};
+        for (size_t m = 1; m < jump.outputs; m++)
+            for (int q = 0; q < 2; q++) {
+                const double mj = sim_result_mean(&jump, m, obs[q]);
+                const double cj = sim_result_ci(&jump, m, obs[q]) / SIM_LAMBDA_P;
+                const double cs = sim_result_ci(&step, m, obs[q]) / SIM_LAMBDA_P;
+                z[q] = fmax(z[q], fabs(sim_result_mean(&step, m, obs[q]) - mj)
+                                      / sqrt(cj * cj + cs * cs));
+                if (q == 0) {
+                    const double cw = sim_result_ci(&wrong, m, SIM_OBS_T) / SIM_LAMBDA_P;
+                    z_wrong = fmax(z_wrong, fabs(sim_result_mean(&wrong, m, SIM_OBS_T) - mj)
+                                                / sqrt(cj * cj + cw * cw));
+                }
+            }
+        print_message("zeta = %.1f, jump vs time-step h = 0.01: T max z %.2f, a2 max z %.2f "
+                      "(zeta 5%% off: T max z %.2f); T(1.5) = %.4f\n", zetas[k], z[0], z[1],
+                      z_wrong, sim_result_mean(&jump, jump.outputs - 1, SIM_OBS_T));
+        assert_true(z[0] < ZMAX && z[1] < ZMAX);
+        assert_true(z_wrong > ZMAX);
+        assert_int_equal(jump.counts.violations, 0);
+        sim_ensemble_result_free(&jump);
+        sim_ensemble_result_free(&step);
+        sim_ensemble_result_free(&wrong);
+    }
+}
+
 /* Bit-identical results for 1 and 2 threads, steady observers included. */
 static void test_thread_count_independence(void **state)
 {
@@ -593,6 +661,7 @@ int main(void)
         cmocka_unit_test(test_elastic_rate),
         cmocka_unit_test(test_converges_to_jump),
         cmocka_unit_test(test_keep_temperature_jump),
+        cmocka_unit_test(test_gaussian_jump),
         cmocka_unit_test(test_thread_count_independence),
         cmocka_unit_test(test_steady_maxwellian),
         cmocka_unit_test(test_steady_time_average),
