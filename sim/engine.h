@@ -74,9 +74,10 @@ void sim_workspace_free(sim_workspace *ws);
  * flow and conditional observation, each at its own stamp), for tests. */
 const sim_particles *sim_workspace_particles(const sim_workspace *ws);
 
-/* For the bench: with on, every later run adds the CPU time its output times
+/* For the bench: with on, every later run adds the time its output times
  * take (the pending increments drawn and the observables computed, not the
- * events' own upkeep of running sums) to a total, reset here. */
+ * events' own upkeep of running sums; a monotonic clock, as the thread's CPU
+ * clock costs a system call per read) to a total, reset here. */
 void sim_workspace_time_outputs(sim_workspace *ws, int on);
 double sim_workspace_output_seconds(const sim_workspace *ws);
 

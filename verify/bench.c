@@ -75,7 +75,8 @@ typedef struct bench_row {
     double candidates; /* candidate events (the acceptance's denominator) */
     double accepted;   /* accepted collisions (binary and background) */
     double cpu, wall;
-    double output_cpu; /* ... of it at output times (sim_workspace_time_outputs) */
+    double output_cpu; /* ... of it at output times (sim_workspace_time_outputs: a
+                          monotonic clock, the run being on one thread) */
     double bytes_per_particle;
     int threads;
 } bench_row;
@@ -389,9 +390,9 @@ static sim_scene plain_scene(sim_scene s)
 
 /* Row `label` for scene s (n, t_end and outputs as given) timed over `runs`
  * ensembles, its rate in accepted collisions (binary and background) per CPU
- * second, with its breakdown in ns per collision: observation = the CPU time
- * of its output times (the pending increments drawn, the observables
- * computed: sim_workspace_time_outputs); events = the plain scene's time
+ * second, with its breakdown in ns per collision: observation = the time of
+ * its output times (the pending increments drawn, the observables computed:
+ * sim_workspace_time_outputs, on one thread); events = the plain scene's time
  * outside its output times (the same events without heating; their
  * majorants see the same output times); flows = the rest (the heating, and
  * the upkeep of running sums when the scene observes conditionally).  With
