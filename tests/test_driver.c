@@ -612,6 +612,59 @@ static void test_batches_and_case_checks(void **state)
     assert_null(strstr(table, "@*"));
 }
 
+/* A curves figure over rows with output times of their own (as-transient's
+ * rows differ in t_end and outputs): each row is drawn on its own times, one
+ * block per curve, every value read from that row (the shared-grid layout
+ * would pair the short row with the long row's times and print memory past
+ * its end). */
+static const char *const grid_rows[] = {"short: scene.outputs=6; scene.t_end=0.5",
+                                        "long: scene.outputs=11", NULL};
+static const vfy_case_desc grid_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {.rows = grid_rows, .sets = "particles.n=8;particles.ensembles=50"},
+    .needs = e2e_needs, .label = "{case} {label}", .columns = "n:%.0f",
+    .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = {"T_exact"}}},
+    .title = "{case}", .notes = "notes"};
+static const vfy_case grid_case = {"driver-grids", "test", "", 0, &grid_desc};
+
+static void test_curves_by_row(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], path[600], line[256];
+    assert_int_equal(vfy_run_described(&grid_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    snprintf(path, sizeof path, "%s/driver-grids-curves.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    /* blocks: short (6 points to t = 0.5), its T_exact, long (11 to t = 8), its
+     * T_exact; every value near T0 = 1 or the heated gas's T_raw (at most 6) */
+    size_t block = 0, points[4] = {0}, headers = 0;
+    double last_t[4] = {0};
+    while (fgets(line, sizeof line, f) != NULL) {
+        if (line[0] == '#') {
+            if (strstr(line, "driver-grids ") != NULL)
+                block = headers++;
+            continue;
+        }
+        double t, y;
+        if (sscanf(line, "%lf,%lf", &t, &y) != 2)
+            continue;
+        assert_true(block < 4);
+        assert_true(y > 0.5 && y < 6.0);
+        points[block]++;
+        last_t[block] = t;
+    }
+    fclose(f);
+    assert_int_equal(headers, 4);
+    assert_int_equal(points[0], 6);
+    assert_int_equal(points[2], 11);
+    assert_close(last_t[0], 0.5, 1e-12, 0);
+    assert_close(last_t[2], 8.0, 1e-12, 0);
+}
+
 /* The pure helpers of the steady and cost cases: a time average over the
  * second half, the largest absolute difference, and two estimates' distance
  * in joint half-widths; each moves with a wrong input. */
@@ -678,6 +731,7 @@ int main(void)
         cmocka_unit_test(test_tail_exponent),
         cmocka_unit_test(test_tail_fit_and_adapters),
         cmocka_unit_test(test_batches_and_case_checks),
+        cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
     };
     return cmocka_run_group_tests(tests, setup, NULL);

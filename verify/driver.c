@@ -917,11 +917,79 @@ static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
     return rc;
 }
 
+/* Whether every row has the last row's output times. */
+static int rows_share_grid(const vfy_case_run *run)
+{
+    const sim_ensemble_result *last = &run->rows[run->nrows - 1].res;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const sim_ensemble_result *r = &run->rows[i].res;
+        if (r->outputs != last->outputs)
+            return 0;
+        for (size_t m = 0; m < r->outputs; m++)
+            if (r->t[m] != last->t[m])
+                return 0;
+    }
+    return 1;
+}
+
+/* A curves figure over rows with output times of their own (as-transient's
+ * t_end and outputs differ by row): each row a curve on its own times, with
+ * its references dashed, as an xy figure (one gnuplot index block a curve). */
+static int write_curves_by_row(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
+                               const char *title, const char *quantity)
+{
+    size_t nref = 0, total = 0;
+    while (nref < 4 && f->refs[nref])
+        nref++;
+    for (size_t i = 0; i < run->nrows; i++)
+        total += run->rows[i].res.outputs;
+    const size_t ncurves = run->nrows * (1 + nref);
+    vfy_xy_curve *curves = calloc(ncurves, sizeof *curves);
+    char (*labels)[160] = calloc(ncurves, sizeof *labels);
+    double *buf = malloc((2 + nref) * total * sizeof *buf);
+    int rc = -1;
+    if (curves != NULL && labels != NULL && buf != NULL) {
+        double *at = buf;
+        size_t c = 0;
+        for (size_t i = 0; i < run->nrows; i++) {
+            const vfy_row *row = &run->rows[i];
+            const size_t M = row->res.outputs;
+            char label[96];
+            vfy_expand(label, sizeof label, run->d->label ? run->d->label : "{case} n={n}", run,
+                       row);
+            for (size_t j = 0; j <= nref; j++, c++) {
+                double *mean = at, *ci = j == 0 ? at + M : NULL;
+                at += j == 0 ? 2 * M : M;
+                vfy_row_series(row, j == 0 ? f->quantity : f->refs[j - 1], mean, ci);
+                snprintf(labels[c], sizeof labels[c], "%s%s%s", label, j ? ": " : "",
+                         j ? f->refs[j - 1] : "");
+                curves[c] = (vfy_xy_curve){.label = labels[c], .reference = j > 0, .count = M,
+                                           .x = row->res.t, .y = {mean}, .ci = {ci}};
+            }
+        }
+        const vfy_xy_figure xy = {.name = name, .title = title, .xlabel = "t",
+                                  .comment = run->comment, .npanels = 1,
+                                  .ylabel = {quantity}, .ncurves = ncurves, .curves = curves};
+        rc = vfy_write_xy(run->o, &xy);
+    }
+    free(curves);
+    free(labels);
+    free(buf);
+    return rc;
+}
+
 static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char *title)
 {
     if (f->kind == VFY_FIGURE_POINTS)
         return write_points(run, f);
     const vfy_row *last = &run->rows[run->nrows - 1];
+    char name[160], quantity[64];   /* "T@*" is drawn as T */
+    snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
+    snprintf(quantity, sizeof quantity, "%.*s",
+             (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
+             f->quantity);
+    if (!rows_share_grid(run))
+        return write_curves_by_row(run, f, name, title, quantity);
     const int extra = f->extrapolated && run->extra_mean != NULL;
     size_t M = last->res.outputs, rows = run->nrows + (size_t)extra, nref = 0;
     double *buf = malloc((2 * rows + 4) * M * sizeof *buf);
@@ -945,11 +1013,6 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
             memcpy(mean + (rows - 1) * M, run->extra_mean, M * sizeof *mean);
             memcpy(ci + (rows - 1) * M, run->extra_ci, M * sizeof *ci);
         }
-        char name[160], quantity[64];   /* "T@*" is drawn as T */
-        snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
-        snprintf(quantity, sizeof quantity, "%.*s",
-                 (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
-                 f->quantity);
         rc = vfy_write_curves(run->o, name, title, run->comment, last->res.t, M, nref,
                               names, refs, rows, n, NULL, mean, ci, quantity, f->x_from,
                               f->panel_per_row);
