@@ -984,22 +984,6 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
     }
 }
 
-/* The next candidate after t of a Poisson process whose rate at time s is
- * total e^{growth (s - t0)} (growth = 0: constant), from an Exp(1) variate:
- * the s with total (e^{growth (s - t0)} - e^{growth (t - t0)}) / growth = E;
- * +inf when a decaying rate leaves too little to reach E (no more candidates,
- * which has probability e^{-total e^{growth (t - t0)} / |growth|}). */
-static double next_candidate(gsl_rng *rng, double t, double t0, double total, double growth)
-{
-    if (!(total > 0.0))
-        return INFINITY;
-    const double E = sim_rng_exponential(rng, 1.0);
-    if (growth == 0.0)
-        return t + E / total;
-    const double x = exp(growth * (t - t0)) + growth * E / total;
-    return x > 0.0 ? t0 + log(x) / growth : INFINITY;
-}
-
 /* The exact jump scheme with a Gaussian thermostat kept as one global factor
  * in run->scale (paper C Eq. (12)); candidates arrive at the stored
  * velocities' majorant rate times scale^lambda, their rate at the true
@@ -1009,8 +993,13 @@ static double next_candidate(gsl_rng *rng, double t, double t0, double total, do
  *    after each one (the h -> 0 limit of the time-step scheme, which rescales
  *    after every step); the rate is constant between collisions.
  *  - a fixed zeta: scale = e^{zeta (t - t0)} since the last output time t0,
- *    so the candidates are an inhomogeneous Poisson process of rate
- *    total e^{lambda zeta (t - t0)} (next_candidate): no splitting error. */
+ *    so the candidates are a Poisson process of rate total e^{g (t - t0)},
+ *    g = lambda zeta: no splitting error.  In the operational time
+ *    tau = (e^{g (t - t0)} - 1) / g it has the constant rate total, so the
+ *    candidates of the interval are those of a homogeneous process before
+ *    tau_out, one exponential each, as without the flow; no candidate needs
+ *    its time t (no lazy flow), and a candidate that changes total restarts
+ *    the homogeneous process at its tau (memoryless). */
 static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
 {
     const sim_scene *scene = &e->scene;
@@ -1021,20 +1010,25 @@ static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs,
     const int flowing = flow->type->linear_rate != NULL;
     const double growth = flowing ? lambda * flow->type->linear_rate(flow) : 0.0;
     double rates[MAX_EVENTS] = {0};
-    double t = 0.0, t0 = 0.0;
+    double t = 0.0;
     double total = reset_events(e, ws, rates, t, interval), speed = 1.0;
     uint64_t until_resum = e->rebound_every;
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
+        /* the interval in the clock the candidates run on: t itself, or tau */
+        double clock = t, clock_end = t_out;
+        if (flowing) {
+            clock = 0.0;
+            clock_end = growth == 0.0 ? t_out - t : expm1(growth * (t_out - t)) / growth;
+        }
         for (;;) {
-            const double t_next = flowing ? next_candidate(rng, t, t0, total, growth)
-                                  : total > 0.0 ? t + sim_rng_exponential(rng, total * speed)
-                                                : INFINITY;
-            if (t_next >= t_out)
+            if (!(total > 0.0))
                 break;
-            t = t_next;
+            clock += sim_rng_exponential(rng, total * speed);
+            if (clock >= clock_end)
+                break;
             const uint64_t before = run->counts.collisions;
-            total = rates[0] = e->fire[0](&e->events[0], run, ws->states, t);
+            total = rates[0] = e->fire[0](&e->events[0], run, ws->states, flowing ? t : clock);
             if (e->sums && --until_resum == 0) {
                 sim_sums_compute(&run->p, &run->sums);
                 until_resum = e->rebound_every;
@@ -1045,8 +1039,8 @@ static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs,
             }
         }
         if (flowing)
-            run->scale = flow->type->linear_factor(flow, run, t_out - t0);
-        t = t0 = t_out;
+            run->scale = flow->type->linear_factor(flow, run, t_out - t);
+        t = t_out;
         apply_linear(e, run);
         speed = 1.0;
         observe_output(e, ws, m, t, obs, samples);
