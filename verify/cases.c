@@ -32,6 +32,7 @@ extern const vfy_case_desc vfy_as_slab_vs_homogeneous;
 extern const vfy_case_desc vfy_vro_grw_ex3;
 /* case_split.c (SPEC §10) */
 extern const vfy_case_desc vfy_split_ex5;
+extern const vfy_case_desc vfy_split_gaussian;
 /* case_cost.c (SPEC §10: accuracy against CPU cost) */
 extern const vfy_case_desc vfy_cost_grw_ex3, vfy_cost_brs_ex2;
 extern const vfy_case_desc vfy_cost_split_ex5;
@@ -94,6 +95,8 @@ static const vfy_case cases[] = {
      &vfy_as_slab_vs_homogeneous},
     {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
+    {"split-gaussian", "split", "SPEC §10: the same with the Gaussian thermostat, which the jump"
+     " scheme runs exactly: Euler and Strang converge to it", 1, &vfy_split_gaussian},
     {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
      " n x N, paper A Ex 3", 1, &vfy_cost_grw_ex3},
     {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
