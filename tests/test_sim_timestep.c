@@ -228,26 +228,42 @@ static void test_white_noise_only(void **state)
     }
 }
 
-/* The Gaussian thermostat with elastic hard spheres: the energy changes only
- * by the scaling, so T_raw(t) = T_raw(0) e^{2 zeta t} and u(t) = u(0) e^{zeta t}
- * in every ensemble to round-off. */
+/* Elastic hard spheres with the Gaussian thermostat zeta = 0.7, drifting
+ * along x. */
+static sim_scene elastic_gaussian_scene(double dt, sim_splitting split)
+{
+    sim_scene s = ex5_scene(40, 20, dt, split);
+    s.collisions.restitution = 1.0;
+    s.heating.type = SIM_HEATING_GAUSSIAN;
+    s.heating.strength = 0.7;
+    s.particles.maxwellian.velocity[0] = 0.4;
+    return s;
+}
+
+/* The energy changes only by the scaling, so T_raw(t) = T_raw(0) e^{2 zeta t}
+ * and u(t) = u(0) e^{zeta t} in every ensemble to round-off. */
+static void assert_gaussian_growth(const sim_ensemble_result *r, double zeta)
+{
+    for (size_t m = 1; m < r->outputs; m++) {
+        const double f = exp(2.0 * zeta * r->t[m]);
+        assert_close(sim_result_mean(r, m, SIM_OBS_T_RAW),
+                     sim_result_mean(r, 0, SIM_OBS_T_RAW) * f, 1e-12, 0.0);
+        assert_close(sim_result_mean(r, m, SIM_OBS_UX), sim_result_mean(r, 0, SIM_OBS_UX) * sqrt(f),
+                     1e-12, 0.0);
+    }
+}
+
+/* The Gaussian thermostat with elastic hard spheres in the time-step scheme,
+ * Euler and Strang. */
 static void test_gaussian_with_elastic_collisions(void **state)
 {
     (void)state;
     for (int split = 0; split < 2; split++) {
-        sim_scene s = ex5_scene(40, 20, 0.05, split ? SIM_SPLIT_STRANG : SIM_SPLIT_EULER);
-        s.collisions.restitution = 1.0;
-        s.heating.type = SIM_HEATING_GAUSSIAN;
-        s.heating.strength = 0.7;
-        s.particles.maxwellian.velocity[0] = 0.4;
+        sim_scene s = elastic_gaussian_scene(0.05, split ? SIM_SPLIT_STRANG : SIM_SPLIT_EULER);
         sim_ensemble_result r;
         run(&s, &r);
+        assert_gaussian_growth(&r, 0.7);
         for (size_t m = 1; m < r.outputs; m++) {
-            double f = exp(2.0 * 0.7 * r.t[m]);
-            assert_close(sim_result_mean(&r, m, SIM_OBS_T_RAW),
-                         sim_result_mean(&r, 0, SIM_OBS_T_RAW) * f, 1e-12, 0.0);
-            assert_close(sim_result_mean(&r, m, SIM_OBS_UX),
-                         sim_result_mean(&r, 0, SIM_OBS_UX) * sqrt(f), 1e-12, 0.0);
             /* the wrong growth rate is far outside round-off */
             assert_true(fabs(sim_result_mean(&r, m, SIM_OBS_T_RAW)
                              / (sim_result_mean(&r, 0, SIM_OBS_T_RAW) * exp(2.0 * 0.707 * r.t[m]))
@@ -461,21 +477,11 @@ static void test_keep_temperature_jump(void **state)
 static void test_gaussian_jump(void **state)
 {
     (void)state;
-    sim_scene s = ex5_scene(40, 20, 0.01, SIM_SPLIT_STRANG);
+    sim_scene s = elastic_gaussian_scene(0.01, SIM_SPLIT_STRANG);
     s.scheme = SIM_SCHEME_JUMP;
-    s.collisions.restitution = 1.0;
-    s.heating.type = SIM_HEATING_GAUSSIAN;
-    s.heating.strength = 0.7;
-    s.particles.maxwellian.velocity[0] = 0.4;
     sim_ensemble_result r;
     run(&s, &r);
-    for (size_t m = 1; m < r.outputs; m++) {
-        const double f = exp(2.0 * 0.7 * r.t[m]);
-        assert_close(sim_result_mean(&r, m, SIM_OBS_T_RAW),
-                     sim_result_mean(&r, 0, SIM_OBS_T_RAW) * f, 1e-12, 0.0);
-        assert_close(sim_result_mean(&r, m, SIM_OBS_UX),
-                     sim_result_mean(&r, 0, SIM_OBS_UX) * sqrt(f), 1e-12, 0.0);
-    }
+    assert_gaussian_growth(&r, 0.7);
     assert_true(r.counts.collisions > 1000);
     sim_ensemble_result_free(&r);
 

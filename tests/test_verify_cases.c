@@ -153,14 +153,19 @@ static void test_vro_grw_ex3_wrong_solver(void **state)
  * as h (Euler) and h^2 (Strang); a time-step solver of another gas (heating
  * 20% stronger than the jump run's) leaves an offset, and Strang's
  * convergence factor fails. */
+static void check_split(const char *name, size_t min_passed, const char *wrong_strength)
+{
+    size_t passed;
+    assert_int_equal(count_failed_plain(name, NULL, 0, &passed), 0);
+    assert_true(passed >= min_passed);   /* violations, and the CFs that the noise allows */
+    const char *wrong[] = {wrong_strength};
+    assert_true(count_failed_plain(name, wrong, 1, NULL) >= 1);
+}
+
 static void test_split_ex5(void **state)
 {
     (void)state;
-    size_t passed;
-    assert_int_equal(count_failed_plain("split-ex5", NULL, 0, &passed), 0);
-    assert_true(passed >= 10);   /* violations, and the CFs that the noise allows */
-    const char *wrong[] = {"heating.strength=0.15"};
-    assert_true(count_failed_plain("split-ex5", wrong, 1, NULL) >= 1);
+    check_split("split-ex5", 10, "heating.strength=0.15");
 }
 
 /* The same with the Gaussian thermostat, which the jump scheme runs exactly:
@@ -169,11 +174,7 @@ static void test_split_ex5(void **state)
 static void test_split_gaussian(void **state)
 {
     (void)state;
-    size_t passed;
-    assert_int_equal(count_failed_plain("split-gaussian", NULL, 0, &passed), 0);
-    assert_true(passed >= 8);   /* violations, and the CFs that the noise allows */
-    const char *wrong[] = {"heating.strength=0.42"};
-    assert_true(count_failed_plain("split-gaussian", wrong, 1, NULL) >= 1);
+    check_split("split-gaussian", 8, "heating.strength=0.42");
 }
 
 int main(void)

@@ -443,16 +443,20 @@ static const char *const quick_rows[] = {
     "the rows, with the candidates of the smallest step and the flights scaled to the step):"  \
     SPLIT_COST_TEXT ". Total wall time {wall_total:%.1f} s."
 
+/* What both cases share: the rows (CI: small, so the small steps are skipped
+ * as noise), the metrics, checks and columns. */
+#define SPLIT_DESC_COMMON                                                                      \
+    .paper_rows = {.rows = paper_rows},                                                        \
+    .quick_rows = {.rows = quick_rows,                                                         \
+                   .sets = "particles.n=200;particles.ensembles=60;scene.t_end=16;"            \
+                           "scene.outputs=11"},                                                \
+    .label = "{case} {label}", .adjust = split_adjust, .metrics = split_metrics,               \
+    .checks = split_checks, .columns = split_columns,                                          \
+    .row_progress = "{case} {label}: T = {T:%.6f} ± {T_ci:%.6f}, a2 = {a2:%.5f} ± "            \
+                    "{a2_ci:%.5f} ({wall_s:%.1f} s)"
+
 const vfy_case_desc vfy_split_ex5 = {
-    .paper_rows = {.rows = paper_rows},
-    /* CI: small, so the small steps are skipped as noise */
-    .quick_rows = {.rows = quick_rows,
-                   .sets = "particles.n=200;particles.ensembles=60;scene.t_end=16;"
-                           "scene.outputs=11"},
-    .label = "{case} {label}", .adjust = split_adjust, .metrics = split_metrics,
-    .checks = split_checks, .columns = split_columns,
-    .row_progress = "{case} {label}: T = {T:%.6f} ± {T_ci:%.6f}, a2 = {a2:%.5f} ± {a2_ci:%.5f} "
-                    "({wall_s:%.1f} s)",
+    SPLIT_DESC_COMMON,
     .after_rows = split_after_ex5,
     .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "
              "paper A Ex 5's gas ({size} sizes)",
@@ -469,14 +473,7 @@ const vfy_case_desc vfy_split_ex5 = {
  * costs O(1) plus its collisions, engine.c stages_scaled) and collide at the
  * rate of the step's start; the jump row has no splitting. */
 const vfy_case_desc vfy_split_gaussian = {
-    .paper_rows = {.rows = paper_rows},
-    .quick_rows = {.rows = quick_rows,
-                   .sets = "particles.n=200;particles.ensembles=60;scene.t_end=16;"
-                           "scene.outputs=11"},
-    .label = "{case} {label}", .adjust = split_adjust, .metrics = split_metrics,
-    .checks = split_checks, .columns = split_columns,
-    .row_progress = "{case} {label}: T = {T:%.6f} ± {T_ci:%.6f}, a2 = {a2:%.5f} ± {a2_ci:%.5f} "
-                    "({wall_s:%.1f} s)",
+    SPLIT_DESC_COMMON,
     .after_rows = split_after_gaussian,
     .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "
              "hard spheres with the Gaussian thermostat ({size} sizes)",
