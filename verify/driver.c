@@ -934,7 +934,9 @@ static int rows_share_grid(const vfy_case_run *run)
 
 /* A curves figure over rows with output times of their own (as-transient's
  * t_end and outputs differ by row): each row a curve on its own times, with
- * its references dashed, as an xy figure (one gnuplot index block a curve). */
+ * its references dashed, as an xy figure (one gnuplot index block a curve),
+ * t on a log axis (the rows' spans differ) and y too when it is positive and
+ * spans two decades or more. */
 static int write_curves_by_row(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
                                const char *title, const char *quantity)
 {
@@ -967,8 +969,16 @@ static int write_curves_by_row(vfy_case_run *run, const vfy_figure_spec *f, cons
                                            .x = row->res.t, .y = {mean}, .ci = {ci}};
             }
         }
+        double lo = INFINITY, hi = 0.0;
+        for (size_t k = 0; k < c; k++)
+            for (size_t m = 0; m < curves[k].count; m++) {
+                const double y = curves[k].y[0][m];
+                lo = y < lo || !(y > 0.0) ? y : lo;   /* NaN or y <= 0: no log axis */
+                hi = fmax(hi, y);
+            }
         const vfy_xy_figure xy = {.name = name, .title = title, .xlabel = "t",
-                                  .comment = run->comment, .npanels = 1,
+                                  .comment = run->comment, .logx = 1,
+                                  .logy = lo > 0.0 && hi >= 100.0 * lo, .npanels = 1,
                                   .ylabel = {quantity}, .ncurves = ncurves, .curves = curves};
         rc = vfy_write_xy(run->o, &xy);
     }
