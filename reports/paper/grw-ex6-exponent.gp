@@ -1,11 +1,11 @@
 # gdsmc 0.2.0 verify: scene verify/scenes/grw-ex6.ini, seed 20030330, n = 10000000, N = 10 ensembles, 21 outputs on [0, 2.5]
-# paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex6 (fitted b = 1.468): gnuplot reports/paper/grw-ex6-exponent.gp
+# paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex6 (fitted b = 1.462): gnuplot reports/paper/grw-ex6-exponent.gp
 set terminal pngcairo size 1000,390 font ',10'
 set termoption noenhanced
 set output 'reports/paper/grw-ex6-exponent.png'
 set datafile separator ','
 set datafile missing ''
-set multiplot layout 1,1 title 'paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex6 (fitted b = 1.468)'
+set multiplot layout 1,1 title 'paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex6 (fitted b = 1.462)'
 set key outside right top
 set grid
 set xlabel 'x_k'
