@@ -462,7 +462,8 @@ const vfy_case_desc vfy_split_ex5 = {
              "paper A Ex 5's gas ({size} sizes)",
     .notes = SPLIT_NOTES_HEAD
              " (at larger h the Gaussian kicks of one step make f nearly Maxwellian and the "
-             "difference saturates at about -a2)" SPLIT_NOTES_DTMAX "Strang merges the half flights of adjacent "
+             "difference saturates at about -a2)" SPLIT_NOTES_DTMAX
+             "Strang merges the half flights of adjacent "
              "steps (exact for white noise), so it costs what Euler costs. ns_per_collision = "
              "CPU time per accepted collision, everything included (the time-step rows accept "
              "pairs by |g| as the jump scheme does, SPEC §5, and bring each particle a stage "

@@ -962,23 +962,29 @@ static int write_curves_by_row(vfy_case_run *run, const vfy_figure_spec *f, cons
             for (size_t j = 0; j <= nref; j++, c++) {
                 double *mean = at, *ci = j == 0 ? at + M : NULL;
                 at += j == 0 ? 2 * M : M;
-                vfy_row_series(row, j == 0 ? f->quantity : f->refs[j - 1], mean, ci);
+                if (vfy_row_series(row, j == 0 ? f->quantity : f->refs[j - 1], mean, ci) != 0)
+                    for (size_t m = 0; m < M; m++)   /* no such series: no points */
+                        mean[m] = NAN;
                 snprintf(labels[c], sizeof labels[c], "%s%s%s", label, j ? ": " : "",
                          j ? f->refs[j - 1] : "");
                 curves[c] = (vfy_xy_curve){.label = labels[c], .reference = j > 0, .count = M,
                                            .x = row->res.t, .y = {mean}, .ci = {ci}};
             }
         }
+        int positive = 1;
         double lo = INFINITY, hi = 0.0;
         for (size_t k = 0; k < c; k++)
             for (size_t m = 0; m < curves[k].count; m++) {
                 const double y = curves[k].y[0][m];
-                lo = y < lo || !(y > 0.0) ? y : lo;   /* NaN or y <= 0: no log axis */
+                if (isnan(y))
+                    continue;   /* left out of the figure */
+                positive &= y > 0.0;
+                lo = fmin(lo, y);
                 hi = fmax(hi, y);
             }
         const vfy_xy_figure xy = {.name = name, .title = title, .xlabel = "t",
                                   .comment = run->comment, .logx = 1,
-                                  .logy = lo > 0.0 && hi >= 100.0 * lo, .npanels = 1,
+                                  .logy = positive && hi >= 100.0 * lo, .npanels = 1,
                                   .ylabel = {quantity}, .ncurves = ncurves, .curves = curves};
         rc = vfy_write_xy(run->o, &xy);
     }
