@@ -617,6 +617,12 @@ static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const 
     }
 }
 
+/* A row's label template: the description's, or "{case} n={n}". */
+static const char *row_label_template(const vfy_case_desc *d)
+{
+    return d->label ? d->label : "{case} n={n}";
+}
+
 /* Simulate each variant of the row (or its one solver scene). */
 static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, char *msg,
                                size_t msglen)
@@ -641,9 +647,7 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
                 != SIM_OK)
                 break;
         }
-        char tmpl[160];
-        snprintf(tmpl, sizeof tmpl, "%s", d->label ? d->label : "{case} n={n}");
-        vfy_expand(label, sizeof label, tmpl, run, row);
+        vfy_expand(label, sizeof label, row_label_template(d), run, row);
         if (variant[0])
             snprintf(label + strlen(label), sizeof label - strlen(label), " %s", variant);
         sim_ensemble_result *res = k == 0 ? &row->res : &row->more[k - 1];
@@ -957,8 +961,7 @@ static int write_curves_by_row(vfy_case_run *run, const vfy_figure_spec *f, cons
             const vfy_row *row = &run->rows[i];
             const size_t M = row->res.outputs;
             char label[96];
-            vfy_expand(label, sizeof label, run->d->label ? run->d->label : "{case} n={n}", run,
-                       row);
+            vfy_expand(label, sizeof label, row_label_template(run->d), run, row);
             for (size_t j = 0; j <= nref; j++, c++) {
                 double *mean = at, *ci = j == 0 ? at + M : NULL;
                 at += j == 0 ? 2 * M : M;
