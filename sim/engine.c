@@ -9,10 +9,14 @@
  * particle is brought to that time, the observables are recorded, and the
  * majorants are recomputed from the synchronised system; the pending waiting
  * time is then redrawn, which is exact because the waiting times are
- * exponential (memoryless).  With scene.observation = conditional nothing is
- * brought: T .. Pyz are the exact expectations over the pending increments,
- * from running sums the events keep (observe.h, sim_sums; recomputed every
- * REBOUND_SWEEPS n candidates), and the bound adds each particle's own reach.  The loop is chosen when the engine is built:
+ * exponential (memoryless).  When an event process needs the velocity bound,
+ * the bound is also recomputed between output times, about every
+ * LAZY_REBOUND_SWEEPS n candidates, without bringing any particle: each
+ * carries the flow's reach from its own stamp (lazy_reset).  With
+ * scene.observation = conditional nothing is brought: T .. Pyz are the exact
+ * expectations over the pending increments, from running sums the events
+ * keep (observe.h, sim_sums; recomputed every REBOUND_SWEEPS n candidates).
+ * The loop is chosen when the engine is built:
  *
  *  - with a lazy flow (run_jump_timed) every candidate needs its time, so
  *    the waiting times are drawn one by one, tau = -ln(U) / pi_hat;
@@ -84,6 +88,19 @@
  * majorant near the current largest speed (run_jump_counted). */
 #define REBOUND_SWEEPS 4
 
+/* With a lazy flow the bound carries the flow's reach (7 sigma of its
+ * increment) over the span until the next reset (reset_bound), so a long span
+ * inflates the majorant: with resets only at paper A Ex 5's output times,
+ * 1.6 apart, 12.2 candidates per hard-sphere collision (split-ex5's jump
+ * rows, n = 1024).  Runs with a lazy flow and a bounded process therefore
+ * also reset every LAZY_REBOUND_SWEEPS n candidates or so (lazy_reset;
+ * interval_lazy in the time-step scheme): 6.8 candidates per collision
+ * there.  A reset brings no particle (each keeps its own reach from its
+ * stamp; about 2n square roots) and is exact anywhere, the waiting times
+ * being memoryless.  Resets every 1, 2 and 4 n candidates cost the same
+ * CPU time within this machine's noise. */
+#define LAZY_REBOUND_SWEEPS 2
+
 /* The largest Poisson mean drawn at once (gsl_ran_poisson returns an
  * unsigned int); a longer span is cut into pieces, which is exact because the
  * counts of disjoint spans are independent. */
@@ -119,6 +136,7 @@ struct sim_engine {
     double pending_spread;/* ... the lazy flow's variance per unit time, or 0 */
     int sums;             /* ... from running sums the events keep (else a pass) */
     int bounded;          /* some event needs the velocity bound (run.h) */
+    int lazy_rebound;     /* ... and a lazy flow: reset between output times too */
     int fixed_centre;     /* ... centred at `centre`, else at the bulk velocity */
     double centre[3];
     size_t nevents;
@@ -184,6 +202,8 @@ static void add_event(sim_engine *e, sim_effect effect)
 }
 
 static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double h, double t);
+static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
+                           double t, double horizon);
 
 /* The time-step scheme's steps: stages and the flow's step composed.  A
  * process without a stage of its own fires its candidates (stage_fired; no
@@ -282,9 +302,23 @@ static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double
 static void interval_lazy(const sim_engine *e, sim_workspace *ws)
 {
     const double theta = e->scene.splitting == SIM_SPLIT_STRANG ? 0.5 : 0.0;
-    for (size_t k = 0; k < ws->steps; k++)
+    size_t next_reset = e->lazy_rebound ? 0 : ws->steps;
+    for (size_t k = 0; k < ws->steps; k++) {
+        if (k == next_reset) {   /* lazy_rebound: reset for about LAZY_REBOUND_SWEEPS n
+                                    candidates, the stages of `span` steps (run_jump_timed) */
+            double total = 0.0;
+            for (size_t q = 0; q < e->nevents; q++)
+                total += ws->rates[q];
+            const double steps = floor(LAZY_REBOUND_SWEEPS * (double)e->scene.particles.n
+                                       / (total * ws->h));
+            const size_t span = steps >= 1.0 && steps < (double)(ws->steps - k)
+                                    ? (size_t)steps : steps < 1.0 ? 1 : ws->steps - k;
+            reset_events(e, ws, ws->rates, ws->t0 + (double)k * ws->h, (double)span * ws->h);
+            next_reset = k + span;
+        }
         for (size_t q = 0; q < e->nevents; q++)
             stage_fired(e, ws, q, ws->h, ws->t0 + ((double)k + theta) * ws->h);
+    }
 }
 
 /* Strang: flow h/2, collisions h, flow h/2 per step, with the two half flows
@@ -505,6 +539,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         e->fire_many = e->events[0].type->select_fire_many(&e->events[0]);
     e->fire_some = e->fire_many ? fire_some_alone : e->nevents == 1 ? fire_some_one
                                                                     : fire_some_mixed;
+    e->lazy_rebound = e->bounded && e->lazy_flow;
     e->rebound_every = (e->bounded && !e->lazy_flow) || e->sums
                            ? REBOUND_SWEEPS * (uint64_t)scene->particles.n : UINT64_MAX;
     *engine = e;
@@ -601,9 +636,10 @@ void sim_workspace_free(sim_workspace *ws)
 }
 
 /* The velocity bound of run.h at time t: centre c (fixed, or the bulk
- * velocity), R = max |v_i - c| plus the lazy flow's reach over the horizon
- * (over t + horizon - stamp_i per particle when conditional observation left
- * the system unsynchronised); R = +inf (no bound) when no event needs one. */
+ * velocity), R = max |v_i - c| plus, with a lazy flow, each particle's reach
+ * over t + horizon - stamp_i (the system is synchronised only at sampled
+ * output times, where this is the reach over the horizon); R = +inf (no
+ * bound) when no event needs one. */
 static void reset_bound(const sim_engine *e, sim_run *run, double t, double horizon)
 {
     const size_t n = run->p.n;
@@ -623,7 +659,7 @@ static void reset_bound(const sim_engine *e, sim_run *run, double t, double hori
             c[k] /= (double)n;
     }
     memcpy(run->centre, c, sizeof c);
-    if (run->flow && e->conditional) {
+    if (run->flow) {
         double r = 0.0;
         for (size_t i = 0; i < n; i++) {
             const double a = sqrt(sim_dist2(run->p.v[i], c))
@@ -638,7 +674,7 @@ static void reset_bound(const sim_engine *e, sim_run *run, double t, double hori
         const double x = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         r2 = x > r2 ? x : r2;   /* not fmax: a library call on baseline x86-64 */
     }
-    run->radius = sqrt(r2) + (run->flow ? run->flow->type->reach(run->flow, horizon) : 0.0);
+    run->radius = sqrt(r2);
 }
 
 /* Recompute the bound and every event process's majorant; return their total
@@ -789,6 +825,21 @@ static void observe_output(const sim_engine *e, sim_workspace *ws, size_t m, dou
         ws->output_seconds += clock_seconds() - start;
 }
 
+/* A lazy_rebound run's reset at time t (the output time at t_out, or
+ * earlier): the bound and the majorants for a span of about
+ * LAZY_REBOUND_SWEEPS n candidates at the current total rate, at most to
+ * t_out; returns the new total and sets *t_span to the span's end. */
+static double lazy_reset(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
+                         double total, double t, double t_out, double *t_span)
+{
+    const double left = t_out - t;
+    double span = LAZY_REBOUND_SWEEPS * (double)e->scene.particles.n / total;
+    if (!(span < left))
+        span = left;
+    *t_span = span < left ? t + span : t_out;
+    return reset_events(e, ws, rates, t, span);
+}
+
 /* The exact jump scheme from t = 0 to t_end (the initial state is sampled),
  * with a lazy flow: every candidate gets its waiting time. */
 static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
@@ -804,10 +855,18 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
     uint64_t until_resum = e->rebound_every;   /* the running sums' recomputation */
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
+        double t_span = t_out;   /* the end of the span the bound covers */
+        if (e->lazy_rebound && total > 0.0)
+            total = lazy_reset(e, ws, rates, total, t, t_out, &t_span);
         for (;;) {
             double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total) : INFINITY;
-            if (t_next >= t_out)
-                break;
+            if (t_next >= t_span) {
+                if (t_span >= t_out)
+                    break;
+                t = t_span;   /* only with lazy_rebound */
+                total = lazy_reset(e, ws, rates, total, t, t_out, &t_span);
+                continue;
+            }
             t = t_next;
             size_t k = e->nevents == 1 ? 0 : pick_event(e, rng, rates, total);
             rates[k] = e->fire[k](&e->events[k], run, ws->states + e->state_offset[k], t);
@@ -819,7 +878,7 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
         }
         t = t_out;
         observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs)
+        if (m + 1 < scene->outputs && !e->lazy_rebound)   /* else at the loop's top */
             total = reset_events(e, ws, rates, t, interval);
     }
 }
@@ -979,7 +1038,7 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
         if (e->linear)
             apply_linear(e, &ws->run);
         observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs)   /* synchronised */
+        if (m + 1 < scene->outputs && !e->lazy_rebound)   /* synchronised; else interval_lazy */
             reset_events(e, ws, ws->rates, t, interval);
     }
 }

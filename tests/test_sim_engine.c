@@ -9,7 +9,8 @@
  * - hard spheres (the two-stage majorant of effect_collisions.c): the number
  *   of collisions against the exact rate in each loop the engine can build
  *   (its own loop, one candidate per call with a lazy flow, and mixed with a
- *   background), and for two particles, whose rate |g|/2 never changes,
+ *   background), under strong white noise (the bound reset between output
+ *   times), and for two particles, whose rate |g|/2 never changes,
  *   through the Poisson counts and beta-distributed times of the loop without
  *   a lazy flow;
  * - paper B's background (SPEC §4): collision counts against the exact rates
@@ -287,6 +288,48 @@ static void test_hard_sphere_rate_paths(void **state)
     }
 }
 
+/* Elastic hard spheres under strong white noise (beta = 1, T0 = 1): the
+ * product Maxwellian stays one, at T(t) = 1 + 2 t (heating convolves each
+ * velocity with a Gaussian, elastic collisions keep any product Maxwellian),
+ * so the expected number of collisions per ensemble is 2 pi gamma C (n - 1)
+ * 4 / sqrt(pi) ∫ sqrt(1 + 2 t) dt = ... ((1 + 2 t_end)^{3/2} - 1) / 3.  Output
+ * times 2 apart: the flow's reach over a whole interval (7 sigma = 14)
+ * would inflate the majorant, so the engine resets the bound between output
+ * times as well (engine.c, lazy_reset), each particle carrying its own reach
+ * from its stamp.  The count is exact through those resets (the wrong
+ * answer, 5% fewer, fails), no draw outruns the bound, and the majorant
+ * stays tight: fewer than 6 candidates per collision (5.29 measured; 9.27
+ * with resets at output times only). */
+static void test_hard_sphere_heated_rate(void **state)
+{
+    (void)state;
+    const size_t n = 300, N = 100;
+    const double t_end = 4.0;
+    sim_scene s = heated_maxwell_scene(n, N);
+    s.t_end = t_end;
+    s.outputs = 3;
+    s.collisions.kernel = SIM_KERNEL_HARD_SPHERES;
+    s.collisions.exponent = 1.0;
+    s.collisions.rate = 1.0;
+    s.collisions.restitution = 1.0;
+    s.heating.strength = 1.0;
+    const double expected = 2.0 * M_PI / (4.0 * M_PI) * (double)(n - 1) * 4.0 / sqrt(M_PI)
+                            * (pow(1.0 + 2.0 * t_end, 1.5) - 1.0) / 3.0 * (double)N;
+    sim_ensemble_result r;
+    run(&s, &r);
+    const double count = (double)r.counts.collisions;
+    const double sigma = sqrt(expected + expected * expected / (6.0 * (double)(n * N)));
+    const double z = (count - expected) / sigma, z_wrong = (count - 0.95 * expected) / sigma;
+    const double per_collision = (double)r.counts.candidates / count;
+    print_message("heated hard spheres: %.0f collisions, expected %.0f (z = %.2f), %.2f "
+                  "candidates per collision\n", count, expected, z, per_collision);
+    assert_true(fabs(z) < ZMAX);
+    assert_true(fabs(z_wrong) > ZMAX);
+    assert_int_equal(r.counts.violations, 0);
+    assert_true(per_collision < 6.0);
+    sim_ensemble_result_free(&r);
+}
+
 /* Two elastic hard spheres: |g| never changes, so each run's number of
  * collisions is Poisson with mean 2 pi gamma C |g| t_end = |g| t_end / 2
  * (C = 1/(4 pi)), |g| = sqrt(12 T) from the run's first row (T = |g|^2/12
@@ -561,6 +604,7 @@ int main(void)
         cmocka_unit_test(test_no_heating_draws_no_gaussians),
         cmocka_unit_test(test_thread_count_independence),
         cmocka_unit_test(test_hard_sphere_rate_paths),
+        cmocka_unit_test(test_hard_sphere_heated_rate),
         cmocka_unit_test(test_two_particles_counted),
         cmocka_unit_test(test_background_rates),
         cmocka_unit_test(test_background_hs_equilibrium),
