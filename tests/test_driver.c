@@ -215,8 +215,9 @@ static void test_templates(void **state)
 
 /* Paper A's tail exponent: y_k = ln(ln f_1 - ln f_k) against ln(r_k - r_1)
  * has slope exactly b for f_k = f_1 exp(-a (r_k - r_1)^b); a tail of another
- * order gives another slope; the clean range ends at the first noisy shell;
- * the first shell's error enters b's standard error. */
+ * order gives another slope; a window uses only its shells; the clean range
+ * ends at the first noisy shell; the first shell's error enters b's standard
+ * error. */
 static void test_tail_exponent(void **state)
 {
     (void)state;
@@ -230,7 +231,7 @@ static void test_tail_exponent(void **state)
             ci[k] = 3.2 * 0.01 * f[k];   /* 1% standard errors */
         }
         ci[0] = 0.0;
-        vfy_tail_exponent t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+        vfy_tail_exponent t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, INFINITY, 0.1, 3.2);
         assert_int_equal(t.used, BINS - 19);   /* r = 2.0 ... 6.4 */
         assert_close(t.r_first, 2.0, 1e-12, 0);
         assert_close(t.b, b, 1e-9, 0);
@@ -240,28 +241,33 @@ static void test_tail_exponent(void **state)
             f[k] = 0.3 * exp(-1.7 * pow(r[k] - r[0], 2.0));
             ci[k] = 3.2 * 0.01 * f[k];
         }
-        t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+        t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, INFINITY, 0.1, 3.2);
         assert_close(t.b, 2.0, 1e-9, 0);
     }
+    /* a window (the local slope): only its shells, r = 3.0 ... 4.0 */
+    vfy_tail_exponent w = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.95, 4.05, 0.1, 3.2);
+    assert_int_equal(w.used, 11);
+    assert_close(w.r_last, 4.0, 1e-12, 0);
+    assert_close(w.b, 2.0, 1e-9, 0);
     /* a shell with a 20% error ends the clean range before it */
     ci[40] = 3.2 * 0.2 * f[40];
-    vfy_tail_exponent t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+    vfy_tail_exponent t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, INFINITY, 0.1, 3.2);
     assert_int_equal(t.used, 21);   /* r = 2.0 ... 4.0 */
     assert_close(t.r_last, 4.0, 1e-12, 0);
     /* the first shell's 5% error widens the standard error of b */
     ci[0] = 3.2 * 0.05 * f[0];
-    vfy_tail_exponent wide = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+    vfy_tail_exponent wide = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, INFINITY, 0.1, 3.2);
     assert_close(wide.b, 2.0, 1e-9, 0);
     assert_true(wide.b_se > 2.0 * t.b_se);
     /* noise: the slope moves by about its standard error */
     for (size_t k = 1; k < BINS; k++)
         f[k] *= 1.0 + 0.01 * ((k % 3 == 0) ? 1.0 : -0.5);
     ci[0] = 0.0;
-    t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, 0.1, 3.2);
+    t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 2.0, INFINITY, 0.1, 3.2);
     assert_true(fabs(t.b - 2.0) < 3.0 * t.b_se);
     assert_true(t.chi2_dof > 0.1);
     /* fewer than 3 shells: no fit */
-    t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 6.25, 0.1, 3.2);
+    t = vfy_fit_tail_exponent(r, f, ci, BINS, 0, 6.25, INFINITY, 0.1, 3.2);
     assert_true(isnan(t.b));
 }
 

@@ -147,13 +147,13 @@ size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t b
  * ln f_k0 shifted by `shift` (the weights do not count f_k0's error, which is
  * common to every y_k); t gets b, chi2_dof and the range. */
 static void fit_exponent(const double *r, const double *f, const double *ci, size_t bins,
-                         size_t k0, double r_lo, double rel_max, double lambda, double shift,
-                         double *work, vfy_tail_exponent *t)
+                         size_t k0, double r_lo, double r_hi, double rel_max, double lambda,
+                         double shift, double *work, vfy_tail_exponent *t)
 {
     double *x = work, *y = x + bins, *w = y + bins;
     const double ln0 = log(f[k0]) + shift;
     size_t m = 0;
-    for (size_t k = k0 + 1; k < bins; k++) {
+    for (size_t k = k0 + 1; k < bins && r[k] <= r_hi; k++) {
         const double s = ci[k] / lambda / f[k];   /* of ln f_k */
         if (!(f[k] > 0.0) || !(f[k] < f[k0]) || !(s <= rel_max)) {
             if (m > 0)
@@ -182,8 +182,8 @@ static void fit_exponent(const double *r, const double *f, const double *ci, siz
 }
 
 vfy_tail_exponent vfy_fit_tail_exponent(const double *r, const double *f, const double *ci,
-                                        size_t bins, size_t k0, double r_lo, double rel_max,
-                                        double lambda)
+                                        size_t bins, size_t k0, double r_lo, double r_hi,
+                                        double rel_max, double lambda)
 {
     vfy_tail_exponent t = {NAN, NAN, NAN, NAN, NAN, 0}, shifted = t;
     double *work = malloc(3 * (bins ? bins : 1) * sizeof *work);
@@ -191,11 +191,11 @@ vfy_tail_exponent vfy_fit_tail_exponent(const double *r, const double *f, const 
         free(work);
         return t;
     }
-    fit_exponent(r, f, ci, bins, k0, r_lo, rel_max, lambda, 0.0, work, &t);
+    fit_exponent(r, f, ci, bins, k0, r_lo, r_hi, rel_max, lambda, 0.0, work, &t);
     /* f_k0's error moves every y_k the same way: its share of b's error is
      * the change of b when ln f_k0 moves by one standard error */
     const double s0 = ci[k0] / lambda / f[k0];
-    fit_exponent(r, f, ci, bins, k0, r_lo, rel_max, lambda, s0, work, &shifted);
+    fit_exponent(r, f, ci, bins, k0, r_lo, r_hi, rel_max, lambda, s0, work, &shifted);
     if (t.used >= 3)
         t.b_se = hypot(t.b_se, shifted.b - t.b);
     free(work);

@@ -72,7 +72,8 @@ size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t b
  * which is exactly b for f_k = f_k0 exp(-a (r_k - r_k0)^b).  The clean range:
  * the shells from the first with r_k >= r_lo to the last before one whose
  * f_k is not below f_k0 (or not positive) or whose relative standard error
- * ci[k]/(lambda f_k) exceeds rel_max (ci = lambda standard errors).  Weights
+ * ci[k]/(lambda f_k) exceeds rel_max (ci = lambda standard errors), or with
+ * r_k <= r_hi (INFINITY: no limit; a finite window gives the local slope).  Weights
  * from the errors of ln f_k; the standard error of b is the fit's, times
  * sqrt(chi^2/dof) when that exceeds 1 (a model that does not fit the shells
  * widens its own error), in quadrature with the change of b when ln f_k0
@@ -84,8 +85,8 @@ typedef struct vfy_tail_exponent {
     size_t used;
 } vfy_tail_exponent;
 vfy_tail_exponent vfy_fit_tail_exponent(const double *r, const double *f, const double *ci,
-                                        size_t bins, size_t k0, double r_lo, double rel_max,
-                                        double lambda);
+                                        size_t bins, size_t k0, double r_lo, double r_hi,
+                                        double rel_max, double lambda);
 
 /* ------------------------------------------------- adapters (vfy_metric_fn) */
 

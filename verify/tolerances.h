@@ -42,13 +42,15 @@
  * most 0.03.  The clean range starts at two thermal speeds (c = |C|/v0 = 2,
  * past the Gaussian core, fixed before any run) and ends before the first
  * shell whose relative standard error exceeds 10%; b_far starts at c = 3.5
- * (the drift of the slope along the tail).  b is judged from n = 1e6 on (at
- * quick sizes the clean range ends near c = 3.5). */
+ * (the drift of the slope along the tail); the local slope is the same fit
+ * over a window of width 1 in c (b_local: the clean range's last one).  b is
+ * judged from n = 1e6 on (at quick sizes the clean range ends near c = 3.5). */
 #define VFY_TOL_TAILS_Z 2.0
 #define VFY_TOL_TAILS_B_ABS 0.05
 #define VFY_TOL_TAILS_B_SE 0.03
 #define VFY_TOL_TAILS_C_LO 2.0
 #define VFY_TOL_TAILS_C_FAR 3.5
+#define VFY_TOL_TAILS_WINDOW 1.0
 #define VFY_TOL_TAILS_REL_MAX 0.1
 #define VFY_TOL_TAILS_JUDGED_N 1e6
 
