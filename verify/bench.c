@@ -255,19 +255,32 @@ typedef struct bench_breakdown {
  * candidate accepted) on the scene's initial state with the engine's kernel
  * (sim/effect_collisions.c, fire_many_maxwell): i and j != i from the index
  * stream, Marsaglia's unit vector, the collision rule; without candidate
- * times, counters or output times. */
-static sim_status run_floor_maxwell(const sim_scene *s, double collisions, bench_row *row,
-                                    sim_error *err)
+ * times, counters or output times.  With `heated` (the scene's white noise of
+ * strength beta), also what the heating needs at the least: each candidate's
+ * waiting time (one exponential) and i and j brought to it with their pending
+ * increments (sqrt(2 beta dt) times three normal variates each, and their
+ * stamps), the draws of paper A's algorithm (SPEC §3) and nothing else. */
+static sim_status run_floor_maxwell(const sim_scene *s, double collisions, int heated,
+                                    bench_row *row, sim_error *err)
 {
     sim_particles p;
     gsl_rng *rng = NULL;
     sim_status status = floor_start(s, &p, &rng, err);
     if (status != SIM_OK)
         return status;
-    const double alpha = s->collisions.restitution;
+    const double alpha = s->collisions.restitution, beta2 = 2.0 * s->heating.strength;
+    const double rate = 2.0 * M_PI * s->collisions.rate * s->collisions.constant
+                        * (double)(p.n - 1);   /* pi_hat of SPEC §3, lambda = 0 */
+    double *stamp = heated ? calloc(p.n, sizeof *stamp) : NULL;
+    if (heated && stamp == NULL) {
+        sim_particles_free(&p);
+        gsl_rng_free(rng);
+        return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    }
     sim_pick pick;
     sim_pick_start(&pick, &p, rng);
     const uint64_t target = (uint64_t)collisions;
+    double t = 0.0;
     const double start = thread_cpu_seconds(), wall = wall_seconds();
     for (uint64_t k = 0; k < target; k++) {
         uint32_t spare, i = sim_pick_next(&pick, &p, rng, &spare, 0), j;
@@ -275,6 +288,19 @@ static sim_status run_floor_maxwell(const sim_scene *s, double collisions, bench
             j = sim_pick_next(&pick, &p, rng, &spare, 0);
         while (j == i);
         double *vi = p.v[i], *vj = p.v[j];
+        if (heated) {
+            t += sim_rng_exponential(rng, rate);
+            const uint32_t ij[2] = {i, j};
+            for (int q = 0; q < 2; q++) {
+                double xi[3], *v = p.v[ij[q]];
+                const double sd = sqrt(beta2 * (t - stamp[ij[q]]));
+                sim_rng_normal3(rng, xi);
+                v[0] += sd * xi[0];
+                v[1] += sd * xi[1];
+                v[2] += sd * xi[2];
+                stamp[ij[q]] = t;
+            }
+        }
         const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
         double e[3];
         sim_rng_unit_sphere(rng, e);
@@ -283,8 +309,9 @@ static sim_status run_floor_maxwell(const sim_scene *s, double collisions, bench
     row->cpu = thread_cpu_seconds() - start;
     row->wall = wall_seconds() - wall;
     row->events = row->accepted = row->candidates = (double)target;
-    row->bytes_per_particle = (double)sim_particles_bytes_per_particle(0);
+    row->bytes_per_particle = (double)sim_particles_bytes_per_particle(heated);
     row->threads = 1;
+    free(stamp);
     sim_particles_free(&p);
     gsl_rng_free(rng);
     return SIM_OK;
@@ -430,7 +457,8 @@ static sim_status breakdown_rows(const vfy_bench_options *o, const sim_scene *s,
 
 /* Paper A Ex 3 and paper B Ex 2 (Maxwell kernels) at n = 1024 as their
  * scenes observe them (81 and 513 output times), beside the same scenes
- * bare (rows grw-ex3-bare, brs-ex2-bare) and the Maxwell floor; enough
+ * bare (rows grw-ex3-bare, brs-ex2-bare) and the Maxwell floor (for paper A
+ * also floor-maxwell-heated, the floor with the heating's draws); enough
  * ensembles for about o->seconds per variant. */
 static sim_status maxwell_rows(const vfy_bench_options *o, vfy_table *t, char *msg,
                                size_t msglen)
@@ -445,11 +473,13 @@ static sim_status maxwell_rows(const vfy_bench_options *o, vfy_table *t, char *m
             return status;
         s.particles.n = 1024;
         sim_error err = {{0}, {0}};
-        bench_row probe = {0}, floor_row = {0};
+        bench_row probe = {0}, floor_row = {0}, heated_row = {0};
         status = run_engine(&s, 1, &probe, &err);
         const double runs = fmin(fmax(ceil(o->seconds / fmax(probe.cpu, 1e-6)), 1.0), 1e6);
         if (status == SIM_OK)
-            status = run_floor_maxwell(&s, probe.candidates * runs, &floor_row, &err);
+            status = run_floor_maxwell(&s, probe.candidates * runs, 0, &floor_row, &err);
+        if (status == SIM_OK && s.heating.present)
+            status = run_floor_maxwell(&s, probe.candidates * runs, 1, &heated_row, &err);
         if (status != SIM_OK) {
             vfy_scene_format_error(&s, &err, msg, msglen);
             return status;
@@ -457,6 +487,10 @@ static sim_status maxwell_rows(const vfy_bench_options *o, vfy_table *t, char *m
         const double floor_rate = floor_row.events / floor_row.cpu;
         say(o, "floor-maxwell", 1024, &floor_row);
         add_row(t, "floor-maxwell", 1024, &floor_row, floor_rate, 0.0);
+        if (s.heating.present) {
+            say(o, "floor-maxwell-heated", 1024, &heated_row);
+            add_row(t, "floor-maxwell-heated", 1024, &heated_row, floor_rate, 0.0);
+        }
         status = breakdown_rows(o, &s, (size_t)runs, names[k][0], names[k][1], floor_rate, t,
                                 msg, msglen);
     }
