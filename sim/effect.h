@@ -94,8 +94,9 @@ typedef struct sim_effect_type {
      * e.g. the background velocity u_B of paper B's Algorithm 2; returns 1 and
      * sets centre, or 0 (then the engine uses the bulk velocity). */
     int (*bound_centre)(const sim_effect *e, double centre[3]);
-    /* horizon: the time until the next reset (the next output time).  Called
-     * after the engine has set the bound. */
+    /* horizon: the time until the next reset (the next output time, or
+     * sooner with a lazy flow: engine.c, lazy_reset).  Called after the
+     * engine has set the bound. */
     double (*reset)(const sim_effect *e, sim_run *run, void *state, double horizon);
     /* The majorant rate now, after another process grew the bound. */
     double (*rate)(const sim_effect *e, const sim_run *run, void *state);

@@ -856,7 +856,7 @@ static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, 
     for (size_t m = 1; m < scene->outputs; m++) {
         const double t_out = sim_scene_output_time(scene, m);
         double t_span = t_out;   /* the end of the span the bound covers */
-        if (e->lazy_rebound && total > 0.0)
+        if (e->lazy_rebound)
             total = lazy_reset(e, ws, rates, total, t, t_out, &t_span);
         for (;;) {
             double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total) : INFINITY;
