@@ -1,11 +1,11 @@
 # gdsmc 0.2.0 verify: scene verify/scenes/grw-ex7.ini, seed 20030331, n = 10000000, N = 10 ensembles, 21 outputs on [0, 0.25]
-# paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex7 (fitted b = 1.704): gnuplot reports/paper/grw-ex7-exponent.gp
+# paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex7 (fitted b = 1.709): gnuplot reports/paper/grw-ex7-exponent.gp
 set terminal pngcairo size 1000,390 font ',10'
 set termoption noenhanced
 set output 'reports/paper/grw-ex7-exponent.png'
 set datafile separator ','
 set datafile missing ''
-set multiplot layout 1,1 title 'paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex7 (fitted b = 1.704)'
+set multiplot layout 1,1 title 'paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against x_k = ln(r_k - r_1), grw-ex7 (fitted b = 1.709)'
 set key outside right top
 set grid
 set xlabel 'x_k'
