@@ -233,6 +233,37 @@ static void test_thread_count_independence(void **state)
     sim_ensemble_result_free(&b);
 }
 
+/* Elastic hard spheres (C = 1/(4 pi), gamma = 1) from a standard
+ * Maxwellian, heated with strength beta (0: no heating). */
+static sim_scene elastic_hard_sphere_scene(size_t n, size_t N, double t_end, size_t outputs,
+                                           double beta)
+{
+    sim_scene s = heated_maxwell_scene(n, N);
+    s.t_end = t_end;
+    s.outputs = outputs;
+    s.collisions.kernel = SIM_KERNEL_HARD_SPHERES;
+    s.collisions.exponent = 1.0;
+    s.collisions.rate = 1.0;
+    s.collisions.restitution = 1.0;
+    s.heating.present = beta > 0.0;
+    s.heating.strength = beta;
+    return s;
+}
+
+/* The collision count of N runs of n particles against its expectation: the
+ * standard deviation is Poisson's and that of the runs' temperatures (E|g| ~
+ * sqrt(T), Var T / T^2 = 2 / (3 n) per run, so the relative variance of the
+ * expectation is 1 / (6 n N)); 5% fewer collisions must fail the same
+ * z-test.  Returns z. */
+static double assert_collision_count(double count, double expected, size_t n, size_t N)
+{
+    const double sigma = sqrt(expected + expected * expected / (6.0 * (double)(n * N)));
+    const double z = (count - expected) / sigma, z_wrong = (count - 0.95 * expected) / sigma;
+    assert_true(fabs(z) < ZMAX);
+    assert_true(fabs(z_wrong) > ZMAX);
+    return z;
+}
+
 /* Elastic hard spheres from a standard Maxwellian keep the product
  * Maxwellian (it is invariant), so the expected number of binary collisions
  * is 2 pi gamma C (n - 1) E|g| t per ensemble, E|g| = 4/sqrt(pi) (SPEC §3,
@@ -242,10 +273,7 @@ static void test_thread_count_independence(void **state)
  *     candidate per call with its waiting time; T moves by 1e-11),
  *  2: with a hard-sphere background of vanishing mass (m_B = 1e-9: the
  *     grains keep their velocities to 1e-8; candidates of two processes).
- * The standard deviation of the count is Poisson's and that of the runs'
- * temperatures: E|g| ~ sqrt(T), Var T / T^2 = 2 / (3 n) per run, so the
- * relative variance of the expectation is 1 / (6 n N).  The wrong answer, 5%
- * fewer collisions, must fail the same z-test. */
+ * The count is z-tested (assert_collision_count). */
 static void test_hard_sphere_rate_paths(void **state)
 {
     (void)state;
@@ -255,15 +283,7 @@ static void test_hard_sphere_rate_paths(void **state)
                             * t_end * (double)N;
     const char *names[] = {"collisions only", "with a lazy flow", "with a background"};
     for (int shape = 0; shape < 3; shape++) {
-        sim_scene s = heated_maxwell_scene(n, N);
-        s.t_end = t_end;
-        s.outputs = 5;
-        s.collisions.kernel = SIM_KERNEL_HARD_SPHERES;
-        s.collisions.exponent = 1.0;
-        s.collisions.rate = 1.0;
-        s.collisions.restitution = 1.0;
-        s.heating.present = shape == 1;
-        s.heating.strength = 1e-12;
+        sim_scene s = elastic_hard_sphere_scene(n, N, t_end, 5, shape == 1 ? 1e-12 : 0.0);
         if (shape == 2) {
             s.background.present = 1;
             s.background.kernel = SIM_KERNEL_HARD_SPHERES;
@@ -273,14 +293,11 @@ static void test_hard_sphere_rate_paths(void **state)
         sim_ensemble_result r;
         run(&s, &r);
         const double count = (double)r.counts.collisions;
-        const double sigma = sqrt(expected + expected * expected / (6.0 * (double)(n * N)));
-        const double z = (count - expected) / sigma, z_wrong = (count - 0.95 * expected) / sigma;
+        const double z = assert_collision_count(count, expected, n, N);
         print_message("hard spheres %s: %.0f collisions, expected %.0f (z = %.2f), %llu "
                       "candidates, %llu background\n", names[shape], count, expected, z,
                       (unsigned long long)r.counts.candidates,
                       (unsigned long long)r.counts.background);
-        assert_true(fabs(z) < ZMAX);
-        assert_true(fabs(z_wrong) > ZMAX);
         assert_int_equal(r.counts.violations, 0);
         if (shape == 2)
             assert_true(r.counts.background > 10000);
@@ -305,26 +322,16 @@ static void test_hard_sphere_heated_rate(void **state)
     (void)state;
     const size_t n = 300, N = 100;
     const double t_end = 4.0;
-    sim_scene s = heated_maxwell_scene(n, N);
-    s.t_end = t_end;
-    s.outputs = 3;
-    s.collisions.kernel = SIM_KERNEL_HARD_SPHERES;
-    s.collisions.exponent = 1.0;
-    s.collisions.rate = 1.0;
-    s.collisions.restitution = 1.0;
-    s.heating.strength = 1.0;
+    sim_scene s = elastic_hard_sphere_scene(n, N, t_end, 3, 1.0);
     const double expected = 2.0 * M_PI / (4.0 * M_PI) * (double)(n - 1) * 4.0 / sqrt(M_PI)
                             * (pow(1.0 + 2.0 * t_end, 1.5) - 1.0) / 3.0 * (double)N;
     sim_ensemble_result r;
     run(&s, &r);
     const double count = (double)r.counts.collisions;
-    const double sigma = sqrt(expected + expected * expected / (6.0 * (double)(n * N)));
-    const double z = (count - expected) / sigma, z_wrong = (count - 0.95 * expected) / sigma;
+    const double z = assert_collision_count(count, expected, n, N);
     const double per_collision = (double)r.counts.candidates / count;
     print_message("heated hard spheres: %.0f collisions, expected %.0f (z = %.2f), %.2f "
                   "candidates per collision\n", count, expected, z, per_collision);
-    assert_true(fabs(z) < ZMAX);
-    assert_true(fabs(z_wrong) > ZMAX);
     assert_int_equal(r.counts.violations, 0);
     assert_true(per_collision < 6.0);
     sim_ensemble_result_free(&r);
