@@ -322,12 +322,11 @@ static const char tails_columns[] =
     "b_local_se:%.4f b_anchored:%.4f b_anchored_se:%.4f violations:%.0f " VFY_COST_COLUMNS;
 
 /* The local slope: the fit over a window of width VFY_TOL_TAILS_WINDOW in c
- * centred at each shell whose window ends by c_last (from the core, where it
- * is near the Gaussian's 2, along the clean range), against c, beside
- * b_expected and the Gaussian's 2
- * ({case}-local-slope.png); the case values b_near (the first window),
- * b_local (the last) and the row's range for the notes.  Returns 0 or -1
- * (I/O or memory). */
+ * centred at each shell's upper edge, for every window that ends by c_last
+ * (from the core, where it is near the Gaussian's 2, along the clean range),
+ * against c, beside b_expected and 2 ({case}-local-slope.png); the case
+ * values b_near (the clean range's first window), b_local (its last) and the
+ * row's range, for the notes.  Returns 0 or -1 (I/O or memory). */
 static int tails_local_slope(vfy_case_run *run, const vfy_row *row, const double *edge,
                              const double *f, const double *fci, size_t K)
 {
