@@ -202,6 +202,7 @@ static void add_event(sim_engine *e, sim_effect effect)
 }
 
 static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double h, double t);
+static double lazy_candidates(const sim_engine *e);
 static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
                            double t, double horizon);
 
@@ -304,15 +305,14 @@ static void interval_lazy(const sim_engine *e, sim_workspace *ws)
     const double theta = e->scene.splitting == SIM_SPLIT_STRANG ? 0.5 : 0.0;
     size_t next_reset = e->lazy_rebound ? 0 : ws->steps;
     for (size_t k = 0; k < ws->steps; k++) {
-        if (k == next_reset) {   /* lazy_rebound: reset for about LAZY_REBOUND_SWEEPS n
-                                    candidates, the stages of `span` steps (run_jump_timed) */
+        if (k == next_reset) {   /* lazy_rebound: a reset for the stages of `span`
+                                    steps, about lazy_candidates(e) candidates */
             double total = 0.0;
             for (size_t q = 0; q < e->nevents; q++)
                 total += ws->rates[q];
-            const double steps = floor(LAZY_REBOUND_SWEEPS * (double)e->scene.particles.n
-                                       / (total * ws->h));
-            const size_t span = steps >= 1.0 && steps < (double)(ws->steps - k)
-                                    ? (size_t)steps : steps < 1.0 ? 1 : ws->steps - k;
+            const double steps = floor(lazy_candidates(e) / (total * ws->h));
+            const size_t left = ws->steps - k;
+            const size_t span = !(steps >= 1.0) ? 1 : steps < (double)left ? (size_t)steps : left;
             reset_events(e, ws, ws->rates, ws->t0 + (double)k * ws->h, (double)span * ws->h);
             next_reset = k + span;
         }
@@ -825,15 +825,20 @@ static void observe_output(const sim_engine *e, sim_workspace *ws, size_t m, dou
         ws->output_seconds += clock_seconds() - start;
 }
 
-/* A lazy_rebound run's reset at time t (the output time at t_out, or
- * earlier): the bound and the majorants for a span of about
- * LAZY_REBOUND_SWEEPS n candidates at the current total rate, at most to
- * t_out; returns the new total and sets *t_span to the span's end. */
+/* The candidates between two resets of a lazy_rebound run; and its reset at
+ * time t (the output time at t_out, or earlier): the bound and the
+ * majorants for a span of that many candidates at the current total rate, at
+ * most to t_out; returns the new total and sets *t_span to the span's end. */
+static double lazy_candidates(const sim_engine *e)
+{
+    return LAZY_REBOUND_SWEEPS * (double)e->scene.particles.n;
+}
+
 static double lazy_reset(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
                          double total, double t, double t_out, double *t_span)
 {
     const double left = t_out - t;
-    double span = LAZY_REBOUND_SWEEPS * (double)e->scene.particles.n / total;
+    double span = lazy_candidates(e) / total;
     if (!(span < left))
         span = left;
     *t_span = span < left ? t + span : t_out;
