@@ -1,5 +1,6 @@
 /* Checkpoints (verify/checkpoint.h): a saved result comes back bit for bit;
- * a checkpoint of another scene, or a damaged one, is never used.  And the
+ * a checkpoint of another scene, or a damaged one, is never used; a
+ * simulation one verify run needs twice runs once (verify/cases.h).  And the
  * solver protocol's result file (verify/result.h), the other way a result
  * is written down. */
 #include "test_util.h"
@@ -8,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "cases.h"
 #include "checkpoint.h"
 #include "observe.h"
 #include "result.h"
@@ -191,6 +193,48 @@ static void test_damaged_not_used(void **state)
     sim_ensemble_result_free(&a);
 }
 
+/* Within one verify run (o.finished), a simulation an earlier row finished
+ * is taken from its checkpoint: a checkpoint doctored after the first run
+ * (one collision more) is what the second call returns.  Without o.finished,
+ * or for another seed, the engine runs. */
+static void test_repeat_taken_from_checkpoint(void **state)
+{
+    (void)state;
+    sim_scene s = small_scene();
+    s.t_end = 1.0;
+    s.collisions.present = 1;
+    vfy_finished finished = {0};
+    vfy_options o = {.size = VFY_QUICK, .checkpoint_dir = dir, .finished = &finished};
+    sim_ensemble_result first, doctored, repeat, rerun, other;
+    char msg[256];
+    assert_int_equal(vfy_simulate(&s, &o, "first", &first, msg, sizeof msg), SIM_OK);
+    assert_true(first.counts.collisions > 0);
+    assert_int_equal(finished.count, 1);
+
+    assert_int_equal(vfy_checkpoint_load(dir, &s, &doctored), 1);
+    doctored.counts.collisions++;
+    assert_int_equal(vfy_checkpoint_save(dir, "doctored", &s, &doctored, msg, sizeof msg),
+                     SIM_OK);
+    assert_int_equal(vfy_simulate(&s, &o, "repeat", &repeat, msg, sizeof msg), SIM_OK);
+    assert_int_equal(repeat.counts.collisions, first.counts.collisions + 1);
+    assert_memory_equal(repeat.mean, first.mean,
+                        first.outputs * first.observables * sizeof *first.mean);
+
+    o.finished = NULL;   /* as in a program that does not keep the set */
+    assert_int_equal(vfy_simulate(&s, &o, "rerun", &rerun, msg, sizeof msg), SIM_OK);
+    assert_int_equal(rerun.counts.collisions, first.counts.collisions);
+
+    o.finished = &finished;
+    s.seed++;
+    assert_int_equal(vfy_simulate(&s, &o, "other seed", &other, msg, sizeof msg), SIM_OK);
+    assert_int_equal(finished.count, 2);
+    assert_int_not_equal(other.counts.collisions, first.counts.collisions + 1);
+    sim_ensemble_result *all[] = {&first, &doctored, &repeat, &rerun, &other};
+    for (size_t k = 0; k < sizeof all / sizeof *all; k++)
+        sim_ensemble_result_free(all[k]);
+    vfy_finished_free(&finished);
+}
+
 static void test_unwritable_dir_is_an_error(void **state)
 {
     (void)state;
@@ -213,6 +257,7 @@ int main(void)
         cmocka_unit_test(test_other_scene_not_used),
         cmocka_unit_test(test_damaged_not_used),
         cmocka_unit_test(test_unwritable_dir_is_an_error),
+        cmocka_unit_test(test_repeat_taken_from_checkpoint),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -1,6 +1,7 @@
 #include "cases.h"
 
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -295,6 +296,36 @@ static void print_progress(size_t done, size_t total, void *ctx)
     fflush(p->out);
 }
 
+void vfy_finished_free(vfy_finished *f)
+{
+    free(f->keys);
+    *f = (vfy_finished){0};
+}
+
+static int finished_has(const vfy_finished *f, uint64_t key)
+{
+    for (size_t k = 0; f != NULL && k < f->count; k++)
+        if (f->keys[k] == key)
+            return 1;
+    return 0;
+}
+
+/* Remember key; without memory it is forgotten, which only costs a rerun. */
+static void finished_add(vfy_finished *f, uint64_t key)
+{
+    if (f == NULL || finished_has(f, key))
+        return;
+    if (f->count == f->cap) {
+        const size_t cap = f->cap ? 2 * f->cap : 64;
+        uint64_t *keys = realloc(f->keys, cap * sizeof *keys);
+        if (keys == NULL)
+            return;
+        f->keys = keys;
+        f->cap = cap;
+    }
+    f->keys[f->count++] = key;
+}
+
 /* A finished simulation: its checkpoint, and the tests' countdown. */
 static sim_status finish_simulation(const sim_scene *scene, const vfy_options *o,
                                     const char *label, const sim_ensemble_result *res,
@@ -305,6 +336,8 @@ static sim_status finish_simulation(const sim_scene *scene, const vfy_options *o
         && (status = vfy_checkpoint_save(o->checkpoint_dir, label, scene, res, msg, msglen))
                != SIM_OK)
         return status;
+    if (o->checkpoint_dir)
+        finished_add(o->finished, vfy_checkpoint_key(scene));
     if (o->stop_countdown && *o->stop_countdown > 0 && --*o->stop_countdown == 0)
         sim_ensemble_request_stop();
     return SIM_OK;
@@ -360,9 +393,12 @@ static sim_status simulate_external(const sim_scene *scene, const vfy_options *o
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen)
 {
-    if (o->checkpoint_dir && o->resume && vfy_checkpoint_load(o->checkpoint_dir, scene, res)) {
+    const int repeat = finished_has(o->finished, vfy_checkpoint_key(scene));
+    if (o->checkpoint_dir && (o->resume || repeat)
+        && vfy_checkpoint_load(o->checkpoint_dir, scene, res)) {
         if (o->progress)
-            fprintf(o->progress, "   %s: taken from its checkpoint (--resume)\n", label);
+            fprintf(o->progress, "   %s: taken from its checkpoint (%s)\n", label,
+                    repeat ? "the same simulation ran earlier in this run" : "--resume");
         return SIM_OK;
     }
     memset(res, 0, sizeof *res);

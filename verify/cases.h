@@ -10,6 +10,7 @@
 #define GDSMC_VFY_CASES_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "checks.h"
@@ -18,6 +19,18 @@
 #include "scene.h"
 
 typedef enum vfy_size { VFY_QUICK, VFY_PAPER } vfy_size;
+
+/* The simulations one `gdsmc verify` has finished, by checkpoint key
+ * (checkpoint.h): a row that needs a simulation an earlier row or case of the
+ * same invocation ran (the same scene, seed and sizes, so the same numbers
+ * bit for bit) takes it from that checkpoint instead of running it again.
+ * Free the keys with vfy_finished_free. */
+typedef struct vfy_finished {
+    uint64_t *keys;
+    size_t count, cap;
+} vfy_finished;
+
+void vfy_finished_free(vfy_finished *f);
 
 typedef struct vfy_options {
     vfy_size size;
@@ -32,6 +45,8 @@ typedef struct vfy_options {
     const char *checkpoint_dir;        /* save every finished simulation there
                                           (checkpoint.h), or NULL */
     int resume;                        /* reuse the matching checkpoints */
+    vfy_finished *finished;            /* this invocation's finished simulations (with
+                                          checkpoint_dir), or NULL: each one runs */
     struct vfy_solver *solver;         /* an external solver (solver.h: --solver), or
                                           NULL for the built-in engine */
     size_t *stop_countdown;            /* if not NULL and > 0: counts finished
@@ -86,8 +101,8 @@ sim_status vfy_require_references(const sim_scene *scene, const char *const *nam
 
 /* Shared by the cases: build the engine for scene and run its ensembles,
  * with progress lines labelled `label`; with o->checkpoint_dir, save the
- * result there at once, and with o->resume take a matching saved result
- * instead of simulating.  msg gets "FILE:LINE: key: ..." on failure;
+ * result there at once, and with o->resume, or when o->finished holds the
+ * scene's key, take a matching saved result instead of simulating.  msg gets "FILE:LINE: key: ..." on failure;
  * SIM_ECANCELED when a stop was requested. */
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen);
