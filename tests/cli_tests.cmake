@@ -21,6 +21,16 @@ gdsmc_add_cli_test(cli_timestep_small 0
                    --set scene.splitting=strang --set particles.n=16
                    --set particles.ensembles=10 --set scene.t_end=0.5 --set scene.outputs=6
                    --quiet)
+# --case takes a list; an unknown name in it exits 2, naming it
+gdsmc_add_cli_test(cli_verify_case_list_unknown 2 "unknown case 'nope'"
+                   verify --case grw-ex3,nope)
+# A simulation two cases of one run need runs once: vro-grw-ex3's conditional
+# rows are grw-ex3's (verdicts on stdout, then progress on stderr)
+gdsmc_add_cli_test(cli_verify_repeat_runs_once 0
+                   "\nverify: [1-9][0-9]* passed, 0 failed.*vro-grw-ex3 n=64 conditional: taken from its checkpoint \\(the same simulation ran earlier in this run\\)"
+                   verify --suite quick --case grw-ex3,vro-grw-ex3
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/repeat-runs-once)
+set_tests_properties(cli_verify_repeat_runs_once PROPERTIES LABELS verification)
 # The CI gate itself: a wrong solver (restitution 0.45 for 0.5) exits 1 with
 # failed checks counted; the right one exits 0 with none.
 gdsmc_add_cli_test(cli_verify_gate_wrong_solver 1

@@ -134,6 +134,33 @@ const vfy_case *vfy_case_find(const char *name)
     return NULL;
 }
 
+/* Is `name` one of the comma-separated names of `list`? */
+static int in_list(const char *list, const char *name)
+{
+    const size_t len = strlen(name);
+    for (const char *at = list; at != NULL; at = strchr(at, ',')) {
+        at += *at == ',';
+        if (strncmp(at, name, len) == 0 && (at[len] == ',' || at[len] == '\0'))
+            return 1;
+    }
+    return 0;
+}
+
+int vfy_case_list_check(const char *list, char *unknown, size_t len)
+{
+    for (const char *at = list; at != NULL; at = strchr(at, ',')) {
+        at += *at == ',';
+        const size_t n = strcspn(at, ",");
+        char name[128];
+        snprintf(name, sizeof name, "%.*s", (int)n, at);
+        if (n >= sizeof name || vfy_case_find(name) == NULL) {
+            snprintf(unknown, len, "%.*s", (int)n, at);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 int vfy_suite_exists(const char *name)
 {
     if (strcmp(name, "quick") == 0 || strcmp(name, "paper") == 0)
@@ -177,7 +204,7 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
     }
     for (size_t i = 0; i < vfy_case_count(); i++) {
         const vfy_case *c = &cases[i];
-        if (case_name ? strcmp(case_name, c->name) != 0 : !in_suite(c, suite))
+        if (case_name ? !in_list(case_name, c->name) : !in_suite(c, suite))
             continue;
         if (o->progress)
             fprintf(o->progress, "== %s (%s sizes): %s\n", c->name,

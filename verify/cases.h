@@ -68,14 +68,19 @@ size_t vfy_case_count(void);
 const vfy_case *vfy_case_at(size_t i);
 const vfy_case *vfy_case_find(const char *name);
 
+/* Does every name of the comma-separated `list` name a case?  If not, 0 with
+ * the first that does not in unknown. */
+int vfy_case_list_check(const char *list, char *unknown, size_t len);
+
 /* Is `name` a suite ("quick", "paper" or a paper's suite such as "grw")? */
 int vfy_suite_exists(const char *name);
 
 /* The papers' suites in case order, comma-separated ("grw, brs"), in buf. */
 const char *vfy_paper_suites(char *buf, size_t len);
 
-/* Run every case of the suite, or only case_name (at the suite's sizes; the
- * default suite for a single case is "paper").  Stops at the first case that
+/* Run every case of the suite, or only the cases named in case_name, a
+ * comma-separated list (in suite order, at the suite's sizes; the default
+ * suite for named cases is "paper").  Stops at the first case that
  * cannot run (returns its error).  Reports go to o->out_dir. */
 sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
                    vfy_report *r, char *msg, size_t msglen);

@@ -92,8 +92,8 @@ static const char usage_reference[] =
     "           and D's Sonine estimates, the exact elastic conductivity)\n";
 
 static const char usage_verify[] =
-    "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME] [--out DIR]\n"
-    "                    [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
+    "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME[,NAME...]]\n"
+    "                    [--out DIR] [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
     "                    [--solver 'COMMAND {scene} {out}'] [--solver-timeout S]\n"
     "                    [--junit FILE.xml] [--resume] [--list]\n"
     "\n"
@@ -106,7 +106,8 @@ static const char usage_verify[] =
     "               sizes, the default), or a paper's own suite at the paper's\n"
     "               sizes: grw (paper A), brs (paper B), ..., hard (cases chosen\n"
     "               to break a careless solver) (--list shows all)\n"
-    "  --case NAME  only this case (at the suite's sizes); --list shows them\n"
+    "  --case NAME[,NAME...]  only these cases, in suite order (at the suite's\n"
+    "               sizes); --list shows them\n"
     "  --out DIR    where reports go (default: reports for the quick suite,\n"
     "               reports/paper for the papers' sizes)\n"
     "  --scenes DIR where the case scenes are (default: the source tree's\n"
@@ -726,9 +727,10 @@ static int cmd_verify(int argc, char **argv)
                  vfy_paper_suites(suites, sizeof suites));
         return bad_usage("verify", "%s", why);
     }
-    if (a.case_name && !vfy_case_find(a.case_name))
+    char unknown[128];
+    if (a.case_name && !vfy_case_list_check(a.case_name, unknown, sizeof unknown))
         return bad_usage("verify", "unknown case '%s' (gdsmc verify --list shows them)",
-                         a.case_name);
+                         unknown);
     vfy_options o = {
         .size = a.suite && strcmp(a.suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
         .out_dir = a.out ? a.out : a.suite && strcmp(a.suite, "quick") == 0 ? "reports"
