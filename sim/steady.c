@@ -102,26 +102,37 @@ double sim_steady_marginal_centre(const sim_scene *scene, size_t k)
     return sim_steady_bin_centre(scene, k) - scene->steady.c_max;
 }
 
-/* Paper C Eqs. (65), (66): Phi2 and Phi4 of one pair of peculiar velocities. */
-static void phi24(const double *v1, const double *v2, double alpha, double *phi2, double *phi4)
-{
-    double g[3], G[3];
-    for (int k = 0; k < 3; k++) {
-        g[k] = v1[k] - v2[k];
-        G[k] = 0.5 * (v1[k] + v2[k]);
-    }
-    const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
-    const double G2 = G[0] * G[0] + G[1] * G[1] + G[2] * G[2];
-    const double gG = g[0] * G[0] + g[1] * G[1] + g[2] * G[2];
-    const double gn = sqrt(g2), a2 = alpha * alpha;
-    *phi2 = M_PI * (1.0 - a2) / 8.0 * g2 * gn;
-    *phi4 = 0.25 * M_PI * gn
-            * (5.0 * (1.0 - a2) / 3.0 * g2 * G2 + (1.0 - a2) * (2.0 + a2) / 12.0 * g2 * g2
-               + (3.0 - alpha) * (1.0 + alpha) * (gG * gG - g2 * G2 / 3.0));
-}
-
 /* Pairs drawn ahead by the collisional-moment sampler (sim_steady_sample). */
 #define PAIR_BLOCK 32
+
+/* The peculiar velocities of a block of pairs, by component (c1 of the
+ * first particle, c2 of the second). */
+typedef struct pair_block {
+    double c1[3][PAIR_BLOCK], c2[3][PAIR_BLOCK];
+} pair_block;
+
+/* Paper C Eqs. (65), (66): Phi2 and Phi4 of every pair of the block.  A loop
+ * of a constant count over columns, which GCC -O2 vectorizes (two pairs per
+ * SSE2 instruction); each pair's operations are those of the formulas as
+ * written, so the values are those of one pair at a time. */
+static void phi24_block(const pair_block *b, double alpha, double phi2[PAIR_BLOCK],
+                        double phi4[PAIR_BLOCK])
+{
+    const double a2 = alpha * alpha;
+    for (size_t k = 0; k < PAIR_BLOCK; k++) {
+        const double gx = b->c1[0][k] - b->c2[0][k], Gx = 0.5 * (b->c1[0][k] + b->c2[0][k]);
+        const double gy = b->c1[1][k] - b->c2[1][k], Gy = 0.5 * (b->c1[1][k] + b->c2[1][k]);
+        const double gz = b->c1[2][k] - b->c2[2][k], Gz = 0.5 * (b->c1[2][k] + b->c2[2][k]);
+        const double g2 = gx * gx + gy * gy + gz * gz;
+        const double G2 = Gx * Gx + Gy * Gy + Gz * Gz;
+        const double gG = gx * Gx + gy * Gy + gz * Gz;
+        const double gn = sqrt(g2);
+        phi2[k] = M_PI * (1.0 - a2) / 8.0 * g2 * gn;
+        phi4[k] = 0.25 * M_PI * gn
+                  * (5.0 * (1.0 - a2) / 3.0 * g2 * G2 + (1.0 - a2) * (2.0 + a2) / 12.0 * g2 * g2
+                     + (3.0 - alpha) * (1.0 + alpha) * (gG * gG - g2 * G2 / 3.0));
+    }
+}
 
 /* Reduced speed moments <c>, <c^3>, <c^4>, <c^6> (sums over the particles)
  * and, when `histogram` (a constant in each caller), the shell counts. */
@@ -290,11 +301,15 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
         const double alpha = scene->collisions.restitution;   /* 1 unless set */
         double s_2 = 0.0, s_4 = 0.0;
         /* The pairs of a block are drawn first and their velocities
-         * prefetched, then evaluated, then summed in the same order: the
-         * same draws and sums, bit for bit, as one pair at a time, with the
-         * loads and square roots of a block overlapping (a paper C run at
-         * n = 2e4, 2e5 pairs per sample: 2.05 s against 2.19 s). */
+         * prefetched, then evaluated together, then summed in the same
+         * order: the same draws and sums, bit for bit, as one pair at a
+         * time, with the loads and the arithmetic of a block overlapping
+         * (ms-gaussian at n = 2e4, best of 7 on one core: 1.66 s, against
+         * 1.94 s a pair at a time with its loads prefetched and 2.19 s
+         * without). */
         size_t first[PAIR_BLOCK], second[PAIR_BLOCK];
+        pair_block block = {0};   /* a last, partial block leaves zeros */
+        double f2[PAIR_BLOCK], f4[PAIR_BLOCK];
         for (size_t q0 = 0; q0 < pairs; q0 += PAIR_BLOCK) {
             const size_t count = pairs - q0 < PAIR_BLOCK ? pairs - q0 : PAIR_BLOCK;
             for (size_t b = 0; b < count; b++) {
@@ -306,13 +321,12 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
                 sim_pick_prefetch(p, (uint32_t)i, 0);
                 sim_pick_prefetch(p, (uint32_t)j, 0);
             }
-            double f2[PAIR_BLOCK], f4[PAIR_BLOCK];
-            for (size_t b = 0; b < count; b++) {
-                const double *vi = p->v[first[b]], *vj = p->v[second[b]];
-                const double ci[3] = {vi[0] - V[0], vi[1] - V[1], vi[2] - V[2]};
-                const double cj[3] = {vj[0] - V[0], vj[1] - V[1], vj[2] - V[2]};
-                phi24(ci, cj, alpha, &f2[b], &f4[b]);
-            }
+            for (size_t b = 0; b < count; b++)
+                for (int d = 0; d < 3; d++) {
+                    block.c1[d][b] = p->v[first[b]][d] - V[d];
+                    block.c2[d][b] = p->v[second[b]][d] - V[d];
+                }
+            phi24_block(&block, alpha, f2, f4);
             for (size_t b = 0; b < count; b++) {
                 s_2 += f2[b];
                 s_4 += f4[b];
