@@ -147,9 +147,9 @@ static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, 
 
 /* The next particle of the index stream, brought to time t by a lazy flow;
  * j != i when called with the first particle i (else i = UINT32_MAX). */
-static inline uint32_t draw_particle(collisions_state *s, sim_run *run, uint32_t other,
-                                     double t, uint32_t *spare, const int lazy_flow,
-                                     const int sums)
+static inline __attribute__((always_inline)) uint32_t
+draw_particle(collisions_state *s, sim_run *run, uint32_t other, double t, uint32_t *spare,
+              const int lazy_flow, const int sums)
 {
     uint32_t i;
     do
@@ -163,8 +163,8 @@ static inline uint32_t draw_particle(collisions_state *s, sim_run *run, uint32_t
 }
 
 /* Particles i and j back into the running sums (with sums, a constant). */
-static inline void sums_restore(sim_run *run, uint32_t i, uint32_t j, const int lazy_flow,
-                                const int sums)
+static inline __attribute__((always_inline)) void
+sums_restore(sim_run *run, uint32_t i, uint32_t j, const int lazy_flow, const int sums)
 {
     if (sums) {
         sim_sums_add(&run->sums, run->p.v[i], lazy_flow ? run->p.stamp[i] : 0.0, 1.0);
@@ -174,8 +174,8 @@ static inline void sums_restore(sim_run *run, uint32_t i, uint32_t j, const int 
 
 /* Velocities vi and vj (no lazy flow: stamps 0) out of the running sums
  * before a collision changes them (with sums, a constant). */
-static inline void sums_remove(sim_run *run, const double vi[3], const double vj[3],
-                               const int sums)
+static inline __attribute__((always_inline)) void
+sums_remove(sim_run *run, const double vi[3], const double vj[3], const int sums)
 {
     if (sums) {
         sim_sums_add(&run->sums, vi, 0.0, -1.0);
@@ -216,8 +216,9 @@ static inline double bounded_distance(const collisions_params *p, collisions_sta
 
 /* One candidate hard-sphere collision at time t (paper A Algorithm, steps
  * 2.3-2.10, with the two-stage acceptance of the header comment). */
-static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate,
-                                          double t, const int lazy_flow, const int sums)
+static inline __attribute__((always_inline)) double
+fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate, double t,
+                     const int lazy_flow, const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -258,9 +259,10 @@ static inline double fire_hard_spheres_at(const sim_effect *e, sim_run *run, voi
  * (always accepted) or VHS (accepted with (|g| / U_max)^lambda).  kernel,
  * lazy_flow and bounded are constants in each instance below (bounded is
  * implied by kernel == KERNEL_VHS). */
-static inline double fire_uniform_pair(const sim_effect *e, sim_run *run, void *vstate,
-                                       double t, const enum kernel_case kernel,
-                                       const int lazy_flow, const int bounded, const int sums)
+static inline __attribute__((always_inline)) double
+fire_uniform_pair(const sim_effect *e, sim_run *run, void *vstate, double t,
+                  const enum kernel_case kernel, const int lazy_flow, const int bounded,
+                  const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
@@ -525,8 +527,9 @@ static sim_event_fire_many_fn collisions_select_fire_many(const sim_effect *e)
  * floor(credit / dtc) candidates at dtc = stage_time / U_max each; when a
  * collision grows the bound, the stage time left is spent at the new U_max.
  * contact and sums (keep run->sums current) are constants in each instance. */
-static inline void stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h,
-                                      const int contact, const int sums)
+static inline __attribute__((always_inline)) void
+stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h, const int contact,
+                   const int sums)
 {
     const collisions_params *p = e->params;
     collisions_state *s = vstate;
