@@ -104,9 +104,9 @@ static double background_reset(const sim_effect *e, sim_run *run, void *vstate, 
 
 /* One candidate background collision at time t; hard_spheres, lazy_flow and
  * bounded are compile-time constants in each instance below. */
-static inline double fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t,
-                                    const int hard_spheres, const int lazy_flow,
-                                    const int bounded, const int sums)
+static inline __attribute__((always_inline)) double
+fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t, const int hard_spheres,
+               const int lazy_flow, const int bounded, const int sums)
 {
     const background_params *p = e->params;
     background_state *s = vstate;
