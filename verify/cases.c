@@ -134,30 +134,34 @@ const vfy_case *vfy_case_find(const char *name)
     return NULL;
 }
 
+/* The next name of a comma-separated list at *at into name (len bytes),
+ * *at moved past it and its comma (NULL after the last); its length. */
+static size_t next_name(const char **at, char *name, size_t len)
+{
+    const size_t n = strcspn(*at, ",");
+    snprintf(name, len, "%.*s", (int)n, *at);
+    *at = (*at)[n] == ',' ? *at + n + 1 : NULL;
+    return n;
+}
+
 /* Is `name` one of the comma-separated names of `list`? */
 static int in_list(const char *list, const char *name)
 {
-    const size_t len = strlen(name);
-    for (const char *at = list; at != NULL; at = strchr(at, ',')) {
-        at += *at == ',';
-        if (strncmp(at, name, len) == 0 && (at[len] == ',' || at[len] == '\0'))
+    char item[128];
+    for (const char *at = list; at != NULL;)
+        if (next_name(&at, item, sizeof item) < sizeof item && strcmp(item, name) == 0)
             return 1;
-    }
     return 0;
 }
 
 int vfy_case_list_check(const char *list, char *unknown, size_t len)
 {
-    for (const char *at = list; at != NULL; at = strchr(at, ',')) {
-        at += *at == ',';
-        const size_t n = strcspn(at, ",");
-        char name[128];
-        snprintf(name, sizeof name, "%.*s", (int)n, at);
-        if (n >= sizeof name || vfy_case_find(name) == NULL) {
-            snprintf(unknown, len, "%.*s", (int)n, at);
+    char item[128];
+    for (const char *at = list; at != NULL;)
+        if (next_name(&at, item, sizeof item) >= sizeof item || vfy_case_find(item) == NULL) {
+            snprintf(unknown, len, "%s", item);
             return 0;
         }
-    }
     return 1;
 }
 
