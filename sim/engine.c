@@ -66,6 +66,7 @@
  */
 #include "engine.h"
 
+#include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -481,6 +482,18 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
             e->pending_spread = e->lazy_flow ? e->flows[0].type->spread(&e->flows[0]) : 0.0;
         e->conditional = status == SIM_OK;
     }
+    if (status == SIM_OK && scene->observe_only != 0) {
+        const uint32_t only = scene->observe_only;
+        if (only & ~SIM_OBS_ALL_BASE)
+            status = sim_error_set(err, SIM_EINVAL, "scene.observe_only",
+                                   "0x%" PRIx32 " names observables beyond the base set", only);
+        else if (scene->shear.present)
+            status = sim_error_set(err, SIM_EUNSUPPORTED, "scene.observe_only",
+                                   "[shear] computes its observables from every base one");
+        else if (scene->step_follows_temperature && !(only & SIM_OBS_BIT(SIM_OBS_T)))
+            status = sim_error_set(err, SIM_EINVAL, "scene.observe_only",
+                                   "step_follows_temperature needs T");
+    }
     if (status == SIM_OK && timestep)
         status = build_timestep(e, err);
     if (status == SIM_OK && slab)
@@ -784,8 +797,9 @@ static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double 
         }
         sim_observe_sums(sums, ws->run.p.n, e->mass, sim_scene_output_time(&e->scene, m),
                          e->pending_spread, row);
+        sim_observe_drop(e->scene.observe_only, row);
     } else {
-        sim_observe(&ws->run.p, e->mass, row);
+        sim_observe_only(&ws->run.p, e->mass, e->scene.observe_only, row);
         if (e->scene.shear.present)
             sim_observe_shear(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions, m,
                               prev, ws->observer_rng, row);

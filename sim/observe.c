@@ -49,8 +49,52 @@ int sim_observable_find(const sim_scene *scene, const char *name, size_t len)
     return -1;
 }
 
+/* The observables each part of the computation serves. */
+#define OBS_CENTRED (SIM_OBS_BIT(SIM_OBS_T) | SIM_OBS_BIT(SIM_OBS_PXX) | SIM_OBS_BIT(SIM_OBS_PYY) \
+                     | SIM_OBS_BIT(SIM_OBS_PZZ) | SIM_OBS_BIT(SIM_OBS_PXY)                     \
+                     | SIM_OBS_BIT(SIM_OBS_PXZ) | SIM_OBS_BIT(SIM_OBS_PYZ) | OBS_Q | OBS_C4)
+#define OBS_Q (SIM_OBS_BIT(SIM_OBS_QX) | SIM_OBS_BIT(SIM_OBS_QY) | SIM_OBS_BIT(SIM_OBS_QZ))
+#define OBS_C4 (SIM_OBS_BIT(SIM_OBS_A2) | OBS_C6)   /* a3 = ... + 3 a2 */
+#define OBS_C6 SIM_OBS_BIT(SIM_OBS_A3)
+
+/* The centred sums about V: P (always), q, |C|^4 and |C|^6 as the constant
+ * flags ask (one instance per combination, no branch in the loop).  Central
+ * moments in a pass of their own: no cancellation against |V|^2. */
+static inline __attribute__((always_inline)) void
+centred_sums(const sim_particles *p, const double V[3], double P[6], double q[3], double *c4,
+             double *c6, const int with_q, const int with_c4, const int with_c6)
+{
+    for (size_t i = 0; i < p->n; i++) {
+        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
+        const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        P[0] += c[0] * c[0];
+        P[1] += c[1] * c[1];
+        P[2] += c[2] * c[2];
+        P[3] += c[0] * c[1];
+        P[4] += c[0] * c[2];
+        P[5] += c[1] * c[2];
+        if (with_q) {
+            q[0] += c2 * c[0];
+            q[1] += c2 * c[1];
+            q[2] += c2 * c[2];
+        }
+        if (with_c4)
+            *c4 += c2 * c2;
+        if (with_c6)
+            *c6 += c2 * c2 * c2;
+    }
+}
+
 void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE])
 {
+    sim_observe_only(p, mass, 0, out);
+}
+
+void sim_observe_only(const sim_particles *p, double mass, uint32_t only,
+                      double out[SIM_OBS_BASE])
+{
+    if (only == 0)
+        only = SIM_OBS_ALL_BASE;
     const size_t n = p->n;
     const double w = 1.0 / (double)n;
     double V[3] = {0, 0, 0}, v2 = 0.0;
@@ -63,38 +107,43 @@ void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE])
     }
     for (int k = 0; k < 3; k++)
         V[k] *= w;
-
-    /* Central moments in a second pass (no cancellation against |V|^2). */
-    double P[6] = {0}, q[3] = {0}, c4 = 0.0, c6 = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        const double c[3] = {p->v[i][0] - V[0], p->v[i][1] - V[1], p->v[i][2] - V[2]};
-        const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-        P[0] += c[0] * c[0];
-        P[1] += c[1] * c[1];
-        P[2] += c[2] * c[2];
-        P[3] += c[0] * c[1];
-        P[4] += c[0] * c[2];
-        P[5] += c[1] * c[2];
-        q[0] += c2 * c[0];
-        q[1] += c2 * c[1];
-        q[2] += c2 * c[2];
-        c4 += c2 * c2;
-        c6 += c2 * c2 * c2;
-    }
-    const double T = mass * w * (P[0] + P[1] + P[2]) / 3.0;
-    const double theta = T / mass;   /* T/m */
-    out[SIM_OBS_T] = T;
     out[SIM_OBS_T_RAW] = mass * w * v2 / 3.0;
     out[SIM_OBS_UX] = V[0];
     out[SIM_OBS_UY] = V[1];
     out[SIM_OBS_UZ] = V[2];
-    for (int k = 0; k < 6; k++)
-        out[SIM_OBS_PXX + k] = mass * w * P[k];
-    for (int k = 0; k < 3; k++)
-        out[SIM_OBS_QX + k] = 0.5 * mass * w * q[k];
-    const double a2 = w * c4 / (15.0 * theta * theta) - 1.0;
-    out[SIM_OBS_A2] = a2;
-    out[SIM_OBS_A3] = -w * c6 / (105.0 * theta * theta * theta) + 1.0 + 3.0 * a2;
+
+    if (only & OBS_CENTRED) {
+        double P[6] = {0}, q[3] = {0}, c4 = 0.0, c6 = 0.0;
+        const int with_q = (only & OBS_Q) != 0, with_c4 = (only & OBS_C4) != 0;
+        switch (4 * with_q + 2 * with_c4 + ((only & OBS_C6) != 0)) {
+        case 0: centred_sums(p, V, P, q, &c4, &c6, 0, 0, 0); break;
+        case 2: centred_sums(p, V, P, q, &c4, &c6, 0, 1, 0); break;
+        case 3: centred_sums(p, V, P, q, &c4, &c6, 0, 1, 1); break;
+        case 4: centred_sums(p, V, P, q, &c4, &c6, 1, 0, 0); break;
+        case 6: centred_sums(p, V, P, q, &c4, &c6, 1, 1, 0); break;
+        default: centred_sums(p, V, P, q, &c4, &c6, 1, 1, 1); break;
+        }
+        const double T = mass * w * (P[0] + P[1] + P[2]) / 3.0;
+        const double theta = T / mass;   /* T/m */
+        out[SIM_OBS_T] = T;
+        for (int k = 0; k < 6; k++)
+            out[SIM_OBS_PXX + k] = mass * w * P[k];
+        for (int k = 0; k < 3; k++)
+            out[SIM_OBS_QX + k] = 0.5 * mass * w * q[k];
+        const double a2 = w * c4 / (15.0 * theta * theta) - 1.0;
+        out[SIM_OBS_A2] = a2;
+        out[SIM_OBS_A3] = -w * c6 / (105.0 * theta * theta * theta) + 1.0 + 3.0 * a2;
+    }
+    sim_observe_drop(only, out);
+}
+
+void sim_observe_drop(uint32_t only, double out[SIM_OBS_BASE])
+{
+    if (only == 0)
+        return;
+    for (int k = 0; k < SIM_OBS_BASE; k++)
+        if (!(only & SIM_OBS_BIT(k)))
+            out[k] = NAN;
 }
 
 void sim_sums_compute(const sim_particles *p, sim_sums *s)

@@ -64,6 +64,23 @@ int sim_observable_find(const sim_scene *scene, const char *name, size_t len);
 /* Compute all observables of p (particles of mass `mass`) into out[SIM_OBS_BASE]. */
 void sim_observe(const sim_particles *p, double mass, double out[SIM_OBS_BASE]);
 
+/* The bit of base observable k in a scene's observe_only mask, and every base
+ * observable's. */
+#define SIM_OBS_BIT(k) (UINT32_C(1) << (k))
+#define SIM_OBS_ALL_BASE (SIM_OBS_BIT(SIM_OBS_BASE) - 1u)
+_Static_assert(SIM_OBS_BASE <= 32, "a uint32_t mask holds the base observables");
+
+/* sim_observe for the observables in mask `only` (0: all of them), the others
+ * NaN: a pass over the particles is made only for what they need (the second,
+ * centred pass only for T, P, q, a2 or a3; |C|^4 only for a2 and a3, |C|^6
+ * only for a3).  Each observable computed has the same bits as sim_observe's,
+ * whatever else is asked: its sum runs over the particles in the same order. */
+void sim_observe_only(const sim_particles *p, double mass, uint32_t only,
+                      double out[SIM_OBS_BASE]);
+
+/* NaN for the base observables not in mask `only` (0: none). */
+void sim_observe_drop(uint32_t only, double out[SIM_OBS_BASE]);
+
 /* Running sums of the stored velocities and the lazy flow's stamps (issue
  * 18, O(1) observation): vv = Σ v_x^2, v_y^2, v_z^2, v_x v_y, v_x v_z, v_y v_z.
  * The event processes keep them current (effect.h, select_fire_sums) and the

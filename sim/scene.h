@@ -115,6 +115,11 @@ typedef struct sim_scene {
                                      step follows the mean free time; default false) */
     sim_observation observation; /* how output times observe a lazy flow (default
                                     sampled) */
+    uint32_t observe_only;   /* 0: every observable of the row; else only the base
+                                observables whose bits are set (bit k: sim_observable
+                                k < SIM_OBS_BASE), the others NaN (observe.h,
+                                sim_observe_only).  No scene-file key: the verify
+                                driver sets it from what a case reads (issue 18) */
     double t_end;
     size_t outputs;     /* equally spaced output times, 0 and t_end included (>= 2) */
     uint64_t seed;

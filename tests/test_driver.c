@@ -469,6 +469,44 @@ static void test_end_to_end(void **state)
     assert_non_null(strstr(table, "\n16,300,"));
 }
 
+/* `observes`: the engine computes what the case reads alone.  The row's T_raw
+ * is judged as before; T, which the description does not list, is NaN and
+ * its check fails (never a silent pass); a name that is no observable stops
+ * the case with a message naming it. */
+static const vfy_check_spec observes_checks[] = {
+    {.name = "{case} n={n} T_raw", .rule = vfy_rule_zscore, .value = "T_raw",
+     .expected = "T_raw_finite_n", .from = 1, .tol = 4.5},
+    {.name = "{case} n={n} T", .rule = vfy_rule_zscore, .value = "T",
+     .expected = "T_finite_n", .from = 1, .tol = 4.5},
+    {.name = NULL}};
+
+static void test_observes(void **state)
+{
+    (void)state;
+    static const char *const needs[] = {"T_raw_finite_n", "T_finite_n", NULL};
+    vfy_case_desc d = e2e_desc;
+    d.needs = needs;
+    d.metrics = NULL;
+    d.checks = observes_checks;
+    d.columns = "n:%.0f";
+    d.observes = "T_raw";
+    const vfy_case c = {"driver-observes", "test", "", 0, &d};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512];
+    assert_int_equal(vfy_run_described(&c, &o, &r, msg, sizeof msg), SIM_OK);
+    assert_int_equal(r.count, 4);
+    for (size_t k = 0; k < r.count; k++)
+        assert_int_equal(r.checks[k].verdict, k % 2 == 0 ? VFY_PASS : VFY_FAIL);
+    vfy_report_free(&r);
+    d.observes = "T_raw Tx";
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_run_described(&c, &o, &r, msg, sizeof msg), SIM_EINVAL);
+    assert_non_null(strstr(msg, "\"Tx\""));
+    vfy_report_free(&r);
+}
+
 /* Explicit rows with text values, two variants of each row, an adjust hook
  * and a figure with a suffix. */
 static sim_status rows_adjust(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
@@ -733,6 +771,7 @@ int main(void)
         cmocka_unit_test(test_extrapolation), cmocka_unit_test(test_student_t),
         cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
+        cmocka_unit_test(test_observes),
         cmocka_unit_test(test_reference_registry), cmocka_unit_test(test_rows_variants_adjust),
         cmocka_unit_test(test_tail_exponent),
         cmocka_unit_test(test_tail_fit_and_adapters),

@@ -597,6 +597,32 @@ static void test_unsupported(void **state)
     s.particles.second.mass = 2.0;
     assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
     assert_string_equal(err.key, "particles.mass2");
+    /* observe_only: base observables only; none with [shear] (its row is
+     * made from every base observable); T with step_follows_temperature */
+    s = heated_maxwell_scene(8, 1);
+    s.observe_only = SIM_OBS_BIT(SIM_OBS_BASE);
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EINVAL);
+    assert_string_equal(err.key, "scene.observe_only");
+    s = heated_maxwell_scene(8, 1);
+    s.observe_only = SIM_OBS_BIT(SIM_OBS_T);
+    s.heating.present = 0;
+    s.scheme = SIM_SCHEME_TIMESTEP;
+    s.dt = 0.01;
+    s.shear.present = 1;
+    s.shear.rate = 1.0;
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EUNSUPPORTED);
+    assert_string_equal(err.key, "scene.observe_only");
+    s = heated_maxwell_scene(8, 1);
+    s.heating.present = 0;
+    s.scheme = SIM_SCHEME_TIMESTEP;
+    s.dt = 0.01;
+    s.step_follows_temperature = 1;
+    s.observe_only = SIM_OBS_BIT(SIM_OBS_T_RAW);
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_EINVAL);
+    assert_string_equal(err.key, "scene.observe_only");
+    s.observe_only |= SIM_OBS_BIT(SIM_OBS_T);
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_OK);
+    sim_engine_free(e);
     sim_engine_free(NULL);
     sim_workspace_free(NULL);
 }

@@ -48,6 +48,39 @@ static void monte_carlo(double mean[SIM_OBS_BASE], double se[SIM_OBS_BASE])
 
 static double z(double mc, double se, double expected) { return fabs(mc - expected) / se; }
 
+/* sim_observe_only under every one of the 2^16 masks: each observable asked
+ * for has exactly sim_observe's bits, each other is NaN (a case that reads
+ * what it did not declare meets NaN, never a stale value). */
+static void test_observe_only_same_bits(void **state)
+{
+    (void)state;
+    enum { M = 37 };
+    double v[M][3], all[SIM_OBS_BASE], some[SIM_OBS_BASE];
+    sim_particles p = {M, v, NULL, NULL};
+    gsl_rng *rng = sim_rng_alloc();
+    assert_non_null(rng);
+    sim_rng_set_stream(rng, 20261126, 0);
+    for (int i = 0; i < M; i++) {
+        sim_rng_normal3(rng, v[i]);
+        v[i][1] += 0.7;   /* a bulk velocity, so that centring matters */
+    }
+    gsl_rng_free(rng);
+    sim_observe(&p, mass, all);
+    for (int k = 0; k < SIM_OBS_BASE; k++)
+        assert_true(isfinite(all[k]));
+    for (uint32_t only = 1; only <= SIM_OBS_ALL_BASE; only++) {
+        sim_observe_only(&p, mass, only, some);
+        for (int k = 0; k < SIM_OBS_BASE; k++) {
+            if (only & SIM_OBS_BIT(k))
+                assert_memory_equal(&some[k], &all[k], sizeof all[k]);
+            else
+                assert_true(isnan(some[k]));
+        }
+    }
+    sim_observe_only(&p, mass, 0, some);   /* 0: all */
+    assert_memory_equal(some, all, sizeof all);
+}
+
 static void test_pending_is_the_conditional_expectation(void **state)
 {
     (void)state;
@@ -120,6 +153,7 @@ static void test_without_centring_term_is_rejected(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_observe_only_same_bits),
         cmocka_unit_test(test_pending_is_the_conditional_expectation),
         cmocka_unit_test(test_without_centring_term_is_rejected),
     };

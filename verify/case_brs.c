@@ -27,6 +27,9 @@
 #include "metrics.h"
 #include "tolerances.h"
 
+/* What every brs case reads of a result: T and u (the engine computes no more). */
+#define BRS_OBSERVES "T ux uy uz"
+
 /* brs-ex1, brs-ex2, brs-ex3 (SPEC §4 Ex 1-3): Maxwell kernels, rows n = 4,
  * 16, 64, ... with N = 16 n. */
 static const char *const conv_needs[] = {"T_exact", "T_finite_n", "ux_exact", "uy_exact",
@@ -103,6 +106,7 @@ static const char conv_notes[] =
      .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
                     .values = {"4 16 64", "64 256 1024"}},                               \
      .needs = conv_needs, .needs_why = VFY_NEEDS_BRS_MAXWELL, .paper_columns = PAPER,    \
+     .observes = BRS_OBSERVES,                                                            \
      .metrics = conv_metrics, .checks = CHECKS, .columns = conv_columns,                 \
      .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T",               \
                   .refs = {"T_exact"}, .panel_per_row = 1},                                 \
@@ -271,7 +275,7 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
      .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
                     .values = {"16 64 256", "32 8 2"}},                                  \
      .label = "{case} n={n} batch", .variants = steady_batches, .adjust = batch_seed,    \
-     .needs = steady_needs,                                                              \
+     .needs = steady_needs, .observes = BRS_OBSERVES,                                    \
      .needs_why = "paper B's closures need collisions.kernel = hard-spheres and "        \
                   "background.kernel = hard-spheres",                                    \
      .values = steady_values, .metrics = steady_metrics, .checks = steady_checks,        \

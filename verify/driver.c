@@ -544,6 +544,27 @@ static size_t split_sets(const char *list, char (*storage)[160], const char **se
     return count;
 }
 
+/* The description's `observes` as the solver scene's observe_only mask: only
+ * what the case reads is computed.  A name that is no base observable is an
+ * error in the description. */
+static sim_status observe_only(const char *names, sim_scene *solver, char *msg, size_t msglen)
+{
+    uint32_t only = 0;
+    for (const char *p = names + strspn(names, " "); *p; p += strspn(p, " ")) {
+        const size_t len = strcspn(p, " ");
+        const int k = sim_observable_find(solver, p, len);
+        if (k < 0 || k >= SIM_OBS_BASE) {
+            snprintf(msg, msglen, "the case's observes names \"%.*s\", which is not one of "
+                     "the observables T .. a3", (int)len, p);
+            return SIM_EINVAL;
+        }
+        only |= SIM_OBS_BIT(k);
+        p += len;
+    }
+    solver->observe_only = only;
+    return SIM_OK;
+}
+
 /* Load row i's scenes: the sweep's settings, `extra` (a variant's, or
  * NULL), derived ones, then --set, then --solver-set. */
 static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row,
@@ -582,6 +603,8 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     }
     if (status == SIM_OK && run->d->adjust)
         status = run->d->adjust(row, &row->solver, msg, msglen);
+    if (status == SIM_OK && run->d->observes)
+        status = observe_only(run->d->observes, &row->solver, msg, msglen);
     return status;
 }
 

@@ -275,6 +275,10 @@ typedef struct vfy_case_desc {
     vfy_adjust_fn adjust;               /* a row's solver scene changed, or NULL */
     const char *const *values;          /* value references (references.h) every row
                                            takes at its scene (NULL-terminated) */
+    const char *observes;               /* the base observables the case reads, by
+                                           name ("T ux uy uz"): the engine computes
+                                           these alone, the others are NaN
+                                           (scene.observe_only); NULL: all */
     int no_simulation;                  /* rows evaluate references only */
     const vfy_paper_column *paper_columns;  /* terminated by a NULL name */
     const vfy_metric *metrics;          /* in order; terminated by a NULL name */
