@@ -193,6 +193,32 @@ static void test_damaged_not_used(void **state)
     sim_ensemble_result_free(&a);
 }
 
+/* A checkpoint another build wrote (its key made with another executable
+ * identity) is never used: another build's engine may draw other numbers. */
+static void test_other_build_not_used(void **state)
+{
+    (void)state;
+    const uint64_t build = vfy_build_identity();
+    assert_true(build != 0);   /* this test's executable is readable */
+    assert_true(vfy_build_identity() == build);
+    sim_scene s = small_scene();
+    s.seed = 11;
+    assert_true(vfy_checkpoint_key(&s) == vfy_checkpoint_key_for(&s, build));
+    assert_true(vfy_checkpoint_key_for(&s, build ^ 1) != vfy_checkpoint_key(&s));
+    sim_ensemble_result a, b;
+    fill(&a, &s);
+    char msg[256], mine[128], theirs[128];
+    assert_int_equal(vfy_checkpoint_save(dir, "test", &s, &a, msg, sizeof msg), SIM_OK);
+    snprintf(mine, sizeof mine, "%s/%016llx.ckpt", dir,
+             (unsigned long long)vfy_checkpoint_key(&s));
+    snprintf(theirs, sizeof theirs, "%s/%016llx.ckpt", dir,
+             (unsigned long long)vfy_checkpoint_key_for(&s, build ^ 1));
+    assert_int_equal(rename(mine, theirs), 0);   /* as if the other build wrote it */
+    assert_int_equal(vfy_checkpoint_load(dir, &s, &b), 0);
+    assert_null(b.mean);
+    sim_ensemble_result_free(&a);
+}
+
 /* Within one verify run (o.finished), a simulation an earlier row finished
  * is taken from its checkpoint: a checkpoint doctored after the first run
  * (one collision more) is what the second call returns.  Without o.finished,
@@ -255,6 +281,7 @@ int main(void)
         cmocka_unit_test(test_result_file),
         cmocka_unit_test(test_other_scene_not_used),
         cmocka_unit_test(test_damaged_not_used),
+        cmocka_unit_test(test_other_build_not_used),
         cmocka_unit_test(test_unwritable_dir_is_an_error),
         cmocka_unit_test(test_repeat_taken_from_checkpoint),
     };

@@ -2,6 +2,7 @@
 
 #include <errno.h>
 #include <inttypes.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,7 +21,41 @@ uint64_t vfy_hash(uint64_t h, const void *data, size_t len)
     return h;
 }
 
+/* The running executable's identity: a hash of its bytes (/proc/self/exe),
+ * so that a checkpoint another build wrote is never taken for this one's
+ * (a change to the engine may draw other numbers for the same scene and
+ * version); 0 where the executable cannot be read, the version alone then
+ * telling builds apart.  Computed once, about 2 ms for gdsmc's 2.3 MB. */
+static uint64_t build_identity;
+static pthread_once_t build_identity_once = PTHREAD_ONCE_INIT;
+
+static void build_identity_compute(void)
+{
+    FILE *f = fopen("/proc/self/exe", "rb");
+    if (f == NULL)
+        return;
+    unsigned char buf[1 << 16];
+    uint64_t h = VFY_HASH_START;
+    size_t got;
+    while ((got = fread(buf, 1, sizeof buf, f)) > 0)
+        h = vfy_hash(h, buf, got);
+    if (!ferror(f))
+        build_identity = h;
+    fclose(f);
+}
+
+uint64_t vfy_build_identity(void)
+{
+    pthread_once(&build_identity_once, build_identity_compute);
+    return build_identity;
+}
+
 uint64_t vfy_checkpoint_key(const sim_scene *s)
+{
+    return vfy_checkpoint_key_for(s, vfy_build_identity());
+}
+
+uint64_t vfy_checkpoint_key_for(const sim_scene *s, uint64_t build)
 {
     /* The scene's bytes without what does not change the numbers.  Scenes
      * start zeroed (sim_scene_defaults), so their padding hashes alike; a
@@ -33,6 +68,7 @@ uint64_t vfy_checkpoint_key(const sim_scene *s)
     memset(numbers.keys, 0, sizeof numbers.keys);
     numbers.nkeys = 0;
     uint64_t h = vfy_hash(VFY_HASH_START, GDSMC_VERSION, sizeof GDSMC_VERSION);
+    h = vfy_hash(h, &build, sizeof build);
     return vfy_hash(h, &numbers, sizeof numbers);
 }
 

@@ -3,9 +3,10 @@
  *
  * Every simulation a verify case finishes is saved at once in
  * DIR/<key>.ckpt (written to a temporary file, then renamed), where key is a
- * 64-bit FNV-1a hash of the gdsmc version and every field of the simulated
- * scene that changes its numbers (seed, n, N, outputs, physics; not the file
- * name, title or key provenance).  `gdsmc verify --resume` loads a matching
+ * 64-bit FNV-1a hash of the gdsmc version, the executable's bytes (another
+ * build may draw other numbers for the same scene) and every field of the
+ * simulated scene that changes its numbers (seed, n, N, outputs, physics; not
+ * the file name, title or key provenance).  `gdsmc verify --resume` loads a matching
  * checkpoint instead of simulating again: the statistics, counters and the
  * recorded CPU and wall times come back exactly (doubles are stored as C99
  * hexadecimal floats), so the tables written from them are byte-identical to
@@ -22,8 +23,14 @@
 #include "error.h"
 #include "scene.h"
 
-/* The key of scene s (see above). */
+/* The key of scene s (see above), for this executable. */
 uint64_t vfy_checkpoint_key(const sim_scene *s);
+
+/* The key of scene s for the executable whose identity is `build`. */
+uint64_t vfy_checkpoint_key_for(const sim_scene *s, uint64_t build);
+
+/* This executable's identity: a hash of its bytes, 0 if they cannot be read. */
+uint64_t vfy_build_identity(void);
 
 /* FNV-1a: h updated with len bytes of data; start from VFY_HASH_START. */
 #define VFY_HASH_START UINT64_C(0xcbf29ce484222325)
