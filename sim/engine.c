@@ -314,7 +314,10 @@ static void interval_lazy(const sim_engine *e, sim_workspace *ws)
             const double steps = floor(lazy_candidates(e) / (total * ws->h));
             const size_t left = ws->steps - k;
             const size_t span = !(steps >= 1.0) ? 1 : steps < (double)left ? (size_t)steps : left;
-            reset_events(e, ws, ws->rates, ws->t0 + (double)k * ws->h, (double)span * ws->h);
+            /* the span's stages fire at t0 + (k + theta) h ... t0 + (k + span - 1
+             * + theta) h: the reach is needed that far, not to the span's end */
+            reset_events(e, ws, ws->rates, ws->t0 + (double)k * ws->h,
+                         ((double)span - 1.0 + theta) * ws->h);
             next_reset = k + span;
         }
         for (size_t q = 0; q < e->nevents; q++)
