@@ -50,12 +50,12 @@ int sim_observable_find(const sim_scene *scene, const char *name, size_t len)
 }
 
 /* The observables each part of the computation serves. */
+#define OBS_Q (SIM_OBS_BIT(SIM_OBS_QX) | SIM_OBS_BIT(SIM_OBS_QY) | SIM_OBS_BIT(SIM_OBS_QZ))
+#define OBS_C6 SIM_OBS_BIT(SIM_OBS_A3)
+#define OBS_C4 (SIM_OBS_BIT(SIM_OBS_A2) | OBS_C6)   /* a3 = ... + 3 a2 */
 #define OBS_CENTRED (SIM_OBS_BIT(SIM_OBS_T) | SIM_OBS_BIT(SIM_OBS_PXX) | SIM_OBS_BIT(SIM_OBS_PYY) \
                      | SIM_OBS_BIT(SIM_OBS_PZZ) | SIM_OBS_BIT(SIM_OBS_PXY)                     \
                      | SIM_OBS_BIT(SIM_OBS_PXZ) | SIM_OBS_BIT(SIM_OBS_PYZ) | OBS_Q | OBS_C4)
-#define OBS_Q (SIM_OBS_BIT(SIM_OBS_QX) | SIM_OBS_BIT(SIM_OBS_QY) | SIM_OBS_BIT(SIM_OBS_QZ))
-#define OBS_C4 (SIM_OBS_BIT(SIM_OBS_A2) | OBS_C6)   /* a3 = ... + 3 a2 */
-#define OBS_C6 SIM_OBS_BIT(SIM_OBS_A3)
 
 /* The centred sums about V: P (always), q, |C|^4 and |C|^6 as the constant
  * flags ask (one instance per combination, no branch in the loop).  Central
