@@ -416,10 +416,12 @@ static void print_summary(const args *a, const sim_ensemble_result *res)
 {
     if (!a->quiet)
         fprintf(stderr, "gdsmc run: %zu ensembles of %zu particles, %llu candidate events "
-                "(%llu collisions, %llu majorant violations), %.2f s CPU, %.2f s wall on %d "
-                "threads\n", res->ensembles, res->n, (unsigned long long)res->counts.candidates,
+                "(%llu collisions, %llu majorant violations), %llu normal variates, %.2f s CPU, "
+                "%.2f s wall on %d threads\n", res->ensembles, res->n,
+                (unsigned long long)res->counts.candidates,
                 (unsigned long long)res->counts.collisions,
-                (unsigned long long)res->counts.violations, res->cpu_seconds,
+                (unsigned long long)res->counts.violations,
+                (unsigned long long)res->counts.normals, res->cpu_seconds,
                 res->wall_seconds, res->threads);
 }
 
