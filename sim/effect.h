@@ -60,10 +60,13 @@ typedef struct sim_effect_type {
      * over h, covering each new velocity (sim_run_cover).  NULL: the flow has
      * no time-step form. */
     void (*step)(const sim_effect *e, sim_run *run, double h);
-    /* How far the flow may move a velocity in time dt: a bound that event
-     * majorants add as a margin (for random flows a bound exceeded with
-     * negligible probability; the majorant-violation counter is the proof). */
+    /* How far the flow may move a velocity v in time dt, reach(dt) +
+     * reach_vy(dt) |v_y|: a bound that event majorants add as a margin (for
+     * random flows a bound exceeded with negligible probability; the
+     * majorant-violation counter is the proof).  reach_vy is NULL but for the
+     * homogeneous shear, which moves V_x by a dt V_y. */
     double (*reach)(const sim_effect *e, double dt);
+    double (*reach_vy)(const sim_effect *e, double dt);
     /* For a flow whose increment over dt is Gaussian with mean 0 and the same
      * variance in each component, independent of the velocity (white noise):
      * that variance per unit time; 0 otherwise.  Conditional observation

@@ -95,6 +95,7 @@ typedef struct collisions_state {
     double scale;       /* 2^32 / R: stage 1's acceptance a_i / R as sim_rng_accept32's x */
     double credit;      /* time-step scheme: stage time not yet spent on candidates */
     double margin;      /* the lazy flow's reach until the next reset (0 without one) */
+    double margin_vy;   /* ... its part per |v_y| (the shear; effect.h, reach_vy) */
     int started;        /* the index stream is filled (the engine zeroes the state
                            at the start of every run) */
     int batch_started;  /* ... and the blocks of first particles */
@@ -136,7 +137,9 @@ static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, 
     /* the engine has added the flow's reach to the bound; velocities this
      * process changes get the same margin (cover_moving) */
     collisions_state *s = vstate;
-    s->margin = run->flow ? run->flow->type->reach(run->flow, horizon) : 0.0;
+    const sim_effect *flow = run->flow;
+    s->margin = flow ? flow->type->reach(flow, horizon) : 0.0;
+    s->margin_vy = flow && flow->type->reach_vy ? flow->type->reach_vy(flow, horizon) : 0.0;
     if (!s->started) {   /* the first reset of a run, after the initial state */
         sim_pick_start(&s->pick, &run->p, run->rng);
         s->started = 1;
@@ -190,7 +193,7 @@ sums_remove(sim_run *run, const double vi[3], const double vj[3], const int sums
  * moves it, and stage 1 (a_i / R) needs a_i <= R for every drawn particle. */
 static inline void cover_moving(sim_run *run, const collisions_state *s, const double v[3])
 {
-    const double a = sqrt(sim_dist2(v, run->centre)) + s->margin;
+    const double a = sqrt(sim_dist2(v, run->centre)) + s->margin + s->margin_vy * fabs(v[1]);
     if (a > run->radius) {
         run->radius = a;
         run->bound_grew = 1;

@@ -4,8 +4,9 @@
  * The jump scheme simulates the Markov jump process without time splitting
  * (paper A §3, paper B §3): candidate events arrive at rate pi_hat = Σ of the event
  * processes' majorant rates, each is fired by its process (accepted or
- * fictitious), and the one lazy flow (heating) is applied to a particle only
- * when an event touches it or at an output time.  At each output time every
+ * fictitious), and the one lazy flow (white-noise heating, or the homogeneous
+ * shear when it is the only flow) is applied to a particle only when an event
+ * touches it or at an output time.  At each output time every
  * particle is brought to that time, the observables are recorded, and the
  * majorants are recomputed from the synchronised system; the pending waiting
  * time is then redrawn, which is exact because the waiting times are
@@ -47,9 +48,10 @@
  * flow h/2 (second order); the engine picks the step function once.  The
  * velocity bound is recomputed from scratch at each output time and grows
  * (sim_run_cover) whenever a stage moves a velocity beyond it.  When white
- * noise is the only flow and the stages fire the jump scheme's candidates
- * (collisions.rule = relative-speed, or a kernel other than hard spheres) it
- * is lazy here too (interval_lazy); a Gaussian thermostat alone is a linear
+ * noise or the homogeneous shear is the only flow and the stages fire the
+ * jump scheme's candidates (collisions.rule = relative-speed, or a kernel
+ * other than hard spheres) it is lazy here too (interval_lazy), and a step
+ * costs O(1) plus its collisions; a Gaussian thermostat alone is a linear
  * map kept global (stages_scaled, apply_linear), which the jump scheme also
  * runs, exactly (run_jump_linear).
  *
@@ -89,8 +91,8 @@
  * majorant near the current largest speed (run_jump_counted). */
 #define REBOUND_SWEEPS 4
 
-/* With a lazy flow the bound carries the flow's reach (7 sigma of its
- * increment) over the span until the next reset (reset_bound), so a long span
+/* With a lazy flow the bound carries the flow's reach (7 sigma of white
+ * noise's increment; |a| dt |V_y| for the shear) over the span until the next reset (reset_bound), so a long span
  * inflates the majorant: with resets only at paper A Ex 5's output times,
  * 1.6 apart, 12.2 candidates per hard-sphere collision (split-ex5's jump
  * rows, n = 1024).  Runs with a lazy flow and a bounded process therefore
@@ -451,15 +453,17 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     if (status == SIM_OK && scene->heat_flux.present   /* refuses [heating] */
         && (status = sim_effect_heat_flux(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
-    /* White noise is lazy, and a Gaussian thermostat a global linear map, when
-     * it is the only flow: always in the jump scheme; in the time-step scheme
+    /* White noise and the homogeneous shear are lazy, and a Gaussian
+     * thermostat a global linear map, when it is the only flow: always in the
+     * jump scheme; in the time-step scheme
      * when the stage fires the jump scheme's candidates (not by the contact
      * rule, which the batched stage draws without bringing particles) and
      * the background and the slab are absent (the heating constructor
      * refuses the other thermostats in the jump scheme). */
     const int hard_contact = scene->collisions.present && scene->collisions.exponent == 1.0
                              && scene->collisions.rule == SIM_RULE_CONTACT;
-    if (status == SIM_OK && e->nflows == 1 && scene->heating.present && !slab) {
+    if (status == SIM_OK && e->nflows == 1 && (scene->heating.present || scene->shear.present)
+        && !slab) {
         const sim_effect_type *type = e->flows[0].type;
         e->lazy_flow = type->advance != NULL && (!timestep || !hard_contact);
         e->linear = type->advance == NULL && type->linear_factor != NULL
@@ -471,9 +475,9 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         && e->nevents > 0)
         status = sim_error_set(err, SIM_EUNSUPPORTED,
                                scene->heating.present ? "heating.type" : "scene.scheme",
-                               "the jump scheme applies this flow only lazily (white noise) or "
-                               "as one global map with binary collisions (gaussian, without "
-                               "[background])");
+                               "the jump scheme applies a flow only lazily (white noise, or "
+                               "[shear] alone) or as one global map with binary collisions "
+                               "(gaussian, without [background])");
     if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
         if (timestep || scene->steady.present || scene->shear.present
             || (e->nflows > 0 && (!e->lazy_flow || e->flows[0].type->spread == NULL)))
@@ -675,6 +679,18 @@ static void reset_bound(const sim_engine *e, sim_run *run, double t, double hori
             c[k] /= (double)n;
     }
     memcpy(run->centre, c, sizeof c);
+    if (run->flow && run->flow->type->reach_vy) {   /* the shear: V_y stays */
+        const sim_effect *f = run->flow;
+        double r = 0.0;
+        for (size_t i = 0; i < n; i++) {
+            const double dt = t + horizon - run->p.stamp[i];
+            const double a = sqrt(sim_dist2(run->p.v[i], c)) + f->type->reach(f, dt)
+                             + f->type->reach_vy(f, dt) * fabs(run->p.v[i][1]);
+            r = a > r ? a : r;
+        }
+        run->radius = r;
+        return;
+    }
     if (run->flow) {
         double r = 0.0;
         for (size_t i = 0; i < n; i++) {

@@ -888,8 +888,16 @@ ENGINE_TRAP(engine_two_species,
             "temperature2 = 1\n",
             "t.ini:7: particles.mass2: the engine simulates one species: mass2 = 2.5 must equal "
             "mass1 = 1")
-ENGINE_TRAP(engine_shear, "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1.5\n",
-            "t.ini: scene.scheme: homogeneous shear needs scheme = timestep")
+ENGINE_TRAP(engine_shear_heated,
+            "[collisions]\nrestitution = 0.5\n[shear]\nrate = 1.5\n[heating]\ntype = white-noise\n"
+            "strength = 1\n",
+            "t.ini:6: heating.type: the jump scheme applies a flow only lazily (white noise, or "
+            "[shear] alone) or as one global map with binary collisions (gaussian, without "
+            "[background])")
+ENGINE_TRAP(engine_shear_ehs,
+            "[collisions]\nrestitution = 0.5\nmodel = ehs\n[shear]\nrate = 1.5\n",
+            "t.ini:3: collisions.model: ehs (its drag depends on the temperature) needs scheme = "
+            "timestep")
 ENGINE_TRAP(engine_lees_edwards, "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
             "t.ini:3: shear.boundary: lees-edwards needs scheme = timestep (the jump scheme "
             "keeps no positions)")
@@ -919,12 +927,14 @@ ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\nresti
 ENGINE_TRAP(engine_keep_temperature_background,
             "[heating]\ntype = gaussian\nkeep_temperature = true\n[collisions]\n"
             "[background]\n",
-            "t.ini:2: heating.type: the jump scheme applies this flow only lazily (white noise) "
-            "or as one global map with binary collisions (gaussian, without [background])")
+            "t.ini:2: heating.type: the jump scheme applies a flow only lazily (white noise, or "
+            "[shear] alone) or as one global map with binary collisions (gaussian, without "
+            "[background])")
 ENGINE_TRAP(engine_gaussian_background,
             "[heating]\ntype = gaussian\nstrength = 0.5\n[collisions]\n[background]\n",
-            "t.ini:2: heating.type: the jump scheme applies this flow only lazily (white noise) "
-            "or as one global map with binary collisions (gaussian, without [background])")
+            "t.ini:2: heating.type: the jump scheme applies a flow only lazily (white noise, or "
+            "[shear] alone) or as one global map with binary collisions (gaussian, without "
+            "[background])")
 ENGINE_TRAP(engine_non_gaussian_jump, "[heating]\ntype = non-gaussian\nstrength = 0.5\n",
             "t.ini:2: heating.type: non-gaussian heating needs scene.scheme = timestep "
             JUMP_HEATING)
@@ -1192,7 +1202,7 @@ int main(void)
     const struct CMUnitTest engine_trap[] = {
         cmocka_unit_test(engine_background_timestep),
         cmocka_unit_test(engine_two_species),
-        cmocka_unit_test(engine_shear),
+        cmocka_unit_test(engine_shear_heated), cmocka_unit_test(engine_shear_ehs),
         cmocka_unit_test(engine_lees_edwards),
         cmocka_unit_test(engine_lees_edwards_maxwell),
         cmocka_unit_test(engine_heat_flux),
