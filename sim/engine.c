@@ -92,10 +92,10 @@
 #define REBOUND_SWEEPS 4
 
 /* With a lazy flow the bound carries the flow's reach (7 sigma of white
- * noise's increment; |a| dt |V_y| for the shear) over the span until the next reset (reset_bound), so a long span
- * inflates the majorant: with resets only at paper A Ex 5's output times,
- * 1.6 apart, 12.2 candidates per hard-sphere collision (split-ex5's jump
- * rows, n = 1024).  Runs with a lazy flow and a bounded process therefore
+ * noise's increment; |a| dt |V_y| for the shear) over the span until the next
+ * reset (reset_bound), so a long span inflates the majorant: with resets only
+ * at paper A Ex 5's output times, 1.6 apart, 12.2 candidates per hard-sphere
+ * collision (split-ex5's jump rows, n = 1024).  Runs with a lazy flow and a bounded process therefore
  * also reset every LAZY_REBOUND_SWEEPS n candidates or so (lazy_reset;
  * interval_lazy in the time-step scheme): 6.8 candidates per collision
  * there.  A reset brings no particle (each keeps its own reach from its
@@ -679,23 +679,14 @@ static void reset_bound(const sim_engine *e, sim_run *run, double t, double hori
             c[k] /= (double)n;
     }
     memcpy(run->centre, c, sizeof c);
-    if (run->flow && run->flow->type->reach_vy) {   /* the shear: V_y stays */
+    if (run->flow) {
         const sim_effect *f = run->flow;
         double r = 0.0;
         for (size_t i = 0; i < n; i++) {
             const double dt = t + horizon - run->p.stamp[i];
-            const double a = sqrt(sim_dist2(run->p.v[i], c)) + f->type->reach(f, dt)
-                             + f->type->reach_vy(f, dt) * fabs(run->p.v[i][1]);
-            r = a > r ? a : r;
-        }
-        run->radius = r;
-        return;
-    }
-    if (run->flow) {
-        double r = 0.0;
-        for (size_t i = 0; i < n; i++) {
-            const double a = sqrt(sim_dist2(run->p.v[i], c))
-                             + run->flow->type->reach(run->flow, t + horizon - run->p.stamp[i]);
+            double a = sqrt(sim_dist2(run->p.v[i], c)) + f->type->reach(f, dt);
+            if (f->type->reach_vy)   /* the shear: V_y stays */
+                a += f->type->reach_vy(f, dt) * fabs(run->p.v[i][1]);
             r = a > r ? a : r;
         }
         run->radius = r;
