@@ -60,6 +60,9 @@ typedef struct sim_effect_type {
      * over h, covering each new velocity (sim_run_cover).  NULL: the flow has
      * no time-step form. */
     void (*step)(const sim_effect *e, sim_run *run, double h);
+    /* Nonzero if the step reads run->sums and keeps them current: the engine
+     * then has the stages keep them too (the sheared EHS drag). */
+    int step_reads_sums;
     /* How far the flow may move a velocity v in time dt, reach(dt) +
      * reach_vy(dt) |v_y|: a bound that event majorants add as a margin (for
      * random flows a bound exceeded with negligible probability; the
@@ -140,5 +143,8 @@ sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim
 sim_status sim_effect_heat_flux(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_shear(const sim_scene *scene, sim_effect *effect, sim_error *err);
 sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_effect *effect, sim_error *err);
+/* The homogeneous shear and the EHS drag as one flow (effect_drag.c). */
+sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_effect *effect,
+                                       sim_error *err);
 
 #endif

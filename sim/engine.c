@@ -439,12 +439,17 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     }
     /* the flows, in the order of a step */
     sim_effect flow;
-    if (status == SIM_OK && !slab && scene->shear.present
+    const int ehs_drag = !slab && scene->collisions.present
+                         && scene->collisions.model == SIM_MODEL_EHS
+                         && scene->collisions.restitution < 1.0;   /* elastic: no drag */
+    const int shear = !slab && scene->shear.present;
+    if (status == SIM_OK && shear && ehs_drag   /* one pass per step for both */
+        && (status = sim_effect_sheared_ehs_drag(scene, &flow, err)) == SIM_OK)
+        add_flow(e, flow);
+    if (status == SIM_OK && shear && !ehs_drag
         && (status = sim_effect_shear(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
-    if (status == SIM_OK && !slab && scene->collisions.present
-        && scene->collisions.model == SIM_MODEL_EHS
-        && scene->collisions.restitution < 1.0   /* elastic: no drag, nothing to pay */
+    if (status == SIM_OK && ehs_drag && !shear
         && (status = sim_effect_ehs_drag(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
     if (status == SIM_OK && scene->heating.present
@@ -471,6 +476,8 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         e->rate_exponent = scene->collisions.exponent;
         e->stage_sums = e->linear && type->linear_reads_sums;
     }
+    if (status == SIM_OK && e->nflows == 1 && e->flows[0].type->step_reads_sums)
+        e->stage_sums = 1;
     if (status == SIM_OK && !timestep && e->nflows > 0 && !e->lazy_flow && !e->linear
         && e->nevents > 0)
         status = sim_error_set(err, SIM_EUNSUPPORTED,
@@ -1066,6 +1073,8 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
         const double t = sim_scene_output_time(scene, m);
         if (e->linear)
             apply_linear(e, &ws->run);
+        else if (e->sums)   /* kept by the stages and the flow: their round-off reset */
+            sim_sums_compute(&ws->run.p, &ws->run.sums);
         observe_output(e, ws, m, t, obs, samples);
         if (m + 1 < scene->outputs && !e->lazy_rebound)   /* synchronised; else interval_lazy */
             reset_events(e, ws, ws->rates, t, interval);

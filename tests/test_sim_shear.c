@@ -155,6 +155,68 @@ static void test_ehs_drag_step(void **state)
     }
 }
 
+/* The sheared EHS drag (effect_drag.c): one step of the fused flow, with T
+ * from running sums, moves every velocity as the shear's step and then the
+ * drag's step do (to 1e-13), on a moving gas, and leaves the sums equal to
+ * those recomputed from the particles (to 1e-12); the steps in the other
+ * order, drag then shear, end more than 1e-6 away, so the comparison tells the
+ * order apart. */
+static void test_sheared_drag_step(void **state)
+{
+    (void)state;
+    const size_t n = 300;
+    sim_scene s = shear_scene(2.5, 1);
+    s.collisions.model = SIM_MODEL_EHS;
+    s.collisions.restitution = 0.5;
+    sim_error err;
+    sim_effect shear, drag, fused;
+    assert_int_equal(sim_effect_shear(&s, &shear, &err), SIM_OK);
+    assert_int_equal(sim_effect_ehs_drag(&s, &drag, &err), SIM_OK);
+    assert_int_equal(sim_effect_sheared_ehs_drag(&s, &fused, &err), SIM_OK);
+    assert_true(fused.type->step_reads_sums);
+    sim_run r[3];
+    for (int c = 0; c < 3; c++) {
+        memset(&r[c], 0, sizeof r[c]);
+        assert_int_equal(sim_particles_alloc(&r[c].p, n, 0, &err), SIM_OK);
+        r[c].rng = sim_rng_alloc();
+        r[c].radius = INFINITY;
+        sim_rng_set_stream(r[c].rng, 11, 4);   /* the same velocities in the three */
+        for (size_t i = 0; i < n; i++) {
+            sim_rng_normal3(r[c].rng, r[c].p.v[i]);
+            r[c].p.v[i][0] += 0.3;   /* a moving gas: the drag acts on peculiar velocities */
+            r[c].p.v[i][1] -= 0.2;
+        }
+    }
+    const double h = 0.05;
+    sim_sums_compute(&r[0].p, &r[0].sums);
+    fused.type->step(&fused, &r[0], h);
+    shear.type->step(&shear, &r[1], h);
+    drag.type->step(&drag, &r[1], h);
+    drag.type->step(&drag, &r[2], h);
+    shear.type->step(&shear, &r[2], h);
+    double apart = 0.0, reversed = 0.0;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 3; k++) {
+            apart = fmax(apart, fabs(r[0].p.v[i][k] - r[1].p.v[i][k]));
+            reversed = fmax(reversed, fabs(r[2].p.v[i][k] - r[1].p.v[i][k]));
+        }
+    assert_true(apart <= 1e-13);
+    assert_true(reversed > 1e-6);
+    sim_sums fresh;
+    sim_sums_compute(&r[0].p, &fresh);
+    for (int k = 0; k < 3; k++)
+        assert_close(r[0].sums.v[k], fresh.v[k], 0.0, 1e-12);
+    for (int k = 0; k < 6; k++)
+        assert_close(r[0].sums.vv[k], fresh.vv[k], 1e-12, 1e-12);
+    free(shear.params);
+    free(drag.params);
+    free(fused.params);
+    for (int c = 0; c < 3; c++) {
+        sim_particles_free(&r[c].p);
+        gsl_rng_free(r[c].rng);
+    }
+}
+
 /* |x - want| <= ci (3.2 standard errors over the ensembles), and the same
  * estimate tells `wrong` apart (|x - wrong| > ci). */
 static void assert_within(double x, double ci, double want, double wrong, const char *what)
@@ -479,6 +541,7 @@ int main(void)
         cmocka_unit_test(test_collisionless_shear),
         cmocka_unit_test(test_ehs_elastic_is_ihs),
         cmocka_unit_test(test_ehs_drag_step),
+        cmocka_unit_test(test_sheared_drag_step),
         cmocka_unit_test(test_observers_at_equilibrium),
         cmocka_unit_test(test_collision_counter),
         cmocka_unit_test(test_elastic_short_times_follow_bgk),
