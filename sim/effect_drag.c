@@ -105,7 +105,7 @@ static void sheared_drag_step(const sim_effect *e, sim_run *run, double h)
 }
 
 static const sim_effect_type sheared_drag_type = {
-    .name = "shear drag",
+    .name = "shear+drag",
     .step = sheared_drag_step,
     .step_reads_sums = 1,
 };

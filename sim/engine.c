@@ -443,13 +443,16 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
                          && scene->collisions.model == SIM_MODEL_EHS
                          && scene->collisions.restitution < 1.0;   /* elastic: no drag */
     const int shear = !slab && scene->shear.present;
-    if (status == SIM_OK && shear && ehs_drag   /* one pass per step for both */
+    /* both in one pass per step, reading running sums, when no other flow
+     * moves the particles behind the sums' back */
+    const int fused = shear && ehs_drag && !scene->heating.present && !scene->heat_flux.present;
+    if (status == SIM_OK && fused
         && (status = sim_effect_sheared_ehs_drag(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
-    if (status == SIM_OK && shear && !ehs_drag
+    if (status == SIM_OK && shear && !fused
         && (status = sim_effect_shear(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
-    if (status == SIM_OK && ehs_drag && !shear
+    if (status == SIM_OK && ehs_drag && !fused
         && (status = sim_effect_ehs_drag(scene, &flow, err)) == SIM_OK)
         add_flow(e, flow);
     if (status == SIM_OK && scene->heating.present

@@ -217,6 +217,29 @@ static void test_sheared_drag_step(void **state)
     }
 }
 
+/* The engine fuses the shear and the EHS drag only when no other flow moves
+ * the particles behind the running sums' back: with white-noise heating
+ * beside them the three flows stay apart (a fused drag would read sums the
+ * heating had made stale). */
+static void test_sheared_drag_only_alone(void **state)
+{
+    (void)state;
+    sim_scene s = shear_scene(2.5, 1);
+    s.collisions.model = SIM_MODEL_EHS;
+    s.collisions.restitution = 0.5;
+    sim_engine *e = NULL;
+    sim_error err;
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_OK);
+    assert_string_equal(sim_engine_effects(e), "collisions shear+drag");
+    sim_engine_free(e);
+    s.heating.present = 1;
+    s.heating.type = SIM_HEATING_WHITE_NOISE;
+    s.heating.strength = 0.5;
+    assert_int_equal(sim_engine_create(&s, &e, &err), SIM_OK);
+    assert_string_equal(sim_engine_effects(e), "collisions shear drag heating");
+    sim_engine_free(e);
+}
+
 /* |x - want| <= ci (3.2 standard errors over the ensembles), and the same
  * estimate tells `wrong` apart (|x - wrong| > ci). */
 static void assert_within(double x, double ci, double want, double wrong, const char *what)
@@ -542,6 +565,7 @@ int main(void)
         cmocka_unit_test(test_ehs_elastic_is_ihs),
         cmocka_unit_test(test_ehs_drag_step),
         cmocka_unit_test(test_sheared_drag_step),
+        cmocka_unit_test(test_sheared_drag_only_alone),
         cmocka_unit_test(test_observers_at_equilibrium),
         cmocka_unit_test(test_collision_counter),
         cmocka_unit_test(test_elastic_short_times_follow_bgk),
