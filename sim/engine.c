@@ -95,12 +95,12 @@
  * noise's increment; |a| dt |V_y| for the shear) over the span until the next
  * reset (reset_bound), so a long span inflates the majorant: with resets only
  * at paper A Ex 5's output times, 1.6 apart, 12.2 candidates per hard-sphere
- * collision (split-ex5's jump rows, n = 1024).  Runs with a lazy flow and a bounded process therefore
- * also reset every LAZY_REBOUND_SWEEPS n candidates or so (lazy_reset;
- * interval_lazy in the time-step scheme): 6.8 candidates per collision
- * there.  A reset brings no particle (each keeps its own reach from its
- * stamp; about 2n square roots) and is exact anywhere, the waiting times
- * being memoryless.  Resets every 1, 2 and 4 n candidates cost the same
+ * collision (split-ex5's jump rows, n = 1024).  Runs with a lazy flow and a
+ * bounded process therefore also reset every LAZY_REBOUND_SWEEPS n candidates
+ * or so (lazy_reset; interval_lazy in the time-step scheme): 6.8 candidates
+ * per collision there.  A reset brings no particle (each keeps its own reach
+ * from its stamp; about 2n square roots) and is exact anywhere, the waiting
+ * times being memoryless.  Resets every 1, 2 and 4 n candidates cost the same
  * CPU time within this machine's noise. */
 #define LAZY_REBOUND_SWEEPS 2
 
