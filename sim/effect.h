@@ -41,6 +41,7 @@
 #include "scene.h"
 
 typedef struct sim_run sim_run;         /* one ensemble in progress (run.h) */
+typedef struct sim_sums sim_sums;       /* running sums of the velocities (observe.h) */
 typedef struct sim_effect sim_effect;
 
 typedef double (*sim_event_fire_fn)(const sim_effect *e, sim_run *run, void *state, double t);
@@ -76,7 +77,8 @@ typedef struct sim_effect_type {
      * (observe.h, sim_observe_sums) needs it. */
     double (*spread)(const sim_effect *e);
     /* For a flow that maps every velocity by one affine map over a step,
-     * v -> o + f (v - o) (the Gaussian thermostat, paper C Eqs. (12), (61)):
+     * v -> o + f (v - o) (the Gaussian thermostat, paper C Eqs. (12), (61);
+     * the EHS drag, paper E Eq. (4.22), beside the lazy shear: advance_sums):
      * the factor f over a step of h, given the run (run->scale, the product of
      * the factors not yet applied to the stored velocities, and run->sums, of
      * the stored velocities); NULL otherwise.  The engine then keeps the map
@@ -91,6 +93,14 @@ typedef struct sim_effect_type {
      * collisions (keep_temperature).  The jump scheme then runs candidates at
      * the rate that grows as e^{lambda rate t} (engine.c, run_jump_linear). */
     double (*linear_rate)(const sim_effect *e);
+    /* For a lazy flow that is deterministic and linear (the homogeneous shear,
+     * also beside the EHS drag as a linear map): the sums of velocities the
+     * flow maps over dt, mapped in O(1); NULL otherwise.  With it the engine
+     * keeps run->sums of the velocities at the current time rather than of the
+     * stored ones: bringing a particle forward leaves them as they are, a
+     * collision changes them (select_fire_current_sums), and the engine
+     * advances them with the flow between stages (engine.c, interval_lazy). */
+    void (*advance_sums)(const sim_effect *e, sim_sums *s, double dt);
 
     /* Event processes (NULL for flows). */
     size_t state_size;
@@ -116,6 +126,11 @@ typedef struct sim_effect_type {
      * also keeps run->sums current for every particle it changes or brings
      * forward (scene.observation = conditional, issue 18). */
     sim_event_fire_fn (*select_fire_sums)(const sim_effect *e, int lazy_flow, int bounded);
+    /* Optional (may be NULL, or return NULL): as select_fire with a lazy flow
+     * that has advance_sums, for an engine that keeps run->sums at the
+     * candidates' time t: the fire function brings the particles it draws to t
+     * and keeps the sums current for every velocity it changes. */
+    sim_event_fire_fn (*select_fire_current_sums)(const sim_effect *e, int bounded);
     /* The time-step scheme's stage of length h for this process (NULL, or
      * NULL returned: the engine's stage, which fires the process's candidates
      * at its majorant rate for the stage time); with sums, the stage also keeps

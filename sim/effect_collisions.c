@@ -244,7 +244,9 @@ fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate, double t,
 
     double unit[3];
     sim_rng_unit_sphere(run->rng, unit);
-    sums_remove(run, vi, vj, sums);   /* no lazy flow with sums (select_instance) */
+    /* with sums, those of the velocities at t (no flow, or a lazy one with
+     * advance_sums: select_fire_current_sums); bringing i and j left them */
+    sums_remove(run, vi, vj, sums);
     sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
     sums_restore(run, i, j, 0, sums);
     run->counts.collisions++;
@@ -334,6 +336,7 @@ FIRE_INSTANCE(fire_vhs_flow_sums, KERNEL_VHS, 1, 1, 1)
 FIRE_HS_INSTANCE(fire_hard_spheres, 0, 0)
 FIRE_HS_INSTANCE(fire_hard_spheres_flow, 1, 0)
 FIRE_HS_INSTANCE(fire_hard_spheres_sums, 0, 1)
+FIRE_HS_INSTANCE(fire_hard_spheres_flow_current_sums, 1, 1)
 
 /* The instance for the engine's shape, [sums][bounded][lazy_flow].  Hard
  * spheres keep running sums only without a lazy flow (for the jump scheme's
@@ -366,6 +369,15 @@ static sim_event_fire_fn collisions_select_fire_sums(const sim_effect *e, int la
                                                      int bounded)
 {
     return select_instance(e, lazy_flow, bounded, 1);
+}
+
+/* Sums at the candidates' time under a deterministic lazy flow (effect.h):
+ * hard spheres only (paper E's sheared EHS gas), NULL otherwise. */
+static sim_event_fire_fn collisions_select_fire_current_sums(const sim_effect *e, int bounded)
+{
+    (void)bounded;   /* hard spheres always use the bound */
+    const collisions_params *p = e->params;
+    return p->lambda == 1.0 ? fire_hard_spheres_flow_current_sums : NULL;
 }
 
 /* ------------------------------------------------------ batched loops */
@@ -588,6 +600,7 @@ static const sim_effect_type collisions_type = {
     .rate = collisions_rate,
     .select_fire = collisions_select_fire,
     .select_fire_sums = collisions_select_fire_sums,
+    .select_fire_current_sums = collisions_select_fire_current_sums,
     .select_stage = collisions_select_stage,
     .select_fire_many = collisions_select_fire_many,
 };

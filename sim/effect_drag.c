@@ -56,28 +56,57 @@ static const sim_effect_type drag_type = {
     .step = drag_step,
 };
 
-/* Paper E's EHS gas under the homogeneous shear: the shear's step
- * (effect_shear.c) and then the drag's, with T taken after the shear, in one
- * pass over the particles instead of three (issue 18).  T comes from the
- * running sums of v and v v^T that the collision stages keep (run->sums):
- * the shear maps them by V_x <- V_x - a h V_y and the drag by V <- u + f (V -
- * u), each in O(1).  The engine recomputes them from the particles at every
- * output time, so their round-off stays that of a few steps. */
+/* Paper E's EHS gas under the homogeneous shear (issue 18), in one of two
+ * ways the engine chooses (engine.c):
+ *
+ *  - eagerly, when the stages draw by the contact rule: the shear's step
+ *    (effect_shear.c) and then the drag's, with T taken after the shear, in
+ *    one pass over the particles instead of three (sheared_drag_step);
+ *
+ *  - lazily, when they accept by |g| (collisions.rule = relative-speed): the
+ *    shear is applied to a particle when a stage draws it (advance, as
+ *    effect_shear.c alone) and the drag, a scaling about the mean velocity
+ *    with which collisions and the shear commute, is one global factor
+ *    (linear_factor, run->scale), so a step costs O(1) plus its collisions.
+ *
+ * Either way T comes from running sums of v and v v^T of the velocities at
+ * the step's time: the shear maps them by V_x <- V_x - a h V_y (shear_sums)
+ * and the drag by V <- u + f (V - u), each in O(1), and the collisions keep
+ * them.  The engine recomputes them from the particles at every output time,
+ * so their round-off stays that of a few steps. */
+
+/* The sums mapped by the shear V_x <- V_x - ah V_y (vv = xx, yy, zz, xy, xz, yz). */
+static void shear_sums(sim_sums *s, double ah)
+{
+    s->v[0] -= ah * s->v[1];
+    s->vv[0] += ah * (ah * s->vv[1] - 2.0 * s->vv[3]);
+    s->vv[3] -= ah * s->vv[1];
+    s->vv[4] -= ah * s->vv[5];
+}
+
+/* The drag's factor e^{-zeta0 h/2} over a step of h for the velocities
+ * u + scale (v - u), v those the sums s of n particles hold (zeta0 from their
+ * T; 1 if every velocity is equal). */
+static double drag_factor(const drag_params *p, const sim_sums *s, size_t n, double scale,
+                          double h)
+{
+    const double dn = (double)n;
+    const double u[3] = {s->v[0] / dn, s->v[1] / dn, s->v[2] / dn};
+    const double theta = scale * scale
+                         * ((s->vv[0] + s->vv[1] + s->vv[2]) / dn
+                            - (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])) / 3.0;
+    return theta > 0.0 ? exp(-0.5 * p->zeta_factor * sqrt(theta) * h) : 1.0;
+}
+
 static void sheared_drag_step(const sim_effect *e, sim_run *run, double h)
 {
     const drag_params *p = e->params;
     sim_sums *s = &run->sums;
     const size_t n = run->p.n;
     const double ah = p->shear_rate * h, dn = (double)n;
-    /* the sums after the shear: vv = xx, yy, zz, xy, xz, yz */
-    s->v[0] -= ah * s->v[1];
-    s->vv[0] += ah * (ah * s->vv[1] - 2.0 * s->vv[3]);
-    s->vv[3] -= ah * s->vv[1];
-    s->vv[4] -= ah * s->vv[5];
+    shear_sums(s, ah);
     const double u[3] = {s->v[0] / dn, s->v[1] / dn, s->v[2] / dn};
-    const double theta = ((s->vv[0] + s->vv[1] + s->vv[2]) / dn
-                          - (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])) / 3.0;
-    const double f = theta > 0.0 ? exp(-0.5 * p->zeta_factor * sqrt(theta) * h) : 1.0;
+    const double f = drag_factor(p, s, n, 1.0, h);
     /* the bound followed on local copies (the stores to v cannot move them) */
     const double c[3] = {run->centre[0], run->centre[1], run->centre[2]};
     double r2 = run->radius * run->radius;
@@ -104,10 +133,52 @@ static void sheared_drag_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
+/* The lazy form: the shear of a stored velocity over dt (exact), its reach
+ * |a| dt |V_y|, the sums' shear, and the drag's factor for the velocities
+ * u + run->scale (v - u) at the end of a step of h whose shear the sums
+ * already hold. */
+static void sheared_drag_advance(const sim_effect *e, double v[3], double dt, gsl_rng *rng)
+{
+    (void)rng;
+    const drag_params *p = e->params;
+    v[0] -= p->shear_rate * dt * v[1];
+}
+
+static double sheared_drag_reach(const sim_effect *e, double dt)
+{
+    (void)e;
+    (void)dt;
+    return 0.0;
+}
+
+static double sheared_drag_reach_vy(const sim_effect *e, double dt)
+{
+    const drag_params *p = e->params;
+    return fabs(p->shear_rate) * dt;
+}
+
+static void sheared_drag_advance_sums(const sim_effect *e, sim_sums *s, double dt)
+{
+    const drag_params *p = e->params;
+    shear_sums(s, p->shear_rate * dt);
+}
+
+static double sheared_drag_factor(const sim_effect *e, const sim_run *run, double h)
+{
+    return drag_factor(e->params, &run->sums, run->p.n, run->scale, h);
+}
+
 static const sim_effect_type sheared_drag_type = {
     .name = "shear+drag",
     .step = sheared_drag_step,
     .step_reads_sums = 1,
+    .advance = sheared_drag_advance,
+    .reach = sheared_drag_reach,
+    .reach_vy = sheared_drag_reach_vy,
+    .advance_sums = sheared_drag_advance_sums,
+    .linear_factor = sheared_drag_factor,
+    .linear_centred = 1,
+    .linear_reads_sums = 1,
 };
 
 sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_effect *effect,

@@ -13,8 +13,9 @@
  * time, with that deterministic reach in the majorant.  The jump scheme then
  * simulates the sheared gas without splitting error, and a step of the
  * time-step scheme costs O(1) plus its collisions (candidates accepted by |g|,
- * collisions.rule = relative-speed; by the contact rule, or beside another
- * flow, the step shears every particle).
+ * collisions.rule = relative-speed; beside the EHS drag too, which is then a
+ * global factor, effect_drag.c; by the contact rule, or beside another flow,
+ * the step shears every particle).
  *
  * The Lees-Edwards slab (boundary = lees-edwards) is sim/slab.c.
  */

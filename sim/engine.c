@@ -53,7 +53,8 @@
  * other than hard spheres) it is lazy here too (interval_lazy), and a step
  * costs O(1) plus its collisions; a Gaussian thermostat alone is a linear
  * map kept global (stages_scaled, apply_linear), which the jump scheme also
- * runs, exactly (run_jump_linear).
+ * runs, exactly (run_jump_linear); paper E's sheared EHS gas is both, the
+ * shear lazy and the drag a global map (current_sums, lazy_linear_flow).
  *
  * The Lees-Edwards slab (shear.boundary = lees-edwards, slab.h) is the
  * time-step scheme with positions: its own ordered stages per step (streaming
@@ -133,6 +134,9 @@ struct sim_engine {
     int linear;           /* flows[0] is a linear map kept global (run->scale) */
     double rate_exponent; /* ... the collisions' lambda: their rate scales as scale^lambda */
     int stage_sums;       /* ... its factor reads run->sums: the stages keep them (then sums) */
+    int current_sums;     /* ... and flows[0] is also lazy (the sheared EHS drag): the sums
+                             are of the velocities at the stages' time (effect.h,
+                             advance_sums), not of the stored ones */
     int conditional;      /* scene.observation = conditional: T .. Pyz as expectations
                              over the lazy flow's pending increments, which are never
                              drawn at output times (observe.h, sim_observe_sums) */
@@ -235,10 +239,15 @@ static void flow_steps(const sim_engine *e, sim_workspace *ws, double h)
  * stages act on w; only the rate scales, as |g|^lambda, so a stage of h at the
  * true velocities is one of h scale^lambda at the stored ones.  O(1) per step;
  * the map is applied to every particle at output times (apply_linear). */
-static void stages_scaled(const sim_engine *e, sim_workspace *ws, double h)
+static double scaled_stage(const sim_engine *e, const sim_workspace *ws, double h)
 {
     const double s = ws->run.scale, lambda = e->rate_exponent;
-    stages(e, ws, h * (lambda == 1.0 ? s : lambda == 0.0 ? 1.0 : pow(s, lambda)));
+    return h * (lambda == 1.0 ? s : lambda == 0.0 ? 1.0 : pow(s, lambda));
+}
+
+static void stages_scaled(const sim_engine *e, sim_workspace *ws, double h)
+{
+    stages(e, ws, scaled_stage(e, ws, h));
 }
 
 static void linear_step(const sim_engine *e, sim_workspace *ws, double h)
@@ -297,23 +306,41 @@ static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double
     ws->rates[k] = rate;
 }
 
-/* The time-step scheme with a lazy flow (white noise, effect.h): the flow's
- * steps only move the clock, and step k's stages fire at t0 + (k + theta) h,
- * theta = 0 for Lie splitting (collisions, then the flow) and 1/2 for Strang
- * (half the flow, collisions, half the flow): each particle a stage draws is
- * brought to that time, so the same increments are drawn, in law, as by
- * stepping every particle (Gaussian increments over adjoining times add). */
+/* The sheared EHS drag's flow over dt with the shear lazy (current_sums):
+ * the sums sheared to the end of the flow, then the drag's global factor
+ * from the temperature they give. */
+static void lazy_linear_flow(const sim_engine *e, sim_workspace *ws, double dt)
+{
+    const sim_effect *f = &e->flows[0];
+    f->type->advance_sums(f, &ws->run.sums, dt);
+    ws->run.scale *= f->type->linear_factor(f, &ws->run, dt);
+}
+
+/* The time-step scheme with a lazy flow (white noise, the shear; effect.h):
+ * the flow's steps only move the clock, and step k's stages fire at t0 + (k +
+ * theta) h, theta = 0 for Lie splitting (collisions, then the flow) and 1/2
+ * for Strang (half the flow, collisions, half the flow): each particle a stage
+ * draws is brought to that time, so the same increments are drawn, in law, as
+ * by stepping every particle (Gaussian increments over adjoining times add;
+ * shears compose).  With current_sums the flow also carries a global linear
+ * map (the EHS drag), applied where interval_lie and interval_strang apply
+ * the flow's step, and the stages run at the rate scaled by it, as
+ * stages_scaled. */
 static void interval_lazy(const sim_engine *e, sim_workspace *ws)
 {
-    const double theta = e->scene.splitting == SIM_SPLIT_STRANG ? 0.5 : 0.0;
+    const int strang = e->scene.splitting == SIM_SPLIT_STRANG;
+    const double theta = strang ? 0.5 : 0.0;
     size_t next_reset = e->lazy_rebound ? 0 : ws->steps;
+    if (e->current_sums && strang)
+        lazy_linear_flow(e, ws, 0.5 * ws->h);
     for (size_t k = 0; k < ws->steps; k++) {
+        const double stage = scaled_stage(e, ws, ws->h);
         if (k == next_reset) {   /* lazy_rebound: a reset for the stages of `span`
                                     steps, about lazy_candidates(e) candidates */
             double total = 0.0;
             for (size_t q = 0; q < e->nevents; q++)
                 total += ws->rates[q];
-            const double steps = floor(lazy_candidates(e) / (total * ws->h));
+            const double steps = floor(lazy_candidates(e) / (total * stage));
             const size_t left = ws->steps - k;
             const size_t span = !(steps >= 1.0) ? 1 : steps < (double)left ? (size_t)steps : left;
             /* the span's stages fire at t0 + (k + theta) h ... t0 + (k + span - 1
@@ -323,7 +350,9 @@ static void interval_lazy(const sim_engine *e, sim_workspace *ws)
             next_reset = k + span;
         }
         for (size_t q = 0; q < e->nevents; q++)
-            stage_fired(e, ws, q, ws->h, ws->t0 + ((double)k + theta) * ws->h);
+            stage_fired(e, ws, q, stage, ws->t0 + ((double)k + theta) * ws->h);
+        if (e->current_sums)
+            lazy_linear_flow(e, ws, strang && k + 1 == ws->steps ? 0.5 * ws->h : ws->h);
     }
 }
 
@@ -467,15 +496,19 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
      * when the stage fires the jump scheme's candidates (not by the contact
      * rule, which the batched stage draws without bringing particles) and
      * the background and the slab are absent (the heating constructor
-     * refuses the other thermostats in the jump scheme). */
+     * refuses the other thermostats in the jump scheme).  The sheared EHS
+     * drag (time-step only) is both: the shear lazy, the drag a global map,
+     * with running sums at the stages' time (current_sums). */
     const int hard_contact = scene->collisions.present && scene->collisions.exponent == 1.0
                              && scene->collisions.rule == SIM_RULE_CONTACT;
     if (status == SIM_OK && e->nflows == 1 && (scene->heating.present || scene->shear.present)
         && !slab) {
         const sim_effect_type *type = e->flows[0].type;
         e->lazy_flow = type->advance != NULL && (!timestep || !hard_contact);
-        e->linear = type->advance == NULL && type->linear_factor != NULL
-                    && e->nevents == 1 && scene->collisions.present;
+        e->linear = type->linear_factor != NULL && e->nevents == 1 && scene->collisions.present
+                    && (type->advance == NULL
+                        || (e->lazy_flow && timestep && type->advance_sums != NULL));
+        e->current_sums = e->lazy_flow && e->linear;
         e->rate_exponent = scene->collisions.exponent;
         e->stage_sums = e->linear && type->linear_reads_sums;
     }
@@ -551,8 +584,12 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     e->sums = e->conditional || linear_sums;
     for (size_t k = 0; k < e->nevents; k++) {
         const sim_effect *ev = &e->events[k];
-        e->fire[k] = ev->type->select_fire_sums
-                         ? ev->type->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
+        if (e->current_sums)
+            e->fire[k] = ev->type->select_fire_current_sums
+                             ? ev->type->select_fire_current_sums(ev, e->bounded) : NULL;
+        else
+            e->fire[k] = ev->type->select_fire_sums
+                             ? ev->type->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
         e->sums &= e->fire[k] != NULL;
     }
     for (size_t k = 0; k < e->nevents; k++)
@@ -560,7 +597,11 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
             e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow,
                                                          e->bounded);
     if (linear_sums && !e->sums) {
+        const int current = e->current_sums;
         sim_engine_free(e);
+        if (current)   /* the constructors make this unreachable: ehs is hard spheres */
+            return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.kernel",
+                                 "the sheared ehs drag needs hard spheres");
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.keep_temperature",
                              "the keep-temperature rescaling needs collisions that keep "
                              "running sums (supported: maxwell, vhs, hard-spheres)");
@@ -1074,6 +1115,8 @@ static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, si
         ws->t0 = sim_scene_output_time(scene, m - 1);
         e->interval(e, ws);
         const double t = sim_scene_output_time(scene, m);
+        if (e->current_sums)   /* the lazy flow first: the sums are then of the true velocities */
+            bring_all(&ws->run, t);
         if (e->linear)
             apply_linear(e, &ws->run);
         else if (e->sums)   /* kept by the stages and the flow: their round-off reset */

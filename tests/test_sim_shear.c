@@ -14,7 +14,10 @@
  * - the shear as a lazy flow (issue 18): the jump scheme follows the exact
  *   moment equations of sheared Maxwell molecules, and sheared hard spheres
  *   come out the same by the jump scheme, by the time-step scheme with the
- *   lazy shear and by the one that shears every particle each step. */
+ *   lazy shear and by the one that shears every particle each step;
+ * - the EHS drag as one global factor beside the lazy shear (issue 18) gives
+ *   what the step that shears and drags every particle gives: to round-off
+ *   without collisions, within the statistical error with them. */
 #include "test_sim_util.h"
 
 #include <string.h>
@@ -558,6 +561,102 @@ static void test_lazy_shear_schemes_agree(void **state)
     }
 }
 
+/* The sheared EHS gas with its collisions switched off (collisions.beta =
+ * 1e-30: no candidate in the whole run), so that only the flows act: the
+ * time-step scheme accepting by |g| (the shear lazy, the drag one global
+ * factor from running sums at the stages' time: engine.c, current_sums) gives
+ * what the one shearing and dragging every particle each step (the contact
+ * rule) gives, at every output time to 1e-12 relative, by Lie and by Strang
+ * splitting; a shear 1% harder or a restitution 1% higher (a weaker drag)
+ * moves the same observables by more than 1e-5. */
+static void test_lazy_drag_matches_eager(void **state)
+{
+    (void)state;
+    static const int obs[6] = {SIM_OBS_T, SIM_OBS_PXX, SIM_OBS_PYY,
+                               SIM_OBS_PZZ, SIM_OBS_PXY, SIM_OBS_PXZ};
+    for (int strang = 0; strang < 2; strang++) {
+        sim_scene s = shear_scene(2.5, 1);
+        s.particles.n = 300;
+        s.particles.ensembles = 2;
+        s.collisions.model = SIM_MODEL_EHS;
+        s.collisions.restitution = 0.5;
+        s.collisions.beta = 1e-30;
+        s.splitting = strang ? SIM_SPLIT_STRANG : SIM_SPLIT_EULER;
+        sim_ensemble_result r[4];
+        s.collisions.rule = SIM_RULE_RELATIVE_SPEED;
+        run(&s, &r[0]);
+        s.collisions.rule = SIM_RULE_CONTACT;
+        run(&s, &r[1]);
+        s.shear.rate = 2.525;
+        run(&s, &r[2]);
+        s.shear.rate = 2.5;
+        s.collisions.restitution = 0.505;
+        run(&s, &r[3]);
+        double apart = 0.0, harder = INFINITY, weaker = INFINITY;
+        for (int q = 0; q < 6; q++) {
+            double d[3] = {0, 0, 0};
+            for (size_t m = 1; m < r[0].outputs; m++)
+                for (int c = 0; c < 3; c++) {
+                    const double x = sim_result_mean(&r[c == 0 ? 0 : c + 1], m, obs[q]);
+                    const double want = sim_result_mean(&r[1], m, obs[q]);
+                    d[c] = fmax(d[c], fabs(x - want) / fabs(want));
+                }
+            apart = fmax(apart, d[0]);
+            harder = fmin(harder, d[1]);
+            weaker = fmin(weaker, d[2]);
+        }
+        print_message("collisionless sheared EHS drag (%s): lazy against eager %.2g relative; "
+                      "a 1%% harder shear %.2g, a 1%% weaker drag %.2g\n",
+                      strang ? "strang" : "euler", apart, harder, weaker);
+        assert_true(apart <= 1e-12);
+        assert_true(harder > 1e-5);
+        assert_true(weaker > 1e-5);
+        for (int c = 0; c < 4; c++) {
+            assert_int_equal(r[c].counts.candidates, 0);
+            sim_ensemble_result_free(&r[c]);
+        }
+    }
+}
+
+/* Paper E's EHS gas (alpha = 0.7) sheared at a = 2 from T0 = 1 to t = 2 with
+ * its collisions: the time-step scheme accepting by |g| (the shear lazy, the
+ * drag a global factor) and the one by the contact rule (every particle
+ * sheared and dragged each step) agree in T, Pxx, Pyy and Pxy at every output
+ * time within the quadrature sum of their half-widths; a restitution of 0.8
+ * (a weaker drag, and collisions at 0.9 of the rate instead of 0.85) is told
+ * apart; no majorant violation. */
+static void test_lazy_drag_schemes_agree(void **state)
+{
+    (void)state;
+    sim_scene s = shear_scene(2.0, 1);
+    s.t_end = 2.0;
+    s.particles.n = 200;
+    s.particles.ensembles = 400;
+    s.particles.maxwellian.temperature = 1.0;
+    s.collisions.constant = 1.0 / (4.0 * M_PI);
+    s.collisions.model = SIM_MODEL_EHS;
+    s.collisions.restitution = 0.7;
+    s.dt = 0.002;
+    sim_ensemble_result r[2], wrong;
+    s.collisions.rule = SIM_RULE_RELATIVE_SPEED;
+    run(&s, &r[0]);
+    s.collisions.rule = SIM_RULE_CONTACT;
+    run(&s, &r[1]);
+    s.collisions.restitution = 0.8;
+    run(&s, &wrong);
+    static const int obs[4] = {SIM_OBS_T, SIM_OBS_PXX, SIM_OBS_PYY, SIM_OBS_PXY};
+    const double z = largest_z(&r[0], &r[1], obs, 4), zwrong = largest_z(&r[0], &wrong, obs, 4);
+    print_message("sheared EHS gas: time-step (|g|, lazy shear, global drag) against (contact, "
+                  "every particle each step), largest |difference| / joint half-width %.2f "
+                  "(alpha = 0.8 against 0.7: %.2f)\n", z, zwrong);
+    assert_true(z <= 1.0);
+    assert_true(zwrong > 1.0);
+    assert_int_equal(r[0].counts.violations, 0);
+    sim_ensemble_result_free(&wrong);
+    for (int k = 0; k < 2; k++)
+        sim_ensemble_result_free(&r[k]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -571,6 +670,8 @@ int main(void)
         cmocka_unit_test(test_elastic_short_times_follow_bgk),
         cmocka_unit_test(test_jump_shear_maxwell_moments),
         cmocka_unit_test(test_lazy_shear_schemes_agree),
+        cmocka_unit_test(test_lazy_drag_matches_eager),
+        cmocka_unit_test(test_lazy_drag_schemes_agree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
