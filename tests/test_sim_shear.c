@@ -516,6 +516,21 @@ static double largest_z(const sim_ensemble_result *a, const sim_ensemble_result 
     return z;
 }
 
+/* Hard spheres of restitution alpha sheared at a = 2 from T0 = 1 to t = 2,
+ * 400 ensembles of 200, h = 0.002 (the lazy-flow comparisons below). */
+static sim_scene sheared_hard_spheres(double alpha)
+{
+    sim_scene s = shear_scene(2.0, 1);
+    s.t_end = 2.0;
+    s.particles.n = 200;
+    s.particles.ensembles = 400;
+    s.particles.maxwellian.temperature = 1.0;
+    s.collisions.constant = 1.0 / (4.0 * M_PI);
+    s.collisions.restitution = alpha;
+    s.dt = 0.002;
+    return s;
+}
+
 /* Inelastic hard spheres (alpha = 0.9) sheared at a = 2 from T0 = 1 to t = 2:
  * the jump scheme (exact, the shear lazy), the time-step scheme accepting by
  * |g| (the shear lazy: each particle sheared when a stage draws it) and the
@@ -526,14 +541,7 @@ static double largest_z(const sim_ensemble_result *a, const sim_ensemble_result 
 static void test_lazy_shear_schemes_agree(void **state)
 {
     (void)state;
-    sim_scene s = shear_scene(2.0, 1);
-    s.t_end = 2.0;
-    s.particles.n = 200;
-    s.particles.ensembles = 400;
-    s.particles.maxwellian.temperature = 1.0;
-    s.collisions.constant = 1.0 / (4.0 * M_PI);
-    s.collisions.restitution = 0.9;
-    s.dt = 0.002;
+    sim_scene s = sheared_hard_spheres(0.9);
     sim_ensemble_result r[3];
     s.scheme = SIM_SCHEME_JUMP;
     run(&s, &r[0]);
@@ -628,15 +636,8 @@ static void test_lazy_drag_matches_eager(void **state)
 static void test_lazy_drag_schemes_agree(void **state)
 {
     (void)state;
-    sim_scene s = shear_scene(2.0, 1);
-    s.t_end = 2.0;
-    s.particles.n = 200;
-    s.particles.ensembles = 400;
-    s.particles.maxwellian.temperature = 1.0;
-    s.collisions.constant = 1.0 / (4.0 * M_PI);
+    sim_scene s = sheared_hard_spheres(0.7);
     s.collisions.model = SIM_MODEL_EHS;
-    s.collisions.restitution = 0.7;
-    s.dt = 0.002;
     sim_ensemble_result r[2], wrong;
     s.collisions.rule = SIM_RULE_RELATIVE_SPEED;
     run(&s, &r[0]);
