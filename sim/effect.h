@@ -101,6 +101,12 @@ typedef struct sim_effect_type {
      * collision changes them (select_fire_current_sums), and the engine
      * advances them with the flow between stages (engine.c, interval_lazy). */
     void (*advance_sums)(const sim_effect *e, sim_sums *s, double dt);
+    /* For such a flow with a global map whose rate reads the temperature (the
+     * sheared EHS drag): run->scale after dt more of the flow, from run->scale
+     * and run->sums now, with no collision in between (the exact map between
+     * the jump scheme's candidates: engine.c, run_jump_lazy_linear); NULL
+     * otherwise.  The scale must not grow (the engine thins by it). */
+    double (*scale_after)(const sim_effect *e, const sim_run *run, double dt);
 
     /* Event processes (NULL for flows). */
     size_t state_size;

@@ -497,8 +497,8 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
      * rule, which the batched stage draws without bringing particles) and
      * the background and the slab are absent (the heating constructor
      * refuses the other thermostats in the jump scheme).  The sheared EHS
-     * drag (time-step only) is both: the shear lazy, the drag a global map,
-     * with running sums at the stages' time (current_sums). */
+     * drag is both: the shear lazy, the drag a global map, with running sums
+     * at the stages' or candidates' time (current_sums). */
     const int hard_contact = scene->collisions.present && scene->collisions.exponent == 1.0
                              && scene->collisions.rule == SIM_RULE_CONTACT;
     if (status == SIM_OK && e->nflows == 1 && (scene->heating.present || scene->shear.present)
@@ -507,7 +507,8 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         e->lazy_flow = type->advance != NULL && (!timestep || !hard_contact);
         e->linear = type->linear_factor != NULL && e->nevents == 1 && scene->collisions.present
                     && (type->advance == NULL
-                        || (e->lazy_flow && timestep && type->advance_sums != NULL));
+                        || (e->lazy_flow && type->advance_sums != NULL
+                            && (timestep || type->scale_after != NULL)));
         e->current_sums = e->lazy_flow && e->linear;
         e->rate_exponent = scene->collisions.exponent;
         e->stage_sums = e->linear && type->linear_reads_sums;
@@ -1192,6 +1193,76 @@ static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs,
     }
 }
 
+/* The sheared EHS drag's flow over dt in the jump scheme (current_sums): the
+ * exact scale between collisions (effect.h, scale_after), then the sums
+ * sheared to the end. */
+static void lazy_linear_advance(const sim_engine *e, sim_workspace *ws, double dt)
+{
+    const sim_effect *f = &e->flows[0];
+    ws->run.scale = f->type->scale_after(f, &ws->run, dt);
+    f->type->advance_sums(f, &ws->run.sums, dt);
+}
+
+/* The exact jump scheme with a lazy flow that also carries a global linear
+ * map read from the temperature (current_sums: paper E's sheared EHS gas, the
+ * shear lazy and the drag as run->scale; effect_drag.c).  A candidate's rate
+ * at the true velocities is scale(t) times the stored velocities' majorant,
+ * and the scale only falls, so candidates are drawn at total x scale(now) and
+ * each is kept with probability scale(t)/scale(now) (thinning; restarted at
+ * every candidate, from which on the bound holds again).  Between candidates
+ * the scale follows its exact map and the running sums the shear; at an
+ * output time every particle is brought forward and the scale applied.  The
+ * sums are recomputed from the synchronised particles every rebound_every
+ * candidates too (their round-off). */
+static void run_jump_lazy_linear(const sim_engine *e, sim_workspace *ws, double *obs,
+                                 size_t *samples)
+{
+    const sim_scene *scene = &e->scene;
+    sim_run *run = &ws->run;
+    gsl_rng *rng = run->rng;
+    const double interval = sim_scene_output_time(scene, 1);
+    double rates[MAX_EVENTS] = {0};
+    double t = 0.0;
+    double total = reset_events(e, ws, rates, t, interval);
+    uint64_t until_resum = e->rebound_every;
+    for (size_t m = 1; m < scene->outputs; m++) {
+        const double t_out = sim_scene_output_time(scene, m);
+        double t_span = t_out;
+        if (e->lazy_rebound)
+            total = lazy_reset(e, ws, rates, total * run->scale, t, t_out, &t_span);
+        for (;;) {
+            const double bound = run->scale;
+            const double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total * bound)
+                                              : INFINITY;
+            const double to = t_next < t_span ? t_next : t_span;
+            lazy_linear_advance(e, ws, to - t);
+            t = to;
+            if (t_next >= t_span) {
+                if (t_span >= t_out)
+                    break;
+                total = lazy_reset(e, ws, rates, total * run->scale, t, t_out, &t_span);
+                continue;
+            }
+            if (!(sim_rng_uniform(rng) * bound < run->scale)) {
+                run->counts.candidates++;   /* thinned: fictitious at the true rate */
+                continue;
+            }
+            total = rates[0] = e->fire[0](&e->events[0], run, ws->states, t);
+            if (--until_resum == 0) {
+                bring_all(run, t);
+                sim_sums_compute(&run->p, &run->sums);
+                until_resum = e->rebound_every;
+            }
+        }
+        t = t_out;
+        bring_all(run, t);
+        apply_linear(e, run);
+        observe_output(e, ws, m, t, obs, samples);
+        if (m + 1 < scene->outputs && !e->lazy_rebound)
+            total = reset_events(e, ws, rates, t, interval);
+    }
+}
+
 void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs)
 {
     const sim_scene *scene = &e->scene;
@@ -1225,6 +1296,8 @@ void sim_engine_evolve(const sim_engine *e, sim_workspace *ws, double *obs, sim_
     memset(ws->credit, 0, sizeof ws->credit);
     if (scene->scheme == SIM_SCHEME_TIMESTEP)
         run_timestep(e, ws, obs, &ws->samples);
+    else if (e->current_sums)
+        run_jump_lazy_linear(e, ws, obs, &ws->samples);
     else if (e->linear)
         run_jump_linear(e, ws, obs, &ws->samples);
     else if (e->lazy_flow)

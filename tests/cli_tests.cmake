@@ -288,7 +288,7 @@ gdsmc_add_cli_exact(cli_x_run_heat_flux 2
                     run ${S}/grw-ex3.ini --set heat-flux.strength=0.025
                     --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_run_ehs 2
-                    "gdsmc run: verify/scenes/grw-ex3.ini: --set collisions.model: ehs (its drag depends on the temperature) needs scheme = timestep"
+                    "gdsmc run: verify/scenes/grw-ex3.ini: --set collisions.model: ehs (its drag depends on the temperature) needs scheme = timestep, or [shear] alone beside it"
                     run ${S}/grw-ex3.ini --set collisions.model=ehs)
 gdsmc_add_cli_exact(cli_x_run_heat_flux_heating 2
                     "gdsmc run: verify/scenes/ms-gaussian.ini:50: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"

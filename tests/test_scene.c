@@ -896,8 +896,12 @@ ENGINE_TRAP(engine_shear_heated,
             "[background])")
 ENGINE_TRAP(engine_shear_ehs,
             "[collisions]\nrestitution = 0.5\nmodel = ehs\n[shear]\nrate = 1.5\n",
-            "t.ini:3: collisions.model: ehs (its drag depends on the temperature) needs scheme = "
-            "timestep")
+            "t.ini:3: collisions.model: ehs is a model of hard spheres (kernel = hard-spheres)")
+ENGINE_TRAP(engine_shear_ehs_heated,
+            "[collisions]\nkernel = hard-spheres\nrestitution = 0.5\nmodel = ehs\n[shear]\n"
+            "rate = 1.5\n[heating]\ntype = white-noise\nstrength = 1\n",
+            "t.ini:4: collisions.model: ehs (its drag depends on the temperature) needs scheme = "
+            "timestep, or [shear] alone beside it")
 ENGINE_TRAP(engine_lees_edwards, "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
             "t.ini:3: shear.boundary: lees-edwards needs scheme = timestep (the jump scheme "
             "keeps no positions)")
@@ -920,7 +924,7 @@ ENGINE_TRAP(engine_heat_flux_moving,
             "start from a Maxwellian at rest with zero_momentum = true")
 ENGINE_TRAP(engine_ehs, "[collisions]\nkernel = hard-spheres\nmodel = ehs\nrestitution = 0.5\n",
             "t.ini:3: collisions.model: ehs (its drag depends on the temperature) needs scheme "
-            "= timestep")
+            "= timestep, or [shear] alone beside it")
 #define JUMP_HEATING "(the jump scheme supports white-noise and gaussian)"
 /* the jump scheme keeps the Gaussian thermostat global with binary collisions
  * alone (a background's rate does not scale with the map) */
@@ -1203,6 +1207,7 @@ int main(void)
         cmocka_unit_test(engine_background_timestep),
         cmocka_unit_test(engine_two_species),
         cmocka_unit_test(engine_shear_heated), cmocka_unit_test(engine_shear_ehs),
+        cmocka_unit_test(engine_shear_ehs_heated),
         cmocka_unit_test(engine_lees_edwards),
         cmocka_unit_test(engine_lees_edwards_maxwell),
         cmocka_unit_test(engine_heat_flux),
