@@ -54,7 +54,8 @@
  * costs O(1) plus its collisions; a Gaussian thermostat alone is a linear
  * map kept global (stages_scaled, apply_linear), which the jump scheme also
  * runs, exactly (run_jump_linear); paper E's sheared EHS gas is both, the
- * shear lazy and the drag a global map (current_sums, lazy_linear_flow).
+ * shear lazy and the drag a global map (current_sums, lazy_linear_flow), in
+ * the jump scheme too (run_jump_lazy_linear).
  *
  * The Lees-Edwards slab (shear.boundary = lees-edwards, slab.h) is the
  * time-step scheme with positions: its own ordered stages per step (streaming
