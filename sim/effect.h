@@ -93,9 +93,9 @@ typedef struct sim_effect_type {
      * collisions (keep_temperature).  The jump scheme then runs candidates at
      * the rate that grows as e^{lambda rate t} (engine.c, run_jump_linear). */
     double (*linear_rate)(const sim_effect *e);
-    /* For a lazy flow that is deterministic and linear (the homogeneous shear,
-     * also beside the EHS drag as a linear map): the sums of velocities the
-     * flow maps over dt, mapped in O(1); NULL otherwise.  With it the engine
+    /* For a lazy flow that is deterministic and linear and also carries a
+     * global map (the homogeneous shear beside the EHS drag): the sums of
+     * velocities the flow maps over dt, mapped in O(1); NULL otherwise.  With it the engine
      * keeps run->sums of the velocities at the current time rather than of the
      * stored ones: bringing a particle forward leaves them as they are, a
      * collision changes them (select_fire_current_sums), and the engine
@@ -136,7 +136,7 @@ typedef struct sim_effect_type {
      * that has advance_sums, for an engine that keeps run->sums at the
      * candidates' time t: the fire function brings the particles it draws to t
      * and keeps the sums current for every velocity it changes. */
-    sim_event_fire_fn (*select_fire_current_sums)(const sim_effect *e, int bounded);
+    sim_event_fire_fn (*select_fire_current_sums)(const sim_effect *e);
     /* The time-step scheme's stage of length h for this process (NULL, or
      * NULL returned: the engine's stage, which fires the process's candidates
      * at its majorant rate for the stage time); with sums, the stage also keeps
@@ -167,5 +167,16 @@ sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_effect *effect, sim_e
 /* The homogeneous shear and the EHS drag as one flow (effect_drag.c). */
 sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_effect *effect,
                                        sim_error *err);
+
+/* The homogeneous shear over a time dt with ah = a dt (effect_shear.c; the
+ * sheared EHS drag shares it): a velocity, V_x <- V_x - ah V_y, and the running
+ * sums of velocities it maps; and a flow's reach of 0 (the shear's whole reach
+ * is its reach_vy). */
+static inline void sim_shear_velocity(double v[3], double ah)
+{
+    v[0] -= ah * v[1];
+}
+void sim_shear_sums(sim_sums *s, double ah);
+double sim_reach_none(const sim_effect *e, double dt);
 
 #endif

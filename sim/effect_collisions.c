@@ -373,9 +373,8 @@ static sim_event_fire_fn collisions_select_fire_sums(const sim_effect *e, int la
 
 /* Sums at the candidates' time under a deterministic lazy flow (effect.h):
  * hard spheres only (paper E's sheared EHS gas), NULL otherwise. */
-static sim_event_fire_fn collisions_select_fire_current_sums(const sim_effect *e, int bounded)
+static sim_event_fire_fn collisions_select_fire_current_sums(const sim_effect *e)
 {
-    (void)bounded;   /* hard spheres always use the bound */
     const collisions_params *p = e->params;
     return p->lambda == 1.0 ? fire_hard_spheres_flow_current_sums : NULL;
 }

@@ -73,18 +73,17 @@ static const sim_effect_type drag_type = {
  *    candidates (scale_after).
  *
  * Either way T comes from running sums of v and v v^T of the velocities at
- * the step's time: the shear maps them by V_x <- V_x - a h V_y (shear_sums)
+ * the step's time: the shear maps them by V_x <- V_x - a h V_y (sim_shear_sums)
  * and the drag by V <- u + f (V - u), each in O(1), and the collisions keep
  * them.  The engine recomputes them from the particles at every output time,
  * so their round-off stays that of a few steps. */
 
-/* The sums mapped by the shear V_x <- V_x - ah V_y (vv = xx, yy, zz, xy, xz, yz). */
-static void shear_sums(sim_sums *s, double ah)
+/* <|v - u|^2> = 3 T/m of the n velocities whose sums are s, u their mean. */
+static double sums_spread(const sim_sums *s, size_t n)
 {
-    s->v[0] -= ah * s->v[1];
-    s->vv[0] += ah * (ah * s->vv[1] - 2.0 * s->vv[3]);
-    s->vv[3] -= ah * s->vv[1];
-    s->vv[4] -= ah * s->vv[5];
+    const double dn = (double)n;
+    const double u[3] = {s->v[0] / dn, s->v[1] / dn, s->v[2] / dn};
+    return (s->vv[0] + s->vv[1] + s->vv[2]) / dn - (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
 }
 
 /* The drag's factor e^{-zeta0 h/2} over a step of h for the velocities
@@ -93,11 +92,7 @@ static void shear_sums(sim_sums *s, double ah)
 static double drag_factor(const drag_params *p, const sim_sums *s, size_t n, double scale,
                           double h)
 {
-    const double dn = (double)n;
-    const double u[3] = {s->v[0] / dn, s->v[1] / dn, s->v[2] / dn};
-    const double theta = scale * scale
-                         * ((s->vv[0] + s->vv[1] + s->vv[2]) / dn
-                            - (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])) / 3.0;
+    const double theta = scale * scale * sums_spread(s, n) / 3.0;
     return theta > 0.0 ? exp(-0.5 * p->zeta_factor * sqrt(theta) * h) : 1.0;
 }
 
@@ -107,7 +102,7 @@ static void sheared_drag_step(const sim_effect *e, sim_run *run, double h)
     sim_sums *s = &run->sums;
     const size_t n = run->p.n;
     const double ah = p->shear_rate * h, dn = (double)n;
-    shear_sums(s, ah);
+    sim_shear_sums(s, ah);
     const double u[3] = {s->v[0] / dn, s->v[1] / dn, s->v[2] / dn};
     const double f = drag_factor(p, s, n, 1.0, h);
     /* the bound followed on local copies (the stores to v cannot move them) */
@@ -144,14 +139,7 @@ static void sheared_drag_advance(const sim_effect *e, double v[3], double dt, gs
 {
     (void)rng;
     const drag_params *p = e->params;
-    v[0] -= p->shear_rate * dt * v[1];
-}
-
-static double sheared_drag_reach(const sim_effect *e, double dt)
-{
-    (void)e;
-    (void)dt;
-    return 0.0;
+    sim_shear_velocity(v, p->shear_rate * dt);
 }
 
 static double sheared_drag_reach_vy(const sim_effect *e, double dt)
@@ -163,7 +151,7 @@ static double sheared_drag_reach_vy(const sim_effect *e, double dt)
 static void sheared_drag_advance_sums(const sim_effect *e, sim_sums *s, double dt)
 {
     const drag_params *p = e->params;
-    shear_sums(s, p->shear_rate * dt);
+    sim_shear_sums(s, p->shear_rate * dt);
 }
 
 static double sheared_drag_factor(const sim_effect *e, const sim_run *run, double h)
@@ -176,7 +164,7 @@ static double sheared_drag_factor(const sim_effect *e, const sim_run *run, doubl
  * T/m = scale^2 theta_W and d scale/dt = -(zeta_factor/2) scale^2 sqrt(theta_W),
  * that is d(1/scale)/dt = (zeta_factor/2) sqrt(theta_W(t)).  Between
  * collisions the shear makes theta_W(x) = c0 + c1 x + c2 x^2 after x
- * (V_x <- V_x - a x V_y in the sums, shear_sums), so
+ * (V_x <- V_x - a x V_y in the sums, sim_shear_sums), so
  *   1/scale(dt) = 1/scale + (zeta_factor/2) ∫_0^dt sqrt(theta_W(x)) dx,
  * the integral by 3-point Gauss-Legendre on panels over which theta_W varies
  * by at most 1% (relative error below 1e-12; one panel between the
@@ -188,9 +176,8 @@ static double sheared_drag_scale_after(const sim_effect *e, const sim_run *run, 
     const drag_params *p = e->params;
     const sim_sums *s = &run->sums;
     const double dn = (double)run->p.n, a = p->shear_rate;
-    const double u[3] = {s->v[0] / dn, s->v[1] / dn, s->v[2] / dn};
-    const double c0 = ((s->vv[0] + s->vv[1] + s->vv[2]) / dn
-                       - (u[0] * u[0] + u[1] * u[1] + u[2] * u[2])) / 3.0;
+    const double u[2] = {s->v[0] / dn, s->v[1] / dn};
+    const double c0 = sums_spread(s, run->p.n) / 3.0;
     const double c1 = -2.0 * a * (s->vv[3] / dn - u[0] * u[1]) / 3.0;
     const double c2 = a * a * (s->vv[1] / dn - u[1] * u[1]) / 3.0;
     if (!(c0 > 0.0) || !(dt > 0.0))
@@ -218,7 +205,7 @@ static const sim_effect_type sheared_drag_type = {
     .step = sheared_drag_step,
     .step_reads_sums = 1,
     .advance = sheared_drag_advance,
-    .reach = sheared_drag_reach,
+    .reach = sim_reach_none,
     .reach_vy = sheared_drag_reach_vy,
     .advance_sums = sheared_drag_advance_sums,
     .linear_factor = sheared_drag_factor,

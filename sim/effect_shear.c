@@ -33,7 +33,16 @@ static void shear_advance(const sim_effect *e, double v[3], double dt, gsl_rng *
 {
     (void)rng;
     const shear_params *p = e->params;
-    v[0] -= p->rate * dt * v[1];
+    sim_shear_velocity(v, p->rate * dt);
+}
+
+/* vv = xx, yy, zz, xy, xz, yz */
+void sim_shear_sums(sim_sums *s, double ah)
+{
+    s->v[0] -= ah * s->v[1];
+    s->vv[0] += ah * (ah * s->vv[1] - 2.0 * s->vv[3]);
+    s->vv[3] -= ah * s->vv[1];
+    s->vv[4] -= ah * s->vv[5];
 }
 
 static void shear_step(const sim_effect *e, sim_run *run, double h)
@@ -43,12 +52,12 @@ static void shear_step(const sim_effect *e, sim_run *run, double h)
     const size_t n = run->p.n;
     for (size_t i = 0; i < n; i++) {
         double *v = run->p.v[i];
-        v[0] -= ah * v[1];
+        sim_shear_velocity(v, ah);
         sim_run_cover(run, v);
     }
 }
 
-static double shear_reach(const sim_effect *e, double dt)
+double sim_reach_none(const sim_effect *e, double dt)
 {
     (void)e;
     (void)dt;
@@ -65,7 +74,7 @@ static const sim_effect_type shear_type = {
     .name = "shear",
     .advance = shear_advance,
     .step = shear_step,
-    .reach = shear_reach,
+    .reach = sim_reach_none,
     .reach_vy = shear_reach_vy,
 };
 

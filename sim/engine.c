@@ -588,7 +588,7 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         const sim_effect *ev = &e->events[k];
         if (e->current_sums)
             e->fire[k] = ev->type->select_fire_current_sums
-                             ? ev->type->select_fire_current_sums(ev, e->bounded) : NULL;
+                             ? ev->type->select_fire_current_sums(ev) : NULL;
         else
             e->fire[k] = ev->type->select_fire_sums
                              ? ev->type->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
