@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "checks.h"
+#include "verdicts.h"
 
 static void test_relative(void **state)
 {
@@ -127,6 +128,47 @@ static void test_skip_is_not_failure(void **state)
     vfy_report_free(&r);
 }
 
+/* A paper comparison with a declared known difference (r.differs): its
+ * FAIL is a DIFFERS, counted apart and never a failure; its PASS stays a
+ * PASS, and the checks after it fail again.  docs/verdicts.md. */
+static void test_differs_is_not_failure(void **state)
+{
+    (void)state;
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    r.differs = "E: EHS and IHS agree in -Pxy/nT";
+    assert_int_equal(vfy_check_relative(&r, "ehs", 0.96, 1.0, 0.03), VFY_DIFFERS);
+    assert_int_equal(vfy_check_relative(&r, "ehs near", 0.98, 1.0, 0.03), VFY_PASS);
+    r.differs = NULL;
+    assert_int_equal(vfy_check_relative(&r, "ehs judged", 0.96, 1.0, 0.03), VFY_FAIL);
+    assert_int_equal(r.failed, 1);
+    assert_int_equal(r.counts[VFY_DIFFERS], 1);
+    assert_int_equal(r.counts[VFY_PASS], 1);
+    assert_int_equal(r.counts[VFY_FAIL], 1);
+    assert_string_equal(r.checks[0].detail, "0.96 vs 1 (-4.0%, allowed ±3%); known difference: "
+                                            "E: EHS and IHS agree in -Pxy/nT");
+    assert_string_equal(vfy_verdict_word(r.checks[0].verdict), "DIFFERS");
+    /* what was judged, for the verdicts file */
+    assert_true(r.checks[0].value == 0.96 && r.checks[0].reference == 1.0);
+    assert_string_equal(r.checks[0].allowed, "±3%");
+    vfy_report_free(&r);
+}
+
+/* The verdicts file's CSV fields read back as written: quotes and commas. */
+static void test_csv_split(void **state)
+{
+    (void)state;
+    char line[] = "{case} n={n} CF,\"a, b\",PASS,1.5,,\"[3.2, 5]\",\"say \"\"hi\"\"\",x\n";
+    char *f[8];
+    assert_int_equal(vfy_csv_split(line, f, 8), 8);
+    assert_string_equal(f[0], "{case} n={n} CF");
+    assert_string_equal(f[1], "a, b");
+    assert_string_equal(f[4], "");
+    assert_string_equal(f[5], "[3.2, 5]");
+    assert_string_equal(f[6], "say \"hi\"");
+    assert_string_equal(f[7], "x");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -136,6 +178,8 @@ int main(void)
         cmocka_unit_test(test_zscore),
         cmocka_unit_test(test_skip_is_not_failure),
         cmocka_unit_test(test_missing_is_skip),
+        cmocka_unit_test(test_differs_is_not_failure),
+        cmocka_unit_test(test_csv_split),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,6 +12,7 @@
 #include "scene_refs.h"
 #include "solver.h"
 #include "table.h"
+#include "verdicts.h"
 
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
 extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4, vfy_grw_ex5, vfy_grw_ex6, vfy_grw_ex7,
@@ -219,7 +220,10 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
         if (status != SIM_OK)
             return status;
     }
-    return SIM_OK;
+    char title[1200];
+    snprintf(title, sizeof title, "%s (%s sizes)", o->out_dir,
+             o->size == VFY_QUICK ? "quick" : "paper");
+    return vfy_write_index(o, title, msg, msglen);
 }
 
 /* The solver's scene failed where the user's (the same --set) did not, so a

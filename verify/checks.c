@@ -20,36 +20,59 @@ void vfy_report_free(vfy_report *r)
     memset(r, 0, sizeof *r);
 }
 
-static const char *verdict_word(vfy_verdict v)
+const char *vfy_verdict_word(vfy_verdict v)
 {
-    return v == VFY_PASS ? "PASS" : v == VFY_FAIL ? "FAIL" : "SKIP";
+    static const char *const words[VFY_VERDICTS] = {"FAIL", "PASS", "SKIP", "DIFFERS"};
+    return (unsigned)v < VFY_VERDICTS ? words[v] : "?";
 }
 
-/* The one place a verdict is recorded. */
-__attribute__((format(printf, 4, 5)))
-static vfy_verdict record(vfy_report *r, vfy_verdict v, const char *name, const char *fmt, ...)
+/* What a check judged: value against reference within allowed (a bound
+ * printed with %g, or the text `range` when it is not NULL). */
+typedef struct judged {
+    double value, reference, allowed;
+    const char *range;
+} judged;
+#define NOT_JUDGED ((judged){NAN, NAN, NAN, ""})
+
+/* The one place a verdict is recorded: a FAIL under r->differs becomes
+ * DIFFERS, with the declared reason after the detail. */
+__attribute__((format(printf, 5, 6)))
+static vfy_verdict record(vfy_report *r, vfy_verdict v, judged j, const char *name,
+                          const char *fmt, ...)
 {
+    if (v == VFY_FAIL && r->differs != NULL)
+        v = VFY_DIFFERS;
+    r->failed += v == VFY_FAIL;
+    r->counts[v]++;
     if (r->count == r->capacity) {
         size_t cap = r->capacity ? 2 * r->capacity : 32;
         vfy_check *grown = realloc(r->checks, cap * sizeof *grown);
-        if (grown == NULL) {   /* keep counting failures even without memory for text */
-            r->failed += v == VFY_FAIL;
+        if (grown == NULL)   /* keep counting even without memory for text */
             return v;
-        }
         r->checks = grown;
         r->capacity = cap;
     }
     vfy_check *c = &r->checks[r->count++];
     c->verdict = v;
     snprintf(c->group, sizeof c->group, "%s", r->group ? r->group : "gdsmc");
+    snprintf(c->id, sizeof c->id, "%s", r->check_id ? r->check_id : "");
+    snprintf(c->row, sizeof c->row, "%s", r->row ? r->row : "");
     snprintf(c->name, sizeof c->name, "%s", name);
+    c->value = j.value;
+    c->reference = j.reference;
+    if (j.range != NULL)
+        snprintf(c->allowed, sizeof c->allowed, "%s", j.range);
+    else
+        snprintf(c->allowed, sizeof c->allowed, "%g", j.allowed);
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(c->detail, sizeof c->detail, fmt, ap);
+    int len = vsnprintf(c->detail, sizeof c->detail, fmt, ap);
     va_end(ap);
-    r->failed += v == VFY_FAIL;
+    if (v == VFY_DIFFERS && len >= 0 && (size_t)len < sizeof c->detail)
+        snprintf(c->detail + len, sizeof c->detail - (size_t)len, "; known difference: %s",
+                 r->differs);
     if (r->echo) {
-        fprintf(r->echo, "%s  %s: %s\n", verdict_word(v), c->name, c->detail);
+        fprintf(r->echo, "%s  %s: %s\n", vfy_verdict_word(v), c->name, c->detail);
         fflush(r->echo);
     }
     return v;
@@ -70,15 +93,21 @@ vfy_verdict vfy_check_relative(vfy_report *r, const char *name, double value, do
     SKIP_IF_MISSING(r, name, value);
     double dev = value / expected - 1.0;
     vfy_verdict v = isfinite(dev) && fabs(dev) <= rtol ? VFY_PASS : VFY_FAIL;
-    return record(r, v, name, "%.4g vs %.4g (%+.1f%%, allowed ±%.0f%%)", value, expected,
-                  100.0 * dev, 100.0 * rtol);
+    char band[48];
+    snprintf(band, sizeof band, "±%g%%", 100.0 * rtol);
+    return record(r, v, (judged){value, expected, rtol, band}, name,
+                  "%.4g vs %.4g (%+.1f%%, allowed ±%.0f%%)", value, expected, 100.0 * dev,
+                  100.0 * rtol);
 }
 
 vfy_verdict vfy_check_range(vfy_report *r, const char *name, double value, double lo, double hi)
 {
     SKIP_IF_MISSING(r, name, value);
     vfy_verdict v = value >= lo && value <= hi ? VFY_PASS : VFY_FAIL;
-    return record(r, v, name, "%.4g (allowed [%g, %g])", value, lo, hi);
+    char range[48];
+    snprintf(range, sizeof range, "[%g, %g]", lo, hi);
+    return record(r, v, (judged){value, NAN, NAN, range}, name, "%.4g (allowed %s)", value,
+                  range);
 }
 
 vfy_verdict vfy_check_absolute(vfy_report *r, const char *name, double value, double expected,
@@ -86,7 +115,8 @@ vfy_verdict vfy_check_absolute(vfy_report *r, const char *name, double value, do
 {
     SKIP_IF_MISSING(r, name, value - expected);
     vfy_verdict v = fabs(value - expected) <= atol ? VFY_PASS : VFY_FAIL;
-    return record(r, v, name, "%.6g vs %.6g (|diff| %.2g, allowed %.2g)", value, expected,
+    return record(r, v, (judged){value, expected, atol, NULL}, name,
+                  "%.6g vs %.6g (|diff| %.2g, allowed %.2g)", value, expected,
                   fabs(value - expected), atol);
 }
 
@@ -115,11 +145,13 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
     if (max_z)
         *max_z = exact_mismatch ? INFINITY : worst;
     if (exact_mismatch)
-        return record(r, VFY_FAIL, name, "point %zu: %.10g differs from exact %.10g with no "
-                      "statistical error", at, mean[at], exact[at]);
+        return record(r, VFY_FAIL, (judged){INFINITY, 0.0, zmax, NULL}, name,
+                      "point %zu: %.10g differs from exact %.10g with no statistical error", at,
+                      mean[at], exact[at]);
     vfy_verdict v = worst <= zmax ? VFY_PASS : VFY_FAIL;
-    return record(r, v, name, "max |z| = %.2f at point %zu (allowed %.1f; mean %.6g, exact %.6g)",
-                  worst, at, zmax, count ? mean[at] : 0.0, count ? exact[at] : 0.0);
+    return record(r, v, (judged){worst, 0.0, zmax, NULL}, name,
+                  "max |z| = %.2f at point %zu (allowed %.1f; mean %.6g, exact %.6g)", worst, at,
+                  zmax, count ? mean[at] : 0.0, count ? exact[at] : 0.0);
 }
 
 vfy_verdict vfy_check_printed(vfy_report *r, const char *name, double value, double ci,
@@ -128,14 +160,16 @@ vfy_verdict vfy_check_printed(vfy_report *r, const char *name, double value, dou
     SKIP_IF_MISSING(r, name, value);
     double rounding = 0.5 * pow(10.0, -digits), dev = fabs(value - printed);
     vfy_verdict v = dev <= rounding + ci ? VFY_PASS : VFY_FAIL;
-    return record(r, v, name, "%.6g vs %.*f printed (|diff| %.2g, allowed %.2g: rounding %.2g "
-                  "+ ci %.2g)", value, digits, printed, dev, rounding + ci, rounding, ci);
+    return record(r, v, (judged){value, printed, rounding + ci, NULL}, name,
+                  "%.6g vs %.*f printed (|diff| %.2g, allowed %.2g: rounding %.2g + ci %.2g)",
+                  value, digits, printed, dev, rounding + ci, rounding, ci);
 }
 
 vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uint64_t expected)
 {
     vfy_verdict v = value == expected ? VFY_PASS : VFY_FAIL;
-    return record(r, v, name, "%llu (expected %llu)", (unsigned long long)value,
+    return record(r, v, (judged){(double)value, (double)expected, 0.0, NULL}, name,
+                  "%llu (expected %llu)", (unsigned long long)value,
                   (unsigned long long)expected);
 }
 
@@ -143,7 +177,7 @@ vfy_verdict vfy_check_zero(vfy_report *r, const char *name, double count)
 {
     SKIP_IF_MISSING(r, name, count);
     if (!(count >= 0.0))
-        return record(r, VFY_FAIL, name, "%g (expected 0)", count);
+        return record(r, VFY_FAIL, (judged){count, 0.0, 0.0, NULL}, name, "%g (expected 0)", count);
     return vfy_check_count(r, name, (uint64_t)count, 0);
 }
 
@@ -154,12 +188,12 @@ vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *
     va_start(ap, fmt);
     vsnprintf(detail, sizeof detail, fmt, ap);
     va_end(ap);
-    return record(r, ok ? VFY_PASS : VFY_FAIL, name, "%s", detail);
+    return record(r, ok ? VFY_PASS : VFY_FAIL, NOT_JUDGED, name, "%s", detail);
 }
 
 void vfy_skip(vfy_report *r, const char *name, const char *reason)
 {
-    record(r, VFY_SKIP, name, "%s", reason);
+    record(r, VFY_SKIP, NOT_JUDGED, name, "%s", reason);
 }
 
 /* text with XML's five special characters escaped, and control characters
@@ -178,26 +212,28 @@ static void xml_text(FILE *f, const char *text)
     }
 }
 
-/* The counts of group g's checks (all groups when g is NULL). */
-static void group_counts(const vfy_report *r, const char *g, size_t count[3])
+/* The counts of group g's checks by verdict (all groups when g is NULL). */
+static void group_counts(const vfy_report *r, const char *g, size_t count[VFY_VERDICTS])
 {
-    count[0] = count[1] = count[2] = 0;
+    memset(count, 0, VFY_VERDICTS * sizeof *count);
     for (size_t i = 0; i < r->count; i++)
         if (g == NULL || strcmp(r->checks[i].group, g) == 0)
             count[r->checks[i].verdict]++;
 }
 
+/* A DIFFERS is not judged against the solver: JUnit's <skipped>, its
+ * message starting "DIFFERS: ". */
 int vfy_report_write_junit(const vfy_report *r, const char *path, double seconds)
 {
     char tmp[1100];
     FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
     if (f == NULL)
         return -1;
-    size_t all[3];
+    size_t all[VFY_VERDICTS];
     group_counts(r, NULL, all);
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"gdsmc verify\" "
                "tests=\"%zu\" failures=\"%zu\" skipped=\"%zu\" time=\"%.3f\">\n",
-            r->count, all[VFY_FAIL], all[VFY_SKIP], seconds);
+            r->count, all[VFY_FAIL], all[VFY_SKIP] + all[VFY_DIFFERS], seconds);
     for (size_t i = 0; i < r->count; i++) {
         const char *g = r->checks[i].group;
         size_t first = 0;   /* a group's suite opens at its first check */
@@ -205,12 +241,12 @@ int vfy_report_write_junit(const vfy_report *r, const char *path, double seconds
             first++;
         if (first != i)
             continue;
-        size_t n[3];
+        size_t n[VFY_VERDICTS];
         group_counts(r, g, n);
         fputs("  <testsuite name=\"", f);
         xml_text(f, g);
-        fprintf(f, "\" tests=\"%zu\" failures=\"%zu\" skipped=\"%zu\">\n", n[0] + n[1] + n[2],
-                n[VFY_FAIL], n[VFY_SKIP]);
+        fprintf(f, "\" tests=\"%zu\" failures=\"%zu\" skipped=\"%zu\">\n",
+                n[0] + n[1] + n[2] + n[3], n[VFY_FAIL], n[VFY_SKIP] + n[VFY_DIFFERS]);
         for (size_t k = i; k < r->count; k++) {
             const vfy_check *c = &r->checks[k];
             if (strcmp(c->group, g) != 0)
@@ -219,9 +255,9 @@ int vfy_report_write_junit(const vfy_report *r, const char *path, double seconds
             xml_text(f, g);
             fputs("\" name=\"", f);
             xml_text(f, c->name);
-            static const char *const open[] = {"\">\n      <failure message=\"",
-                                               "\">\n      <system-out>",
-                                               "\">\n      <skipped message=\""};
+            static const char *const open[VFY_VERDICTS] = {
+                "\">\n      <failure message=\"", "\">\n      <system-out>",
+                "\">\n      <skipped message=\"", "\">\n      <skipped message=\"DIFFERS: "};
             fputs(open[c->verdict], f);
             xml_text(f, c->detail);
             fputs(c->verdict == VFY_PASS ? "</system-out>\n" : "\"/>\n", f);

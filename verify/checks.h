@@ -1,9 +1,18 @@
 /* Verification checks and their verdicts (SPEC §9).
  *
- * Each check records one line, "PASS|FAIL|SKIP  name: detail", in a report;
- * a report with any FAIL makes `gdsmc verify` exit 1.  Every kind of check
- * here has a test in tests/test_checks.c that hands it a wrong answer and sees
- * it fail.
+ * Each check records one line, "PASS|FAIL|SKIP|DIFFERS  name: detail", in a
+ * report; a report with any FAIL makes `gdsmc verify` exit 1.  Every kind of
+ * check here has a test in tests/test_checks.c that hands it a wrong answer
+ * and sees it fail.
+ *
+ * The verdicts mean (docs/verdicts.md):
+ *   PASS     judged, and it held;
+ *   FAIL     judged, and it did not: the solver is wrong;
+ *   SKIP     not judged, with the reason;
+ *   DIFFERS  a comparison with a paper's printed number or sentence that
+ *            does not hold, where the case declares a known difference
+ *            (r->differs: the reason, and the independent check that judges
+ *            the solver instead).  Never a failure.
  */
 #ifndef GDSMC_VFY_CHECKS_H
 #define GDSMC_VFY_CHECKS_H
@@ -12,13 +21,28 @@
 #include <stdint.h>
 #include <stdio.h>
 
-typedef enum vfy_verdict { VFY_FAIL = 0, VFY_PASS = 1, VFY_SKIP = 2 } vfy_verdict;
+typedef enum vfy_verdict {
+    VFY_FAIL = 0,
+    VFY_PASS = 1,
+    VFY_SKIP = 2,
+    VFY_DIFFERS = 3,
+} vfy_verdict;
+#define VFY_VERDICTS 4
+
+/* The word a verdict prints as ("PASS", ...). */
+const char *vfy_verdict_word(vfy_verdict v);
 
 typedef struct vfy_check {
     vfy_verdict verdict;
     char group[32];   /* the report's group when it was made: the case */
+    char id[96];      /* the report's check id when it was made (the check's
+                         name before a row fills it in), or "" */
+    char row[96];     /* the report's row when it was made, or "" */
     char name[96];
     char detail[320];
+    double value, reference;   /* what was judged and against what (NaN where
+                                  a check has none: a range, a SKIP) */
+    char allowed[48];          /* the bound as text ("±35%", "[3.2, 5]", "4.5"), or "" */
 } vfy_check;
 
 typedef struct vfy_report {
@@ -29,6 +53,12 @@ typedef struct vfy_report {
     const char *group;  /* the case being judged (vfy_run sets it), or NULL */
     const char *missing;  /* if not NULL: a NaN value is a SKIP with this reason, not a FAIL
                              (data an external solver did not report; the driver sets it) */
+    const char *check_id; /* if not NULL: the id the next checks carry (the driver sets it) */
+    const char *row;      /* if not NULL: the row the next checks belong to */
+    const char *differs;  /* if not NULL: a FAIL is recorded as DIFFERS, this text after
+                             its detail (a paper comparison with a declared known
+                             difference; the driver sets it) */
+    size_t counts[VFY_VERDICTS];   /* the checks recorded, by verdict */
 } vfy_report;
 
 void vfy_report_init(vfy_report *r, FILE *echo);

@@ -13,6 +13,7 @@
 #include "solver.h"
 #include "scene_ini.h"
 #include "steady.h"
+#include "verdicts.h"
 
 /* ------------------------------------------------------------ values */
 
@@ -745,12 +746,17 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
     const char *const was = r->missing;
     if (incomplete)
         r->missing = "needs quantities the solver did not report";
+    char label[160] = "";
+    if (row != NULL)
+        vfy_expand(label, sizeof label, row_label_template(run->d), run, row);
+    r->row = label;
     for (const vfy_check_spec *c = checks; c && c->name; c++) {
         vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
         if (g == VFY_OMIT)
             continue;
-        char name[160], why[320];
+        char name[160], why[320], differs[400];
         vfy_expand(name, sizeof name, c->name, run, row);
+        r->check_id = c->name;
         if (c->builtin_only && vfy_external(run->o)) {
             snprintf(why, sizeof why, "built-in engine only: %s", c->builtin_only);
             vfy_skip(r, name, why);
@@ -773,12 +779,21 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
             vfy_skip(r, name, why);
             continue;
         }
-        if (g == VFY_GUARD_SKIP)
+        if (g == VFY_GUARD_SKIP) {
             vfy_skip(r, name, vfy_expand(why, sizeof why, c->guard.reason, run, row));
-        else
-            c->rule(r, name, run, row, c);
+            continue;
+        }
+        if (c->differs != NULL) {
+            snprintf(differs, sizeof differs, "%s; judged by \"%s\" (docs/differences.md)",
+                     c->differs->paper, c->differs->judged_by);
+            r->differs = differs;
+        }
+        c->rule(r, name, run, row, c);
+        r->differs = NULL;
     }
     r->missing = was;
+    r->check_id = NULL;
+    r->row = NULL;
 }
 
 int vfy_parse_columns(const char *spec, vfy_column **cols, size_t *ncols, char **text,
@@ -1189,6 +1204,15 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     if (status != SIM_OK)
         return status;
     run_checks(run, NULL, d->case_checks, r);
+    double cpu = 0.0;
+    for (size_t i = 0; i < run->nrows; i++) {
+        cpu += run->rows[i].res.cpu_seconds;
+        for (size_t k = 0; run->rows[i].more && k + 1 < vfy_variant_count(d); k++)
+            cpu += run->rows[i].more[k].cpu_seconds;
+    }
+    if ((status = vfy_write_verdicts(run->o, run->c->name, r, wall, cpu, msg, msglen))
+        != SIM_OK)
+        return status;
     const char *const *headers = run->table.cols;   /* the table again, with what the hook set */
     const size_t ncols = run->table.ncols;
     vfy_table_free(&run->table);

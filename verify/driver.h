@@ -133,6 +133,19 @@ struct vfy_guard {
     const char *reason;  /* template of the SKIP's reason */
 };
 
+/* A known difference from a paper (docs/differences.md): a paper
+ * comparison that fails because the paper is off, as an independent route
+ * in this project shows.  Its FAIL is recorded as DIFFERS (never exit 1),
+ * and the solver is judged by the check named `judged_by` instead, which
+ * must be a check of the same description (its name template) without a
+ * difference of its own (tests/test_verify_cases.c holds every description
+ * to this). */
+typedef struct vfy_difference {
+    const char *paper;      /* what the paper prints or says, and where */
+    const char *evidence;   /* what shows it off: the route, the run, the number */
+    const char *judged_by;  /* the check that judges the solver instead */
+} vfy_difference;
+
 /* A check: a rule (checks.h) applied to named values. */
 typedef struct vfy_check_spec vfy_check_spec;
 typedef vfy_verdict vfy_rule_func(vfy_report *r, const char *name, vfy_case_run *run,
@@ -154,6 +167,7 @@ struct vfy_check_spec {
     const char *builtin_only;  /* judged only for the built-in engine, and why: the check
                                   models its own arithmetic or random streams (an
                                   external solver's run is a SKIP saying so), or NULL */
+    const vfy_difference *differs;  /* a paper comparison's known difference, or NULL */
 };
 
 /* A table column: header, the value it prints (NULL: the header's name) and
