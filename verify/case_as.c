@@ -311,6 +311,7 @@ static const char *const values[] = {"a_star_bgk", "Pxy_reduced_bgk", "N1_bgk",
                                      "T_ratio_bgk", NULL};
 
 const vfy_case_desc vfy_as_steady = {
+    .must_fail = "shear.rate=1.05 collisions.restitution=0.97",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = paper_rows}, .quick_rows = {.rows = quick_rows, .sets = AS_QUICK_SETS},
     .values = values, .metrics = metrics, .checks = checks, .columns = columns,
@@ -880,6 +881,7 @@ static const char *const transient_needs[] = {"T_bgk", "Pxx_bgk", "Pyy_bgk", "Pz
                                               "Pxy_bgk", "s0_bgk", NULL};
 
 const vfy_case_desc vfy_as_transient = {
+    .must_fail = "shear.rate=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = transient_paper_rows},
     .quick_rows = {.rows = transient_quick_rows, .sets = AS_QUICK_SETS},
@@ -1305,6 +1307,7 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
 }
 
 const vfy_case_desc vfy_as_distribution = {
+    .must_fail = "shear.rate=1.1",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = distribution_paper_rows},
     .quick_rows = {.rows = distribution_quick_rows, .sets = AS_QUICK_SETS},
@@ -1675,6 +1678,7 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
               "({wall_s:%.1f} s)"
 
 const vfy_case_desc vfy_as_slab = {
+    .must_fail = "shear.rate=1.05",
     .scene = "as-slab", .label = ASL_LABEL, .row_progress = ASL_PROGRESS,
     .paper_rows = {.rows = slab_rows, .sets = "particles.ensembles=6"},
     .quick_rows = {.rows = slab_rows, .sets = ASL_QUICK_SETS},
@@ -1818,6 +1822,7 @@ static sim_status as_vs_after(vfy_case_run *run, vfy_report *r, char *msg, size_
 }
 
 const vfy_case_desc vfy_as_slab_vs_homogeneous = {
+    .must_fail = "shear.rate=1.05",
     .scene = "as", .label = "{case} {label}",
     .row_progress = "{case} {label}: T_s/T0 = {T_ratio:%.1f}, -Pxy/nT = {Pxy_reduced:%.4f} "
                     "({wall_s:%.1f} s)",

@@ -55,8 +55,8 @@ static const char grw_columns[] =
     "n:%.0f N:%.0f Emax:%.3e Emax_paper:%.3e CF:%.2f CF_paper:%.2f V_inf:%.3e "
     "V_inf_paper:%.3e Emax_T:%.3e noise:%.3e z_T_raw:%.2f z_T:%.2f "
     VFY_COST_COLUMNS;
-#define GRW_TABLE(LABEL, PAPER)                                                         \
-    {.paper = LABEL,                                                                  \
+#define GRW_TABLE(LABEL, PAPER, MUST_FAIL)                                                         \
+    {.must_fail = MUST_FAIL, .paper = LABEL,                                                                  \
      .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096 16384"}},   \
      .quick_rows = {.keys = {"particles.n"},                                          \
                     .values = {"64 256 1024"},                                        \
@@ -85,8 +85,10 @@ static const vfy_paper_column grw_table2[] = {
     VFY_PAPER_COLUMN("CF_paper", NAN, 3.87, 4.08, 3.90, 4.64),
     VFY_PAPER_COLUMN("V_inf_paper", 0.306e-02, 0.188e-02, 0.874e-02, 0.581e-02, 0.148e-02),
     {NULL, 0, NULL}};
-const vfy_case_desc vfy_grw_ex3 = GRW_TABLE("Table 1", grw_table1);
-const vfy_case_desc vfy_grw_ex4 = GRW_TABLE("Table 2", grw_table2);
+const vfy_case_desc vfy_grw_ex3 = GRW_TABLE("Table 1", grw_table1,
+                                                  "heating.strength=1.05 collisions.constant=1.05");
+const vfy_case_desc vfy_grw_ex4 = GRW_TABLE("Table 2", grw_table2,
+                                                  "heating.strength=1.05 collisions.constant=1.05");
 
 /* grw-ex5 (SPEC §3 Ex 5): heated hard spheres; no exact solution, so the
  * rows are extrapolated to n = infinity at every output time and compared
@@ -177,6 +179,7 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
 }
 
 const vfy_case_desc vfy_grw_ex5 = {
+    .must_fail = "heating.strength=1.05 collisions.restitution=0.95",
     .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096"}},
     .quick_rows = {.keys = {"particles.n"},
                    .values = {"64 256 1024"},
@@ -482,8 +485,8 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
     "1.25 and 1.5.\n\n"                                                                     \
     "Figures: {case}-histogram.png (paper A Fig. 6) and {case}-exponent.png (Figs. 7-9, in " \
     "the paper's absolute speed r = c v0). Total wall time {wall_total:%.1f} s."
-#define TAILS_CASE(EX, NEEDS, CHECKS)                                                     \
-    {.paper = EX, .needs = NEEDS, .needs_why = VFY_NEEDS_MAXWELL,                       \
+#define TAILS_CASE(EX, NEEDS, CHECKS, MUST_FAIL)                                                     \
+    {.must_fail = MUST_FAIL, .paper = EX, .needs = NEEDS, .needs_why = VFY_NEEDS_MAXWELL,                       \
      .paper_rows = {.keys = {"particles.n"}, .values = {"10000000"}},                   \
      .quick_rows = {.keys = {"particles.n"}, .values = {"25000"},                       \
                     .sets = "particles.ensembles=16"},                                  \
@@ -492,6 +495,7 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
      .title = "{case}: paper A " EX ", the steady tail exponent ({size} sizes)",        \
      .notes = TAILS_NOTES}
 static const char *const tails_maxwell_needs[] = {"T_finite_n", NULL};
-const vfy_case_desc vfy_grw_ex6 = TAILS_CASE("Ex 6", tails_maxwell_needs, tails_maxwell_checks);
-const vfy_case_desc vfy_grw_ex7 = TAILS_CASE("Ex 7", NULL, tails_checks);
-const vfy_case_desc vfy_grw_ex8 = TAILS_CASE("Ex 8", NULL, tails_checks);
+const vfy_case_desc vfy_grw_ex6 = TAILS_CASE("Ex 6", tails_maxwell_needs,
+                                             tails_maxwell_checks, "collisions.restitution=2");
+const vfy_case_desc vfy_grw_ex7 = TAILS_CASE("Ex 7", NULL, tails_checks, "collisions.restitution=2");
+const vfy_case_desc vfy_grw_ex8 = TAILS_CASE("Ex 8", NULL, tails_checks, "collisions.restitution=2");

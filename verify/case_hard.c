@@ -797,6 +797,7 @@ static const char tails_columns[] = WHITE_COLUMNS_HEAD
     "particles.n=4000;particles.ensembles=16;scene.outputs=61;steady.pairs=4000;"       \
     "scene.t_end=30;steady.from=10"
 const vfy_case_desc vfy_hard_dissipation = {
+    .must_fail = "heating.strength=1.05",
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
                    .values = {"0.05 0.1"}},
     .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
@@ -819,6 +820,7 @@ static sim_status tails_c_max(vfy_case_run *run, vfy_report *r, char *msg, size_
     return SIM_OK;
 }
 const vfy_case_desc vfy_hard_tails = {
+    .must_fail = "heating.strength=1.05",
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"}, .values = {"0.1"}},
     .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"}, .values = {"0.1"},
                    .sets = "particles.n=2000;particles.ensembles=16;steady.pairs=4000"},
@@ -880,6 +882,7 @@ static const char nongaussian_columns[] =
     "max_V:%.3g V_bound:%.3g violations:%.0f "
     VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_nongaussian = {
+    .must_fail = "collisions.restitution=0.9",
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
                    .values = {"0.05 0.1"}},
     .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
@@ -940,6 +943,7 @@ static const char tiny_columns[] =
     "violations=violations_hs:%.0f "
     VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_tiny = {
+    .must_fail = "collisions.constant=1.05",
     .paper_rows = {.rows = tiny_rows, .sets = "particles.ensembles=1000000;scene.outputs=41"},
     .quick_rows = {.rows = tiny_rows, .sets = "particles.ensembles=20000;scene.outputs=41"},
     .label = "{case} {gas} n={n}", .needs = all_references, .adjust = hard_require_unit_mass,
@@ -1055,6 +1059,7 @@ static const char long_run_columns[] =
     "V_bound:%.3g energy_bound:%.3g violations=violations_hs:%.0f "
     VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_long_run = {
+    .must_fail = "collisions.constant=1.05",
     .paper_rows = {.rows = long_run_rows, .sets = "$events=1e9"},
     .quick_rows = {.rows = long_run_rows, .sets = "$events=1e7"},
     .label = LONG_LABEL, .derive = long_run_times, .adjust = long_run_require,
@@ -1162,6 +1167,7 @@ static sim_status stiff_grid(vfy_case_run *run, vfy_report *r, char *msg, size_t
     return SIM_OK;
 }
 const vfy_case_desc vfy_hard_stiff = {
+    .must_fail = "background.constant=1.05",
     .paper_rows = {.rows = stiff_rows}, .quick_rows = {.rows = stiff_rows},
     .no_simulation = 1, .adjust = stiff_require, .checks = stiff_checks,
     .columns = stiff_columns, .after_rows = stiff_grid,
@@ -1245,6 +1251,7 @@ static const char extreme_columns[] =
     "violations=violations_hs:%.0f "
     VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_extreme = {
+    .must_fail = "heating.strength=1.05",
     .paper_rows = {.rows = extreme_paper}, .quick_rows = {.rows = extreme_quick},
     .label = EXTREME_LABEL, .needs = all_references, .derive = extreme_rate,
     .adjust = hard_require_unit_mass, .metrics = extreme_metrics, .checks = extreme_checks,

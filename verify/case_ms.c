@@ -228,6 +228,7 @@ static const char a2_columns[] =
                    .values = {QUICK_ALPHA}, .sets = MS_QUICK_SETS}
 
 const vfy_case_desc vfy_ms_white_noise = {
+    .must_fail = "collisions.restitution=0.95",
     MS_A2("ms-white-noise", "0.5"), .metrics = white_metrics, .checks = white_checks,
     .title = "{case}: paper C Figure 1, a2 against alpha, white noise (stochastic thermostat) "
              "({size} sizes)",
@@ -236,6 +237,7 @@ const vfy_case_desc vfy_ms_white_noise = {
                           "white noise (stochastic thermostat) (paper C Figure 1)")}};
 
 const vfy_case_desc vfy_ms_gaussian = {
+    .must_fail = "collisions.restitution=0.95",
     MS_A2("ms-gaussian", "0.2"), .metrics = gaussian_metrics, .checks = gaussian_checks,
     .title = "{case}: paper C Figure 4, a2 against alpha, Gaussian thermostat (HCS in scaled "
              "variables) ({size} sizes)",
@@ -248,6 +250,7 @@ const vfy_case_desc vfy_ms_gaussian = {
                  .xlabel = "alpha", .ylabel = "a3"}}};
 
 const vfy_case_desc vfy_ms_non_gaussian = {
+    .must_fail = "collisions.restitution=0.95",
     MS_A2("ms-non-gaussian", "0.5"), .metrics = ng_metrics, .checks = ng_checks,
     .title = "{case}: paper C Figure 8, a2 against alpha, non-Gaussian thermostat ({size} "
              "sizes)",
@@ -323,6 +326,7 @@ static const char table1_columns[] =
     "a2:%.5f a2_ci:%.5f cpu_s:%.2f wall_s:%.2f";
 
 const vfy_case_desc vfy_ms_table1 = {
+    .must_fail = "collisions.restitution=0.95",
     .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength,
     .adjust = ms_require, .after_rows = ms_sizes, .values = table1_values,
     .paper_rows = {.rows = table1_paper_rows},
@@ -528,6 +532,7 @@ static const char tails_columns[] =
     "f_over_phi_c4:%.3g f_over_phi_c4_paper=ratio4_paper:%.3g cpu_s:%.2f wall_s:%.2f";
 
 const vfy_case_desc vfy_ms_tails = {
+    .must_fail = "collisions.restitution=0.9",
     .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength,
     .adjust = ms_require_tails, .after_rows = tails_figures,
     .paper_rows = {.rows = tails_rows},

@@ -456,6 +456,7 @@ static const char *const quick_rows[] = {
                     "{a2_ci:%.5f} ({wall_s:%.1f} s)"
 
 const vfy_case_desc vfy_split_ex5 = {
+    .must_fail = "heating.strength=1.05",
     SPLIT_DESC_COMMON,
     .after_rows = split_after_ex5,
     .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "
@@ -474,6 +475,7 @@ const vfy_case_desc vfy_split_ex5 = {
  * costs O(1) plus its collisions, engine.c stages_scaled) and collide at the
  * rate of the step's start; the jump row has no splitting. */
 const vfy_case_desc vfy_split_gaussian = {
+    .must_fail = "collisions.restitution=0.97",
     SPLIT_DESC_COMMON,
     .after_rows = split_after_gaussian,
     .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "

@@ -1,6 +1,7 @@
 #include "cases.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -197,6 +198,11 @@ static int in_suite(const vfy_case *c, const char *suite)
            || strcmp(suite, c->suite) == 0;
 }
 
+int vfy_case_selected(const vfy_case *c, const char *suite, const char *case_name)
+{
+    return case_name ? in_list(case_name, c->name) : in_suite(c, suite ? suite : "paper");
+}
+
 sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
                    vfy_report *r, char *msg, size_t msglen)
 {
@@ -209,7 +215,7 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
     }
     for (size_t i = 0; i < vfy_case_count(); i++) {
         const vfy_case *c = &cases[i];
-        if (case_name ? !in_list(case_name, c->name) : !in_suite(c, suite))
+        if (!vfy_case_selected(c, suite, case_name))
             continue;
         if (o->progress)
             fprintf(o->progress, "== %s (%s sizes): %s\n", c->name,
@@ -245,6 +251,66 @@ static void relabel_solver_override(const vfy_options *o, char *msg, size_t msgl
     }
 }
 
+/* --perturb: the solver's scene loaded again with each "KEY=FACTOR" as the
+ * setting KEY = FACTOR x scene's value (set or defaulted, after the sweep
+ * and --set), after its other settings. */
+static sim_status perturb_solver(const char *path, const vfy_options *o, const sim_scene *scene,
+                                 const char *const *sets, size_t count, sim_scene *solver,
+                                 char *msg, size_t msglen)
+{
+    enum { MAX = 8 };
+    char storage[MAX][160];
+    const char *all[160 + MAX];
+    if (o->nperturbs > MAX) {
+        snprintf(msg, msglen, "--perturb: at most %d keys", MAX);
+        return SIM_EINVAL;
+    }
+    memcpy(all, sets, count * sizeof *sets);
+    for (size_t i = 0; i < o->nperturbs; i++) {
+        char key[128];
+        double factor, value;
+        sim_status status = vfy_perturb_parse(o->perturbs[i], key, sizeof key, &factor, msg,
+                                              msglen);
+        if (status == SIM_OK)
+            status = vfy_scene_real(scene, key, &value, msg, msglen);
+        if (status != SIM_OK) {
+            char why[1024];
+            snprintf(why, sizeof why, "%s", msg);
+            snprintf(msg, msglen, "--perturb %s: %s", o->perturbs[i], why);
+            return status;
+        }
+        snprintf(storage[i], sizeof storage[i], "%s=%.17g", key, factor * value);
+        all[count + i] = storage[i];
+    }
+    sim_status status = vfy_scene_load(path, all, count + o->nperturbs, solver, msg, msglen);
+    if (status != SIM_OK) {
+        char why[1024];
+        snprintf(why, sizeof why, "%s", msg);
+        snprintf(msg, msglen, "--perturb: a perturbed value is refused: %s", why);
+    }
+    return status;
+}
+
+sim_status vfy_perturb_parse(const char *text, char *key, size_t keylen, double *factor,
+                             char *msg, size_t msglen)
+{
+    const char *eq = strchr(text, '=');
+    char *end;
+    if (eq == NULL || eq == text || (size_t)(eq - text) >= keylen) {
+        snprintf(msg, msglen, "'%s' is not SECTION.KEY=FACTOR", text);
+        return SIM_EINVAL;
+    }
+    snprintf(key, keylen, "%.*s", (int)(eq - text), text);
+    errno = 0;
+    *factor = strtod(eq + 1, &end);
+    if (end == eq + 1 || *end != '\0' || errno == ERANGE || !isfinite(*factor)
+        || !(*factor > 0.0)) {
+        snprintf(msg, msglen, "%s: factor '%s' is not a positive number", key, eq + 1);
+        return SIM_EINVAL;
+    }
+    return vfy_scene_real(NULL, key, NULL, msg, msglen);
+}
+
 sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene *scene,
                                sim_scene *solver, char *msg, size_t msglen)
 {
@@ -276,7 +342,21 @@ sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const cha
         if (status != SIM_OK)
             relabel_solver_override(o, msg, msglen);
     }
+    if (status == SIM_OK && o->nperturbs > 0)
+        status = perturb_solver(path, o, scene, sets, count, solver, msg, msglen);
+    if (status == SIM_OK && o->seed_run > 0)
+        scene->seed = solver->seed = vfy_derived_seed(scene->seed, o->seed_run);
     return status;
+}
+
+uint64_t vfy_derived_seed(uint64_t seed, uint64_t k)
+{
+    if (k == 0)
+        return seed;
+    uint64_t z = seed + k * 0x9E3779B97F4A7C15ull;   /* splitmix64's step and finaliser */
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return (z ^ (z >> 31)) >> 16;   /* 48 bits: a seed a user can type */
 }
 
 sim_status vfy_require_references(const sim_scene *scene, const char *const *names,

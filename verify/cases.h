@@ -52,6 +52,12 @@ typedef struct vfy_options {
     size_t *stop_countdown;            /* if not NULL and > 0: counts finished
                                           simulations down and requests a stop at 0, as
                                           SIGINT would (a test's deterministic interrupt) */
+    const char *const *perturbs;       /* --perturb "SECTION.KEY=FACTOR": the solver's
+                                          value of KEY multiplied by FACTOR (a relative
+                                          error, as a bug makes one) */
+    size_t nperturbs;
+    uint64_t seed_run;                 /* 0: every scene's own seed; k > 0: the seed
+                                          vfy_derived_seed(seed, k) (--seeds) */
 } vfy_options;
 
 typedef struct vfy_case vfy_case;
@@ -78,6 +84,10 @@ int vfy_suite_exists(const char *name);
 /* The papers' suites in case order, comma-separated ("grw, brs"), in buf. */
 const char *vfy_paper_suites(char *buf, size_t len);
 
+/* Whether case c is selected by suite (NULL: "paper") or, when case_name
+ * is not NULL, by that comma-separated list of cases. */
+int vfy_case_selected(const vfy_case *c, const char *suite, const char *case_name);
+
 /* Run every case of the suite, or only the cases named in case_name, a
  * comma-separated list (in suite order, at the suite's sizes; the default
  * suite for named cases is "paper").  Stops at the first case that
@@ -95,6 +105,16 @@ sim_status vfy_load_scene_stem(const char *stem, const vfy_options *o, sim_scene
 sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const char *const *sets,
                                size_t nsets, sim_scene *scene, sim_scene *solver, char *msg,
                                size_t msglen);
+
+/* The seed of run k of --seeds for a scene seeded `seed` (k = 0: seed
+ * itself): a splitmix64 mix, so that runs draw unrelated streams. */
+uint64_t vfy_derived_seed(uint64_t seed, uint64_t k);
+
+/* Parse a --perturb "SECTION.KEY=FACTOR": the key into key (a number key,
+ * vfy_scene_real) and a factor > 0.  Returns SIM_OK, or SIM_EINVAL with a
+ * message naming what is wrong. */
+sim_status vfy_perturb_parse(const char *text, char *key, size_t keylen, double *factor,
+                             char *msg, size_t msglen);
 
 /* Refuse, before any simulation, a scene without the references `names` (a
  * case whose checks need them, given a scene changed by --set): msg gets

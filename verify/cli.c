@@ -22,6 +22,7 @@
 #include "scene_refs.h"
 #include "checkpoint.h"
 #include "solver.h"
+#include "gate.h"
 #include "sonine.h"
 #include "table.h"
 
@@ -95,12 +96,19 @@ static const char usage_verify[] =
     "usage: gdsmc verify [--suite quick|paper|grw|brs|...] [--case NAME[,NAME...]]\n"
     "                    [--out DIR] [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
     "                    [--solver 'COMMAND {scene} {out}'] [--solver-timeout S]\n"
-    "                    [--junit FILE.xml] [--resume] [--list]\n"
+    "                    [--junit FILE.xml] [--resume] [--list] [--perturb S.K=FACTOR]...\n"
+    "                    [--seeds K | --must-fail | --power]\n"
     "\n"
     "Run solver against reference and write DIR/<case>.csv, DIR/<case>.md,\n"
-    "DIR/<case>-curves.csv and a gnuplot figure DIR/<case>.png (when gnuplot is\n"
-    "installed). Prints one verdict per check (PASS, FAIL or SKIP with the reason)\n"
-    "and exits 1 if any check fails.\n"
+    "DIR/<case>-curves.csv, a gnuplot figure DIR/<case>.png (when gnuplot is\n"
+    "installed), the verdicts DIR/<case>-verdicts.csv and the index DIR/README.md.\n"
+    "Prints one verdict per check and exits 1 if any check fails:\n"
+    "  PASS     judged, and it held\n"
+    "  FAIL     judged, and it did not: the solver is wrong\n"
+    "  SKIP     not judged, with the reason\n"
+    "  DIFFERS  a paper's printed number or sentence this project shows to be off\n"
+    "           (docs/differences.md); the check named in its detail judges the\n"
+    "           solver instead; never a failure\n"
     "\n"
     "  --suite S    quick (CI sizes, minutes), paper (every case at the paper's\n"
     "               sizes, the default), or a paper's own suite at the paper's\n"
@@ -133,6 +141,23 @@ static const char usage_verify[] =
     "               to an uninterrupted run's (the recorded CPU and wall times\n"
     "               included)\n"
     "  --list       list the cases and suites\n"
+    "  --perturb S.K=FACTOR  multiply the simulated scene's value of number key\n"
+    "               S.K (after the sweep and --set, set or defaulted) by FACTOR:\n"
+    "               a relative error, as a bug makes one (e.g. --perturb\n"
+    "               collisions.constant=1.05); repeatable\n"
+    "\n"
+    "Measuring the gate (docs/verdicts.md; each writes its files to DIR and exits\n"
+    "0 when it ran):\n"
+    "  --seeds K    run the selection K times (2 <= K <= 1000), run k with seeds\n"
+    "               derived from each scene's (k = 0: its own), into DIR/seeds/;\n"
+    "               DIR/seeds.csv and seeds.md count each check's failures: the\n"
+    "               false alarms of a correct solver\n"
+    "  --must-fail  run each case under each error its description declares it\n"
+    "               must catch (its must_fail); prints CAUGHT or MISSED each and\n"
+    "               exits 1 when one is missed\n"
+    "  --power      for each declared key, the errors 0.5%, 1%, 2%, 5%, 10%, 20% in\n"
+    "               turn under 3 seeds: DIR/power.csv, power.md and power.png give\n"
+    "               the smallest error each case detects beside its CPU seconds\n"
     "\n"
     "Nothing is lost: every finished simulation is saved at once in\n"
     "DIR/.checkpoint, and each case's CSV table is rewritten after each finished\n"
@@ -225,14 +250,15 @@ typedef struct args {
     const char *junit;                       /* verify: a JUnit XML report */
     const char *alpha, *d;                   /* sonine */
     const char *md, *max_n, *seconds;        /* bench */
-    const char *sets[MAX_SETS], *solver_sets[MAX_SETS];
-    size_t nsets, nsolver_sets;
-    int quiet, list, resume;
+    const char *sets[MAX_SETS], *solver_sets[MAX_SETS], *perturbs[MAX_SETS];
+    size_t nsets, nsolver_sets, nperturbs;
+    const char *seeds;                       /* verify: --seeds K */
+    int quiet, list, resume, power, must_fail;
 } args;
 
 /* Every option of every command: the commands that take it (words) and
  * where it goes in args: a value, a flag, or one more --set or --solver-set. */
-typedef enum option_kind { OPT_VALUE, OPT_FLAG, OPT_SET, OPT_SOLVER_SET } option_kind;
+typedef enum option_kind { OPT_VALUE, OPT_FLAG, OPT_SET, OPT_SOLVER_SET, OPT_PERTURB } option_kind;
 typedef struct option_spec {
     const char *name, *commands;
     option_kind kind;
@@ -254,6 +280,10 @@ static const option_spec options[] = {
     {"--solver", "verify", OPT_VALUE, offsetof(args, solver)},
     {"--junit", "verify", OPT_VALUE, offsetof(args, junit)},
     {"--solver-timeout", "verify", OPT_VALUE, offsetof(args, solver_timeout)},
+    {"--perturb", "verify", OPT_PERTURB, 0},
+    {"--seeds", "verify", OPT_VALUE, offsetof(args, seeds)},
+    {"--power", "verify", OPT_FLAG, offsetof(args, power)},
+    {"--must-fail", "verify", OPT_FLAG, offsetof(args, must_fail)},
     {"--alpha", "sonine", OPT_VALUE, offsetof(args, alpha)},
     {"--d", "sonine", OPT_VALUE, offsetof(args, d)},
     {"--md", "bench", OPT_VALUE, offsetof(args, md)},
@@ -352,12 +382,14 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
         if (opt->kind == OPT_VALUE) {
             *(const char **)((char *)a + opt->offset) = value;
         } else {
-            const char **list = opt->kind == OPT_SET ? a->sets : a->solver_sets;
-            size_t *count = opt->kind == OPT_SET ? &a->nsets : &a->nsolver_sets;
+            const char **list = opt->kind == OPT_SET          ? a->sets
+                                : opt->kind == OPT_SOLVER_SET ? a->solver_sets
+                                                              : a->perturbs;
+            size_t *count = opt->kind == OPT_SET          ? &a->nsets
+                            : opt->kind == OPT_SOLVER_SET ? &a->nsolver_sets
+                                                          : &a->nperturbs;
             if (*count == MAX_SETS)
-                return bad_usage(cmd, opt->kind == OPT_SET ? "more than %s --set options"
-                                                           : "more than %s --solver-set options",
-                                 "64");
+                return bad_usage(cmd, "more than 64 %s options", opt->name);
             list[(*count)++] = value;
         }
     }
@@ -706,6 +738,38 @@ static int cmd_bench(int argc, char **argv)
     return rc;
 }
 
+/* --seeds, --must-fail and --power (gate.h): exit 0 when the measurement
+ * ran (--must-fail: 1 when a declared error went uncaught), 2 on bad input,
+ * 130 when stopped. */
+static int verify_gate(const args *a, const vfy_options *o, size_t seeds)
+{
+    char msg[1024] = "";
+    sim_status status;
+    size_t clean = 0, flaky = 0, missed = 0;
+    if (seeds > 0)
+        status = vfy_seeds(a->suite, a->case_name, o, seeds, &clean, &flaky, msg, sizeof msg);
+    else if (a->must_fail)
+        status = vfy_must_fail(a->suite, a->case_name, o, stdout, &missed, msg, sizeof msg);
+    else
+        status = vfy_power(a->suite, a->case_name, o, msg, sizeof msg);
+    if (status == SIM_ECANCELED) {
+        fprintf(stderr, "gdsmc verify: %s\n", msg);
+        return EXIT_STOPPED;
+    }
+    if (status != SIM_OK) {
+        fprintf(stderr, "gdsmc verify: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    if (seeds > 0)
+        printf("seeds: %zu of %zu runs passed whole; %zu checks failed in more than one run "
+               "(%s/seeds.md)\n", clean, seeds, flaky, o->out_dir);
+    else if (a->must_fail)
+        printf("must-fail: %zu declared errors not caught\n", missed);
+    else
+        printf("power: %s/power.md\n", o->out_dir);
+    return missed > 0 ? EXIT_CHECK_FAILED : EXIT_OK;
+}
+
 static int cmd_verify(int argc, char **argv)
 {
     args a;
@@ -734,6 +798,30 @@ static int cmd_verify(int argc, char **argv)
     if (a.case_name && !vfy_case_list_check(a.case_name, unknown, sizeof unknown))
         return bad_usage("verify", "unknown case '%s' (gdsmc verify --list shows them)",
                          unknown);
+    for (size_t i = 0; i < a.nperturbs; i++) {
+        char key[128], why[1024];
+        double factor;
+        if (vfy_perturb_parse(a.perturbs[i], key, sizeof key, &factor, why, sizeof why)
+            != SIM_OK) {
+            char text[1200];
+            snprintf(text, sizeof text, "--perturb %s", why);
+            return bad_usage("verify", "%s", text);
+        }
+    }
+    size_t seeds = 0;
+    if (a.seeds != NULL) {
+        char *end;
+        double k = strtod(a.seeds, &end);
+        if (end == a.seeds || *end || !(k >= 2 && k <= 1000) || k != floor(k))
+            return bad_usage("verify", "--seeds '%s': allowed an integer 2 <= K <= 1000 (K "
+                             "runs, each with seeds derived from the scenes')", a.seeds);
+        seeds = (size_t)k;
+    }
+    if ((seeds > 0) + a.power + a.must_fail > 1)
+        return bad_usage("verify", "%s", "--seeds, --power and --must-fail: one at a time");
+    if ((seeds > 0 || a.power || a.must_fail) && (a.nperturbs > 0 || a.solver != NULL))
+        return bad_usage("verify", "%s", "--seeds, --power and --must-fail measure the "
+                         "built-in engine: not with --perturb or --solver");
     vfy_options o = {
         .size = a.suite && strcmp(a.suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
         .out_dir = a.out ? a.out : a.suite && strcmp(a.suite, "quick") == 0 ? "reports"
@@ -745,6 +833,8 @@ static int cmd_verify(int argc, char **argv)
         .nsolver_overrides = a.nsolver_sets,
         .progress = a.quiet ? NULL : stderr,
         .resume = a.resume,
+        .perturbs = a.perturbs,
+        .nperturbs = a.nperturbs,
     };
     char checkpoints[1100], work[1100];
     snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint", o.out_dir);
@@ -780,6 +870,8 @@ static int cmd_verify(int argc, char **argv)
     catch_stop_signals();
     if ((rc = probe_out("verify", a.junit)) != EXIT_OK)
         return rc;
+    if (seeds > 0 || a.power || a.must_fail)
+        return verify_gate(&a, &o, seeds);
     vfy_report report;
     vfy_report_init(&report, stdout);
     char msg[1024] = "";

@@ -303,6 +303,10 @@ typedef struct vfy_case_desc {
     vfy_figure_spec figures[VFY_FIGURES_MAX];  /* up to the first of kind NONE */
     const char *title, *notes;          /* templates */
     vfy_hook_fn after_rows;
+    const char *must_fail;              /* the errors the case must catch at quick
+                                           sizes: "SECTION.KEY=FACTOR ..." (space-
+                                           separated), each a relative error of the
+                                           solver's value (--perturb); gate.h */
 } vfy_case_desc;
 
 /* ------------------------------------------------------------ the run */

@@ -987,3 +987,42 @@ int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t 
     }
     return 0;
 }
+
+sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
+                          size_t msglen)
+{
+    char section[64], list[1024];
+    const char *dot = strchr(key, '.');
+    if (dot == NULL || (size_t)(dot - key) >= sizeof section) {
+        snprintf(msg, msglen, "%s: not SECTION.KEY", key);
+        return SIM_EINVAL;
+    }
+    snprintf(section, sizeof section, "%.*s", (int)(dot - key), key);
+    const int sec = find_section(section);
+    if (sec < 0) {
+        section_list(list, sizeof list);
+        snprintf(msg, msglen, "%s: unknown section '%s' (allowed %s)", key, section, list);
+        return SIM_EINVAL;
+    }
+    const key_desc *d = NULL;
+    for (size_t i = 0; i < NKEYS && !d; i++)
+        if (keys[i].section == sec && strcmp(keys[i].name, dot + 1) == 0)
+            d = &keys[i];
+    if (d == NULL) {
+        key_list(sec, list, sizeof list);
+        snprintf(msg, msglen, "%s: unknown key (allowed %s)", key, list);
+        return SIM_EINVAL;
+    }
+    if (d->kind != K_REAL) {
+        snprintf(msg, msglen, "%s: not a number key (a rate, constant, strength, "
+                 "restitution ...): it cannot be multiplied", key);
+        return SIM_EINVAL;
+    }
+    if (s != NULL && !section_present(s, sec)) {
+        snprintf(msg, msglen, "%s: the scene %s has no [%s] section", key, s->file, section);
+        return SIM_EINVAL;
+    }
+    if (s != NULL)
+        *value = *(const double *)((const char *)s + d->offset);
+    return SIM_OK;
+}
