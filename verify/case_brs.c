@@ -99,8 +99,9 @@ static const char conv_notes[] =
     "times. events = candidate events (binary and background); fictitious_fraction = 1 - "
     "accepted/candidates (0 for Maxwell kernels, Algorithm 1); cpu_s is process CPU time over "
     "all threads. Total wall time {wall_total:%.1f} s.";
-#define BRS_CONVERGENCE(LABEL, PAPER, CHECKS, MUST_FAIL)                                            \
-    {.must_fail = MUST_FAIL, .paper = LABEL,                                                                      \
+#define BRS_CONVERGENCE(LABEL, PAPER, CHECKS, ...)                                  \
+    {.paper = LABEL,                                                                      \
+     __VA_ARGS__,                                                                        \
      .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
                     .values = {"4 16 64 256 1024", "64 256 1024 4096 16384"}},           \
      .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
@@ -127,12 +128,13 @@ static const vfy_paper_column brs_table2[] = {
     VFY_PAPER_COLUMN("CF_Conf_paper", NAN, 3.68, 3.99, 4.14, 4.01),
     {NULL, 0, NULL}};
 const vfy_case_desc vfy_brs_ex1 = BRS_CONVERGENCE("Table 1", brs_table1, table1_checks,
-                    "collisions.constant=1.05 collisions.restitution=0.95");
+                    .must_fail = "collisions.constant=1.05 collisions.restitution=0.95 background.constant=1.05");
 const vfy_case_desc vfy_brs_ex2 = BRS_CONVERGENCE("Table 2", brs_table2, table2_checks,
-                    "background.constant=1.05 collisions.constant=1.2");
+                    .must_fail = "background.constant=1.05",
+              .power_keys = "collisions.constant=1.05 collisions.restitution=0.95");
 const vfy_case_desc vfy_brs_ex3 =
     BRS_CONVERGENCE("Maxwell kernels, relaxation", NULL, no_table_checks,
-                    "background.constant=1.05");
+                    .must_fail = "background.constant=1.05 background.mass=1.05");
 
 /* brs-ex4, brs-ex5 (SPEC §4 Ex 4, 5): hard spheres.  Rows with n N fixed
  * (2^21 at paper sizes, 2^14 at quick), so each row costs about the same;
@@ -272,8 +274,9 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
     "dev_uy_grad = max over t of |eta1 of u_y - u_y of (B.22)|. fictitious_fraction = 1 - " \
     "accepted/candidate events (binary and background). Total wall time "                 \
     "{wall_total:%.1f} s."
-#define BRS_STEADY(CHECKS, NOTES, MUST_FAIL)                                                      \
-    {.must_fail = MUST_FAIL, .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
+#define BRS_STEADY(CHECKS, NOTES, ...)                                             \
+    {__VA_ARGS__,                                                                        \
+     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
                     .values = {"64 256 1024", "1024 256 64"}},                           \
      .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
                     .values = {"16 64 256", "32 8 2"}},                                  \
@@ -291,7 +294,8 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
      .notes = NOTES}
 const vfy_case_desc vfy_brs_ex4 =
     BRS_STEADY(steady4_checks, STEADY_NOTES("0.953", "0.956", "0.956"),
-               "background.constant=1.05 collisions.constant=1.2");
+               .must_fail = "collisions.constant=1.2 background.constant=1.2",
+              .power_keys = "collisions.restitution=0.95");
 const vfy_case_desc vfy_brs_ex5 =
     BRS_STEADY(steady5_checks, STEADY_NOTES("0.732", "0.743", "0.757"),
-               "background.constant=1.05");
+               .must_fail = "background.constant=1.05 collisions.constant=1.05");

@@ -798,6 +798,7 @@ static const char tails_columns[] = WHITE_COLUMNS_HEAD
     "scene.t_end=30;steady.from=10"
 const vfy_case_desc vfy_hard_dissipation = {
     .must_fail = "heating.strength=1.05",
+    .power_keys = "collisions.restitution=0.9",
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
                    .values = {"0.05 0.1"}},
     .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
@@ -882,7 +883,8 @@ static const char nongaussian_columns[] =
     "max_V:%.3g V_bound:%.3g violations:%.0f "
     VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_nongaussian = {
-    .must_fail = "collisions.restitution=0.9",
+    .must_fail = "heating.strength=1.1",
+    .power_keys = "collisions.restitution=0.9",
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
                    .values = {"0.05 0.1"}},
     .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
@@ -1167,7 +1169,6 @@ static sim_status stiff_grid(vfy_case_run *run, vfy_report *r, char *msg, size_t
     return SIM_OK;
 }
 const vfy_case_desc vfy_hard_stiff = {
-    .must_fail = "background.constant=1.05",
     .paper_rows = {.rows = stiff_rows}, .quick_rows = {.rows = stiff_rows},
     .no_simulation = 1, .adjust = stiff_require, .checks = stiff_checks,
     .columns = stiff_columns, .after_rows = stiff_grid,

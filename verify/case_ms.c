@@ -228,7 +228,7 @@ static const char a2_columns[] =
                    .values = {QUICK_ALPHA}, .sets = MS_QUICK_SETS}
 
 const vfy_case_desc vfy_ms_white_noise = {
-    .must_fail = "collisions.restitution=0.95",
+    .must_fail = "collisions.restitution=0.8",
     MS_A2("ms-white-noise", "0.5"), .metrics = white_metrics, .checks = white_checks,
     .title = "{case}: paper C Figure 1, a2 against alpha, white noise (stochastic thermostat) "
              "({size} sizes)",
@@ -237,7 +237,7 @@ const vfy_case_desc vfy_ms_white_noise = {
                           "white noise (stochastic thermostat) (paper C Figure 1)")}};
 
 const vfy_case_desc vfy_ms_gaussian = {
-    .must_fail = "collisions.restitution=0.95",
+    .must_fail = "collisions.restitution=0.8",
     MS_A2("ms-gaussian", "0.2"), .metrics = gaussian_metrics, .checks = gaussian_checks,
     .title = "{case}: paper C Figure 4, a2 against alpha, Gaussian thermostat (HCS in scaled "
              "variables) ({size} sizes)",
@@ -250,7 +250,7 @@ const vfy_case_desc vfy_ms_gaussian = {
                  .xlabel = "alpha", .ylabel = "a3"}}};
 
 const vfy_case_desc vfy_ms_non_gaussian = {
-    .must_fail = "collisions.restitution=0.95",
+    .must_fail = "collisions.restitution=0.8",
     MS_A2("ms-non-gaussian", "0.5"), .metrics = ng_metrics, .checks = ng_checks,
     .title = "{case}: paper C Figure 8, a2 against alpha, non-Gaussian thermostat ({size} "
              "sizes)",

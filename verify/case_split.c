@@ -457,6 +457,7 @@ static const char *const quick_rows[] = {
 
 const vfy_case_desc vfy_split_ex5 = {
     .must_fail = "heating.strength=1.05",
+    .power_keys = "collisions.restitution=0.95",
     SPLIT_DESC_COMMON,
     .after_rows = split_after_ex5,
     .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "

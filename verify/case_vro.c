@@ -74,7 +74,7 @@ static sim_status vro_smallest(vfy_case_run *run, vfy_report *r, char *msg, size
 }
 
 const vfy_case_desc vfy_vro_grw_ex3 = {
-    .must_fail = "heating.strength=1.05",
+    .must_fail = "heating.strength=1.05 collisions.constant=1.05",
     .scene = "grw-ex3",
     .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024"}},
     .quick_rows = {.keys = {"particles.n"},

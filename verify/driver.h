@@ -306,7 +306,13 @@ typedef struct vfy_case_desc {
     const char *must_fail;              /* the errors the case must catch at quick
                                            sizes: "SECTION.KEY=FACTOR ..." (space-
                                            separated), each a relative error of the
-                                           solver's value (--perturb); gate.h */
+                                           solver's value (--perturb); gate.h.  NULL
+                                           only with no_simulation */
+    const char *power_keys;             /* more "SECTION.KEY=FACTOR" words --power
+                                           measures (the direction: FACTOR's side of
+                                           1), not required to be caught: the keys a
+                                           case is about but too weak to catch at
+                                           quick sizes, or NULL */
 } vfy_case_desc;
 
 /* ------------------------------------------------------------ the run */

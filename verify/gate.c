@@ -261,6 +261,11 @@ sim_status vfy_must_fail(const char *suite, const char *cases, const vfy_options
         if (!vfy_case_selected(c, suite, cases))
             continue;
         char perturb[128];
+        if (c->desc->no_simulation) {
+            fprintf(out, "NONE    %s: simulates nothing (its checks judge the references)\n",
+                    c->name);
+            continue;
+        }
         if (vfy_must_fail_at(c->desc->must_fail, 0, perturb, sizeof perturb) != 0) {
             fprintf(out, "NONE    %s: declares no must_fail\n", c->name);
             (*missed)++;
@@ -288,14 +293,16 @@ sim_status vfy_must_fail(const char *suite, const char *cases, const vfy_options
 
 /* ------------------------------------------------------------ --power */
 
-static const double ladder[] = {0.005, 0.01, 0.02, 0.05, 0.10, 0.20};
+static const double ladder[] = {0.005, 0.01, 0.02, 0.05, 0.10, 0.20, 0.50};
 #define LADDER (sizeof ladder / sizeof *ladder)
 #define POWER_SEEDS 3
 
 typedef struct power_row {
     char name[32], key[96];
-    double must_factor, smallest, cpu_s;
-    int must_caught;   /* the must_fail factor caught by seed 0 */
+    double must_factor;   /* the must_fail factor, or NaN for a power_keys word */
+    double smallest, cpu_s;
+    int up;               /* the direction: factors above 1 */
+    int must_caught;      /* the must_fail factor caught under seed 0 */
 } power_row;
 
 static sim_status write_power(const vfy_options *o, const power_row *rows, size_t count,
@@ -313,11 +320,15 @@ static sim_status write_power(const vfy_options *o, const power_row *rows, size_
             100 * ladder[LADDER - 1], POWER_SEEDS, 100 * ladder[LADDER - 1]);
     fputs("case,key,direction,smallest_detected,must_fail_factor,must_fail_caught,cpu_s\n", f);
     for (size_t i = 0; i < count; i++) {
-        fprintf(f, "%s,%s,%s,", rows[i].name, rows[i].key,
-                rows[i].must_factor < 1.0 ? "down" : "up");
+        fprintf(f, "%s,%s,%s,", rows[i].name, rows[i].key, rows[i].up ? "up" : "down");
         if (isfinite(rows[i].smallest))
             fprintf(f, "%g", rows[i].smallest);
-        fprintf(f, ",%g,%d,%.2f\n", rows[i].must_factor, rows[i].must_caught, rows[i].cpu_s);
+        fputc(',', f);
+        if (isfinite(rows[i].must_factor))
+            fprintf(f, "%g,%d", rows[i].must_factor, rows[i].must_caught);
+        else
+            fputc(',', f);
+        fprintf(f, ",%.2f\n", rows[i].cpu_s);
     }
     if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
         return vfy_io_error(path, msg, msglen);
@@ -327,23 +338,26 @@ static sim_status write_power(const vfy_options *o, const power_row *rows, size_
         return vfy_io_error(path, msg, msglen);
     fprintf(f, "# Power: the smallest error each case detects (%s sizes)\n\n"
                "Made by `gdsmc verify --power` (gdsmc %s). For each key a case declares in "
-               "its `must_fail`, the solver's value of the key is multiplied by 1 ± e for e = "
-               "0.5%%, 1%%, 2%%, 5%%, 10%%, 20%% in turn (the sign of the must_fail factor), "
-               "each run under %d seeds; the smallest e that makes the case fail under every "
-               "seed is its power for the key. CPU s is the unperturbed case's (the process, "
-               "every thread).\n\n"
+               "its `must_fail` (the errors it must catch) or `power_keys` (measured, not "
+               "required), the solver's value of the key is multiplied by 1 ± e for e = "
+               "0.5%%, 1%%, 2%%, 5%%, 10%%, 20%%, 50%% in turn (the sign of the declared "
+               "factor), each run under %d seeds; the smallest e that makes the case fail under "
+               "every seed is its power for the key. CPU s is the unperturbed case's (the "
+               "process, every thread).\n\n"
                "| case | key | direction | smallest error detected | must_fail | caught | "
                "CPU s |\n|---|---|---|---:|---:|---|---:|\n",
             o->size == VFY_QUICK ? "quick" : "paper", GDSMC_VERSION, POWER_SEEDS);
     for (size_t i = 0; i < count; i++) {
-        fprintf(f, "| %s | %s | %s | ", rows[i].name, rows[i].key,
-                rows[i].must_factor < 1.0 ? "down" : "up");
+        fprintf(f, "| %s | %s | %s | ", rows[i].name, rows[i].key, rows[i].up ? "up" : "down");
         if (isfinite(rows[i].smallest))
             fprintf(f, "%g%%", 100 * rows[i].smallest);
         else
-            fprintf(f, "> %g%%", 100 * ladder[LADDER - 1]);
-        fprintf(f, " | ×%g | %s | %.1f |\n", rows[i].must_factor,
-                rows[i].must_caught ? "yes" : "**no**", rows[i].cpu_s);
+            fprintf(f, "none up to %g%%", 100 * ladder[LADDER - 1]);
+        if (isfinite(rows[i].must_factor))
+            fprintf(f, " | ×%g | %s | %.1f |\n", rows[i].must_factor,
+                    rows[i].must_caught ? "yes" : "**no**", rows[i].cpu_s);
+        else
+            fprintf(f, " | – | – | %.1f |\n", rows[i].cpu_s);
     }
     fputs("\nFigure: power.png, the smallest error detected against the CPU seconds.\n", f);
     if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
@@ -377,6 +391,39 @@ static sim_status write_power(const vfy_options *o, const power_row *rows, size_
     return status;
 }
 
+/* The ladder for one key of case c: p->smallest (NaN: none caught). */
+static sim_status power_ladder(const vfy_case *c, const char *suite, const vfy_options *o,
+                               const char *dir, const char *key, double factor, power_row *p,
+                               char *msg, size_t msglen)
+{
+    sim_status status = SIM_OK;
+    p->smallest = NAN;
+    for (size_t l = 0; l < LADDER && status == SIM_OK && isnan(p->smallest); l++) {
+        char perturb[160];
+        snprintf(perturb, sizeof perturb, "%s=%.6g", key,
+                 factor < 1.0 ? 1.0 - ladder[l] : 1.0 + ladder[l]);
+        size_t seeds = 0, caught = 0;
+        for (size_t s = 0; s < POWER_SEEDS && status == SIM_OK; s++) {
+            status = run_perturbed(c, suite, o, perturb, s, dir, &caught, NULL, NULL, 0, msg,
+                                   msglen);
+            if (status != SIM_OK || caught == 0)
+                break;
+            seeds++;
+        }
+        if (status == SIM_EINVAL) {   /* out of the key's range: the ladder ends there */
+            if (o->progress)
+                fprintf(o->progress, "power: %s\n", msg);
+            return SIM_OK;
+        }
+        if (o->progress && status == SIM_OK)
+            fprintf(o->progress, "power: %s %s: caught under %zu of %d seeds\n", c->name,
+                    perturb, seeds, POWER_SEEDS);
+        if (seeds == POWER_SEEDS)
+            p->smallest = ladder[l];
+    }
+    return status;
+}
+
 sim_status vfy_power(const char *suite, const char *cases, const vfy_options *o, char *msg,
                      size_t msglen)
 {
@@ -387,72 +434,52 @@ sim_status vfy_power(const char *suite, const char *cases, const vfy_options *o,
     sim_status status = SIM_OK;
     for (size_t i = 0; i < vfy_case_count() && status == SIM_OK; i++) {
         const vfy_case *c = vfy_case_at(i);
-        if (!vfy_case_selected(c, suite, cases))
+        if (!vfy_case_selected(c, suite, cases) || c->desc->no_simulation)
             continue;
         size_t failed;
         double cpu = 0.0;
-        char word[128];
-        if (vfy_must_fail_at(c->desc->must_fail, 0, word, sizeof word) != 0)
-            continue;
         if ((status = run_perturbed(c, suite, o, NULL, 0, dir, &failed, &cpu, NULL, 0, msg,
                                     msglen))
             != SIM_OK)
             break;
-        for (size_t k = 0; vfy_must_fail_at(c->desc->must_fail, k, word, sizeof word) == 0
-                           && status == SIM_OK;
-             k++) {
-            if (count == cap) {
-                cap = cap ? 2 * cap : 32;
-                power_row *g = realloc(rows, cap * sizeof *g);
-                if (g == NULL) {
-                    status = SIM_ENOMEM;
-                    snprintf(msg, msglen, "out of memory");
-                    break;
-                }
-                rows = g;
-            }
-            power_row *p = &rows[count++];
-            memset(p, 0, sizeof *p);
-            char key[96];
-            double factor;
-            if ((status = vfy_perturb_parse(word, key, sizeof key, &factor, msg, msglen))
-                != SIM_OK)
-                break;
-            snprintf(p->name, sizeof p->name, "%s", c->name);
-            snprintf(p->key, sizeof p->key, "%s", key);
-            p->must_factor = factor;
-            p->cpu_s = cpu;
-            p->smallest = NAN;
-            size_t caught;
-            status = run_perturbed(c, suite, o, word, 0, dir, &caught, NULL, NULL, 0, msg,
-                                   msglen);
-            p->must_caught = caught > 0;
-            for (size_t l = 0; l < LADDER && status == SIM_OK && isnan(p->smallest); l++) {
-                char perturb[160];
-                snprintf(perturb, sizeof perturb, "%s=%.6g", key,
-                         factor < 1.0 ? 1.0 - ladder[l] : 1.0 + ladder[l]);
-                size_t seeds = 0;
-                for (size_t s = 0; s < POWER_SEEDS && status == SIM_OK; s++) {
-                    status = run_perturbed(c, suite, o, perturb, s, dir, &caught, NULL, NULL, 0,
-                                           msg, msglen);
-                    if (status == SIM_EINVAL) {   /* out of the key's range: the ladder ends */
-                        if (o->progress)
-                            fprintf(o->progress, "power: %s\n", msg);
-                        status = SIM_OK;
-                        l = LADDER;
+        /* the must_fail words, then the power_keys words */
+        const char *lists[2] = {c->desc->must_fail, c->desc->power_keys};
+        char word[128];
+        for (size_t list = 0; list < 2 && status == SIM_OK; list++)
+            for (size_t k = 0; vfy_must_fail_at(lists[list], k, word, sizeof word) == 0
+                               && status == SIM_OK;
+                 k++) {
+                if (count == cap) {
+                    cap = cap ? 2 * cap : 32;
+                    power_row *g = realloc(rows, cap * sizeof *g);
+                    if (g == NULL) {
+                        status = SIM_ENOMEM;
+                        snprintf(msg, msglen, "out of memory");
                         break;
                     }
-                    if (status != SIM_OK || caught == 0)
-                        break;
-                    seeds++;
+                    rows = g;
                 }
-                if (o->progress && status == SIM_OK && l < LADDER)
-                    fprintf(o->progress, "power: %s %s: caught by %zu of %d seeds\n", c->name,
-                            perturb, seeds, POWER_SEEDS);
-                if (seeds == POWER_SEEDS && l < LADDER)
-                    p->smallest = ladder[l];
+                power_row *p = &rows[count++];
+                memset(p, 0, sizeof *p);
+                char key[96];
+                double factor;
+                if ((status = vfy_perturb_parse(word, key, sizeof key, &factor, msg, msglen))
+                    != SIM_OK)
+                    break;
+                snprintf(p->name, sizeof p->name, "%s", c->name);
+                snprintf(p->key, sizeof p->key, "%s", key);
+                p->must_factor = list == 0 ? factor : NAN;
+                p->up = factor > 1.0;
+                p->cpu_s = cpu;
+                if (list == 0) {
+                    size_t caught;
+                    status = run_perturbed(c, suite, o, word, 0, dir, &caught, NULL, NULL, 0,
+                                           msg, msglen);
+                    p->must_caught = caught > 0;
+                }
+                if (status == SIM_OK)
+                    status = power_ladder(c, suite, o, dir, key, factor, p, msg, msglen);
             }
-        }
     }
     if (status == SIM_OK)
         status = write_power(o, rows, count, msg, msglen);

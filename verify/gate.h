@@ -35,7 +35,7 @@ sim_status vfy_must_fail(const char *suite, const char *cases, const vfy_options
                          size_t *missed, char *msg, size_t msglen);
 
 /* --power: for each selected case and each key of its must_fail, the
- * relative errors 0.5%, 1%, 2%, 5%, 10%, 20% in the must_fail's direction
+ * relative errors 0.5%, 1%, 2%, 5%, 10%, 20%, 50% in the must_fail's direction
  * in turn, each under seeds 0, 1, 2 (vfy_derived_seed), until one is caught
  * by every seed: that error is the case's power for the key.  Writes
  * out_dir/power.csv, power.md and power.png (the smallest error detected
