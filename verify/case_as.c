@@ -26,7 +26,9 @@
 #include "figure.h"
 #include "metrics.h"
 #include "references.h"
+#include "scene_refs.h"
 #include "steady.h"
+#include "tolerances.h"
 
 /* Quick sizes (CI): alpha = 0.7, n = 2000, N = 4, shorter relaxations. */
 #define AS_QUICK_SETS "particles.n=2000;particles.ensembles=4"
@@ -64,17 +66,75 @@
  * between v0 and 2 v0 */
 #define AS_E_05_SHELLS ";$R0_paper=1.18;$R1_paper=0.81;$R2_paper=1.39;$R3_paper=15" \
                        ";$below_v0_paper=51;$v0_2v0_paper=42"
+/* EHS at a tau0 = 4 by the jump scheme (no splitting error; the scene the
+ * references describe, vfy_adjust_jump_rows): the independent route that
+ * judges E's "IHS and EHS practically the same" (docs/differences.md) */
+#define AS_EHS_JUMP(A)                                                                 \
+    "alpha " A " ehs-jump a tau0 4: collisions.restitution=" A ";collisions.model=ehs"      \
+    ";shear.rate=4;$alpha=" A ";$model=ehs-jump;$a_tau0=4;$is_ehs=1;$is_jump=1;"          \
+    "$scheme=jump;"
+/* as-steady's windows come from the relaxation time (as_steady_window); the
+ * rows set the number of output times */
+#define AS_STEADY_HOT "scene.outputs=161"
+#define AS_STEADY_COLD "scene.outputs=301"
+#define AS_STEADY(A, HOT4) AS_ALPHA_WINDOWS(A, AS_STEADY_HOT, AS_STEADY_COLD, HOT4, "")
+#define AS_STEADY_JUMP(A) AS_STEADY(A, ""), AS_EHS_JUMP(A) AS_STEADY_HOT
 static const char *const paper_rows[] = {
-    AS_ALPHA_WINDOWS("0.5", AS_HOT, AS_COLD, "", AS_E_05), AS_ALPHA("0.55"), AS_ALPHA("0.6"),
-    AS_ALPHA("0.65"), AS_ALPHA("0.7"), AS_ALPHA("0.75"), AS_ALPHA("0.8"), AS_ALPHA("0.85"),
-    AS_ALPHA_WINDOWS("0.9", AS_HOT_LONG, AS_COLD_LONG, AS_E_09, ""),
-    AS_ALPHA_WINDOWS("0.95", AS_HOT_LONG, AS_COLD_LONG, "", ""), NULL};
+    AS_ALPHA_WINDOWS("0.5", AS_STEADY_HOT, AS_STEADY_COLD, "", AS_E_05), AS_STEADY("0.55", ""),
+    AS_STEADY("0.6", ""), AS_STEADY("0.65", ""), AS_STEADY_JUMP("0.7"), AS_STEADY_JUMP("0.75"),
+    AS_STEADY_JUMP("0.8"), AS_STEADY_JUMP("0.85"), AS_STEADY("0.9", AS_E_09),
+    AS_STEADY("0.95", ""), NULL};
 #define AS_QUICK_HOT "scene.t_end=16;scene.outputs=81;steady.from=12"
 #define AS_QUICK_COLD "scene.t_end=300;scene.outputs=151;steady.from=200"
+#define AS_STEADY_QUICK_HOT "scene.outputs=81"
+#define AS_STEADY_QUICK_COLD "scene.outputs=151"
 static const char *const quick_rows[] = {
-    AS_ROW("0.7", "ihs", "0", "4", AS_QUICK_HOT), AS_ROW("0.7", "ihs", "0", "0.1", AS_QUICK_COLD),
-    AS_ROW("0.7", "ehs", "1", "4", AS_QUICK_HOT), AS_ROW("0.7", "ehs", "1", "0.1", AS_QUICK_COLD),
-    NULL};
+    AS_ROW("0.7", "ihs", "0", "4", AS_STEADY_QUICK_HOT),
+    AS_ROW("0.7", "ihs", "0", "0.1", AS_STEADY_QUICK_COLD),
+    AS_ROW("0.7", "ehs", "1", "4", AS_STEADY_QUICK_HOT),
+    AS_ROW("0.7", "ehs", "1", "0.1", AS_STEADY_QUICK_COLD),
+    AS_EHS_JUMP("0.7") AS_STEADY_QUICK_HOT, NULL};
+
+/* as-steady's averaging window, from the relaxation time (vfy_derive_fn):
+ * steady.from is the time after which the BGK model's T(t) from the row's
+ * initial state stays within VFY_TOL_AS_RELAX of its steady value
+ * (reference/bgk.h; E's models relax on the same time scale 1/zeta0), and
+ * t_end = 1.25 steady.from.  a tau0 = 4 gives t = 12.4-19.1 over alpha =
+ * 0.5-0.95, a tau0 = 0.1 (cooled first) t = 415-633: the hand-chosen t >= 200
+ * of the cold rows left T about 1% above its steady value (a* 0.2-0.9% low
+ * at all 16 pairs with alpha <= 0.85, issue 34). */
+static const char *as_steady_window(const vfy_row *row, char *buf, size_t len)
+{
+    const ref_bgk_params p = vfy_bgk_params(&row->scene);
+    ref_bgk_steady st;
+    buf[0] = '\0';
+    if (ref_bgk_steady_state(&p, &st, NULL, 0) != REF_OK)
+        return buf;   /* no steady state: the scene's own window stands */
+    enum { NT = 4000 };
+    double *t = malloc(2 * NT * sizeof *t);
+    if (t == NULL)
+        return buf;
+    double *T = t + NT;
+    const ref_bgk_output out = {.T = T};
+    const double Ts = st.T_ratio * p.T0;
+    for (double t_max = 64.0; t_max <= 1e5; t_max *= 2) {
+        for (size_t k = 0; k < NT; k++)
+            t[k] = t_max * (double)k / (NT - 1);
+        if (ref_bgk_solve(&p, t, NT, NULL, &out, NULL, 0) != REF_OK)
+            break;
+        size_t last = 0;   /* the last time still outside the band */
+        for (size_t k = 0; k < NT; k++)
+            if (!(fabs(T[k] / Ts - 1.0) <= VFY_TOL_AS_RELAX))
+                last = k;
+        if (last + 1 < NT * 3 / 4) {
+            const double from = t[last + 1];
+            snprintf(buf, len, "scene.t_end=%.4g;steady.from=%.4g", 1.25 * from, from);
+            break;
+        }
+    }
+    free(t);
+    return buf;
+}
 
 /* ------------------------------------------------------------- metrics */
 
@@ -82,19 +142,24 @@ static const char *const quick_rows[] = {
  * for a row at a tau0 != 4, the row of the same alpha and model at a tau0 = 4
  * (the steady state must not depend on the initial shear rate); kind 2, for an
  * EHS row, the IHS row of the same alpha and a tau0 (E's comparison of the
- * models).  NULL for a row that has none. */
+ * models); kind 3, for a jump-scheme row (is_jump), the time-step row of the
+ * same alpha, model and a tau0.  A jump row is no other row's partner.  NULL
+ * for a row that has none. */
 static const vfy_row *as_partner(const vfy_case_run *run, const vfy_row *row, int kind)
 {
     const vfy_values *v = &row->values;
     const double alpha = vfy_values_get(v, "alpha"), rate = vfy_values_get(v, "a_tau0");
     const double ehs = vfy_values_get(v, "is_ehs");
-    if ((kind == 1 && rate == 4.0) || (kind == 2 && ehs != 1.0))
+    const int jump = vfy_values_get(v, "is_jump") == 1.0;
+    if ((kind == 1 && rate == 4.0) || (kind == 2 && ehs != 1.0) || (kind == 3 && !jump))
         return NULL;
     for (size_t i = 0; i < row->index; i++) {
         const vfy_values *w = &run->rows[i].values;
+        if (vfy_values_get(w, "is_jump") == 1.0)
+            continue;
         if (vfy_values_get(w, "alpha") == alpha
             && vfy_values_get(w, "a_tau0") == (kind == 1 ? 4.0 : rate)
-            && vfy_values_get(w, "is_ehs") == (kind == 1 ? ehs : 0.0))
+            && vfy_values_get(w, "is_ehs") == (kind == 2 ? 0.0 : ehs))
             return &run->rows[i];
     }
     return NULL;
@@ -151,13 +216,6 @@ static double as_percent_ci_partner(const vfy_case_run *run, const vfy_row *row,
     return 100.0 * fabs(a / b) * sqrt(ra * ra + rb * rb);
 }
 
-/* 0 where the row has value a, else 1 (a guard's "reported at most 0"). */
-static double as_has(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
-{
-    (void)run;
-    return vfy_values_has(&row->values, m->a) ? 0.0 : 1.0;
-}
-
 /* T/T0 of the steady state. */
 static double as_T_ratio(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
@@ -206,10 +264,12 @@ static const vfy_metric metrics[] = {
     {"z_N1_model", as_z_partner, "N1", NULL, 2},
     {"z_a_star_model", as_z_partner, "a_star", NULL, 2},
     {"z_Pxy_model", as_z_partner, "Pxy_reduced", NULL, 2},
+    /* the time-step row against the jump scheme (partner kind 3) */
+    {"z_Pxy_jump", as_z_partner, "Pxy_reduced", NULL, 3},
+    {"z_a_star_jump", as_z_partner, "a_star", NULL, 3},
     {"models_agree", as_judged, NULL, NULL, 0.7},
     STUDENT("T_ratio"),
     {"ehs_T_ci_percent", as_percent_ci_partner, "T", NULL, 2},
-    {"ehs_T_paper_judged", as_has, "ehs_T_paper", NULL, 0},
     {"models_differ", as_judged, NULL, NULL, -0.85},
     STUDENT("v12_ratio"),
     /* E §V A: <V12^3>/<V12^3>_0 about 1 + 0.27 a2 */
@@ -226,14 +286,30 @@ static const vfy_metric metrics[] = {
     {.name = AS_NAME Q " vs paper E ({" Q "_paper:%g})", .rule = vfy_rule_printed,       \
      .value = Q, .expected = Q "_paper", .tol = DIGITS, .plus = Q "_ci_t",                \
      .guard = {vfy_guard_only_at_least, Q "_paper", NULL, 0.0, NULL}}
+#define AS_EHS_BGK_NAME(WHAT, Q) AS_NAME WHAT " within 5% of BGK ({" Q "_bgk:%.4f})"
 #define AS_EHS_BGK(WHAT, Q)                                                          \
-    {.name = AS_NAME WHAT " within 5% of BGK ({" Q "_bgk:%.4f})", .rule = vfy_rule_absolute, \
+    {.name = AS_EHS_BGK_NAME(WHAT, Q), .rule = vfy_rule_absolute,                          \
      .value = Q, .expected = Q "_bgk", .rtol = 0.05, .plus = Q "_ci_t",                    \
      .guard = {vfy_guard_only_at_least, "is_ehs", NULL, 1.0, NULL}}
 #define AS_READ(Q, TOL)                                                              \
     {.name = AS_NAME Q " vs paper E ({" Q "_paper:%g}, read to " #TOL ")",                 \
      .rule = vfy_rule_absolute, .value = Q, .expected = Q "_paper", .tol = TOL,           \
      .plus = Q "_ci_t", .guard = {vfy_guard_only_at_least, Q "_paper", NULL, 0.0, NULL}}
+#define AS_JUMP_CHECK_PXY AS_NAME "-Pxy/nT of the time-step row as the jump scheme's"
+static const vfy_difference ehs_pxy_difference = {
+    .paper = "E §V: for alpha >= 0.7 the rheology of IHS and EHS is practically the same "
+             "(read: -Pxy/nT within 3%)",
+    .evidence = "EHS lies 3.5-4.4% below IHS in -Pxy/nT at alpha = 0.7-0.85 by the time-step "
+                "scheme and by the jump scheme alike (gdsmc run as.ini, n = 10000, N = 32, "
+                "a tau0 = 4: alpha = 0.7 -4.2% time step, -4.4% jump; docs/differences.md)",
+    .judged_by = AS_JUMP_CHECK_PXY};
+static const vfy_difference ehs_T_difference = {
+    .paper = "E §V A: at alpha = 0.5 the EHS temperature lies about 12% above the IHS one",
+    .evidence = "an independent simulation (issue 16) and this one find about 9% (+9.1% ± 2.0 "
+                "at paper sizes, a tau0 = 4; reports/paper/as-steady.csv, ehs_T_percent); "
+                "EHS a*, -Pxy/nT and (Pxx - Pyy)/nT lie within 5% of BGK there "
+                "(docs/differences.md)",
+    .judged_by = AS_EHS_BGK_NAME("a*", "a_star")};
 static const vfy_check_spec checks[] = {
     {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
     /* E §V: the steady state does not depend on the initial shear rate */
@@ -247,12 +323,22 @@ static const vfy_check_spec checks[] = {
      .value = "z_N2_rate", .lo = 0.0, .hi = 1.0, .guard = SLOW},
     {.name = AS_NAME "a2 as at a tau0 = 4", .rule = vfy_rule_range, .value = "z_a2_rate",
      .lo = 0.0, .hi = 1.0, .guard = SLOW},
+    /* The time-step scheme's EHS steady state is the jump scheme's (no splitting
+     * error): the difference within the quadrature sum of the Student's t
+     * half-widths (z <= 1), on the jump rows */
+    {.name = AS_JUMP_CHECK_PXY, .rule = vfy_rule_range, .value = "z_Pxy_jump", .lo = 0.0,
+     .hi = 1.0, .guard = {vfy_guard_only_at_least, "is_jump", NULL, 1.0, NULL}},
+    {.name = AS_NAME "a* of the time-step row as the jump scheme's", .rule = vfy_rule_range,
+     .value = "z_a_star_jump", .lo = 0.0, .hi = 1.0,
+     .guard = {vfy_guard_only_at_least, "is_jump", NULL, 1.0, NULL}},
     /* E §V: "for alpha >= 0.7 the rheological properties of IHS and EHS are
-     * practically the same" in a* and -Pxy/nT: within 3% */
+     * practically the same" in a* and -Pxy/nT: within 3%.  In -Pxy/nT EHS lies
+     * 3.5-4.4% below IHS by both schemes: a known difference */
     {.name = AS_NAME "a* within 3% of IHS", .rule = vfy_rule_range,
      .value = "ehs_a_star_percent", .lo = -3.0, .hi = 3.0, .guard = MODELS_AGREE},
     {.name = AS_NAME "-Pxy/nT within 3% of IHS", .rule = vfy_rule_range,
-     .value = "ehs_Pxy_percent", .lo = -3.0, .hi = 3.0, .guard = MODELS_AGREE},
+     .value = "ehs_Pxy_percent", .lo = -3.0, .hi = 3.0, .guard = MODELS_AGREE,
+     .differs = &ehs_pxy_difference},
     /* the BGK model beside the simulation: a sanity bound (10%) that a shear of
      * the wrong sign (-Pxy/nT < 0) or a missing drag fails */
     {.name = AS_NAME "a* within 10% of BGK ({a_star_bgk:%.4f})", .rule = vfy_rule_absolute,
@@ -281,13 +367,14 @@ static const vfy_check_spec checks[] = {
      .rule = vfy_rule_absolute, .value = "ehs_N2_percent", .expected = "ehs_N2_paper",
      .tol = 10.0, .guard = {vfy_guard_only_at_most, "ehs_N2_paper", NULL, 0.0, NULL}},
     /* E prints "about 12%" for the EHS temperature above IHS at alpha = 0.5; an
-     * independent simulation (issue 16) and this one find about 9%: reported */
+     * independent simulation (issue 16) and this one find about 9%: a known
+     * difference, the EHS steady state judged by a* against BGK (a* = a tau_eta(T)
+     * ~ T^(-1/2) carries T) */
     {.name = AS_NAME "T {ehs_T_percent:%+.1f}% above IHS vs paper E ({ehs_T_paper:%.0f}%)",
      .rule = vfy_rule_absolute, .value = "ehs_T_percent", .expected = "ehs_T_paper",
-     .tol = 1.0,
-     .guard = {vfy_guard_reported_at_most, "ehs_T_paper_judged", NULL, 0.0,
-               "reported, not judged: E's 12% is not what two independent simulations find "
-               "({ehs_T_percent:%+.1f}% ± {ehs_T_ci_percent:%.1f} here; see the notes)"}},
+     .tol = 1.0, .plus = "ehs_T_ci_percent",
+     .guard = {vfy_guard_only_at_least, "ehs_T_paper", NULL, 0.0, NULL},
+     .differs = &ehs_T_difference},
     /* E §V A: <V12^3>/<V12^3>_0 about 1 + 0.27 a2, to 0.005 (the 0.27 read to
      * +-0.01 moves it by 0.004 at a2 = 0.37), plus the half-width */
     {.name = AS_NAME "<V12^3>/<V12^3>_0 = 1 + 0.27 a2 ({v12_sonine:%.4f})",
@@ -315,6 +402,7 @@ const vfy_case_desc vfy_as_steady = {
     .power_keys = "shear.rate=1.05 collisions.beta=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = paper_rows}, .quick_rows = {.rows = quick_rows, .sets = AS_QUICK_SETS},
+    .derive = as_steady_window, .adjust = vfy_adjust_jump_rows,
     .values = values, .metrics = metrics, .checks = checks, .columns = columns,
     .figures = {{.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = {"DSMC=a_star"},
                  .refs = {"BGK=a_star_bgk"}, .x_lo = 0.5, .x_hi = 0.95,
@@ -346,9 +434,15 @@ const vfy_case_desc vfy_as_steady = {
         "the half-widths for alpha <= 0.85 (E §V); a* and -Pxy/nT within 10% of the BGK model "
         "(a sanity bound); E's printed numbers at alpha = 0.9 (-Pxy/nT, (Pxx - Pyy)/nT to "
         "their last digit, T_s/T0 to the unit, each plus the half-width) and alpha = 0.5 "
-        "((Pzz - Pyy)/nT of EHS about 40% below IHS, to 10 points; E's EHS temperature 12% "
-        "above IHS is reported, not judged: the issue's independent simulation found 9%, as "
-        "does this one, ehs_T_percent). Total wall time "
+        "((Pzz - Pyy)/nT of EHS about 40% below IHS, to 10 points). The EHS rows at alpha = "
+        "0.7-0.85 have a twin by the jump scheme (ehs-jump, no splitting error): the time-step "
+        "row's a* and -Pxy/nT must agree with it (z <= 1). Known differences from E (DIFFERS, "
+        "docs/differences.md): EHS -Pxy/nT 3-4.7% below IHS at alpha = 0.7-0.85, by both "
+        "schemes, where E finds the two practically the same; the EHS temperature at alpha = "
+        "0.5 about 9% above IHS (an independent simulation found 9% too), where E prints 12%. "
+        "The averaging window of each row starts when the BGK model's T(t) from the row's "
+        "initial state has come within 1e-4 of its steady value, and ends at 1.25 times "
+        "that. Total wall time "
         "{wall_total:%.1f} s."};
 
 /* ================================================================ as-transient */
@@ -482,12 +576,13 @@ static int asx_bgk_eta(const vfy_row *row, double *a, double *eta)
  * bins (0.2, 0.4), (0.4, 0.8), (0.8, 1.6), in percent: with a = NULL the
  * largest |average|, with a = "0", "1" or "2" that bin's signed average (NAN
  * where it holds fewer than 3 outputs); x = 2, an EHS row against its IHS
- * partner; x = 3, an IHS row against the BGK model.  NAN for the other rows,
- * and at quick sizes. */
+ * partner; x = 3, an IHS row against the BGK model; x = 4, an EHS row against
+ * the BGK model.  NAN for the other rows, and at quick sizes. */
 static double asx_eta_collapse(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    const int bgk = m->x == 3;
-    if (vfy_values_get(&row->values, "is_ehs") != (bgk ? 0.0 : 1.0) || run->o->size == VFY_QUICK)
+    const int bgk = m->x >= 3;
+    if (vfy_values_get(&row->values, "is_ehs") != (m->x == 3 ? 0.0 : 1.0)
+        || run->o->size == VFY_QUICK)
         return NAN;   /* quick sizes: a bin's average is +-5%, as wide as the bound */
     const vfy_row *other = bgk ? row : as_partner(run, row, 2);
     if (other == NULL)
@@ -588,6 +683,7 @@ static const vfy_metric transient_metrics[] = {
     {"s_relax", asx_s_relax, NULL, NULL, 1.0},
     {"eta_ehs_percent", asx_eta_collapse, NULL, NULL, 2},
     {"eta_bgk_percent", asx_eta_collapse, NULL, NULL, 3},
+    {"eta_ehs_bgk_percent", asx_eta_collapse, NULL, NULL, 4},
     {"eta_bgk_02_04", asx_eta_collapse, "0", NULL, 3},
     {"eta_bgk_04_08", asx_eta_collapse, "1", NULL, 3},
     {"eta_bgk_08_16", asx_eta_collapse, "2", NULL, 3},
@@ -600,6 +696,16 @@ static const vfy_metric transient_metrics[] = {
     {"ehs_09", as_judged, NULL, NULL, 0.9},
     {NULL, NULL, NULL, NULL, 0}};
 
+#define ASX_ETA_EHS_BGK AS_NAME "EHS eta*(a*) within 5% of BGK's (0.2 < a* < 1.6)"
+static const vfy_difference eta_collapse_difference = {
+    .paper = "E Fig. 10: eta*(a*) of IHS, EHS and BGK practically coincide for 0.2 < a* < 1.6 "
+             "(read: within 5%)",
+    .evidence = "E's own Navier-Stokes limits (a* -> 0), 1.3 for IHS and 1.1 for EHS and BGK, "
+                "are 18% apart; at alpha = 0.5, a tau0 = 0.1, IHS lies +9.5%, +3.7%, +2.1% "
+                "above BGK in the a* bins (0.2, 0.4), (0.4, 0.8), (0.8, 1.6) while EHS lies "
+                "within 2.3% of BGK in all three (reports/paper/as-transient.csv; "
+                "docs/differences.md)",
+    .judged_by = ASX_ETA_EHS_BGK};
 static const vfy_check_spec transient_checks[] = {
     {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
     /* E Fig. 6: fewer collisions than in local equilibrium (<|V12|> < <|V12|>_0),
@@ -614,15 +720,22 @@ static const vfy_check_spec transient_checks[] = {
                      "({s_relax_paper:%g}, to 50%)",
      .rule = vfy_rule_relative, .value = "s_relax", .expected = "s_relax_paper", .tol = 0.5,
      .guard = {vfy_guard_only_at_least, "s_relax_paper", NULL, 0.0, NULL}},
-    /* E Fig. 10: eta*(a*) of EHS and BGK as IHS's for 0.2 < a* < 1.6 (alpha = 0.5),
-     * read as within 5% in each a* bin (the case's notes: E's own eta*_NS, 1.3 for
-     * IHS and 1.1 for EHS and BGK, part them by 18% at a* = 0) */
+    /* E Fig. 10: eta*(a*) of IHS, EHS and BGK "practically coincide" for 0.2 < a* <
+     * 1.6, read as within 5% in each a* bin.  The data support it for EHS against
+     * BGK, the model of the EHS gas (E §II B), whose Navier-Stokes limits E prints
+     * alike (1.1): that check judges the solver; IHS's (1.3) lies apart at small a*,
+     * a known difference (docs/differences.md) */
+    {.name = ASX_ETA_EHS_BGK, .rule = vfy_rule_range, .value = "eta_ehs_bgk_percent",
+     .lo = 0.0, .hi = 5.0,
+     .guard = {vfy_guard_only_at_least, "eta_ehs_bgk_percent", NULL, 0.0, NULL}},
     {.name = AS_NAME "eta*(a*) within 5% of IHS's (0.2 < a* < 1.6)",
      .rule = vfy_rule_range, .value = "eta_ehs_percent", .lo = 0.0, .hi = 5.0,
-     .guard = {vfy_guard_only_at_least, "eta_ehs_percent", NULL, 0.0, NULL}},
+     .guard = {vfy_guard_only_at_least, "eta_ehs_percent", NULL, 0.0, NULL},
+     .differs = &eta_collapse_difference},
     {.name = AS_NAME "eta*(a*) within 5% of BGK's (0.2 < a* < 1.6)",
      .rule = vfy_rule_range, .value = "eta_bgk_percent", .lo = 0.0, .hi = 5.0,
-     .guard = {vfy_guard_only_at_least, "eta_bgk_percent", NULL, 0.0, NULL}},
+     .guard = {vfy_guard_only_at_least, "eta_bgk_percent", NULL, 0.0, NULL},
+     .differs = &eta_collapse_difference},
     /* E Figs. 5, 7: at alpha = 0.9 IHS, EHS and BGK alike in T against s ("practically
      * indistinguishable") and in s(t) */
     {.name = AS_NAME "T(s) within 3% of BGK's T(s0) (worst at s = {T_bgk_at_s:%.2f})", .rule = vfy_rule_range,
@@ -637,7 +750,8 @@ static const char transient_columns[] =
     "alpha:%.2f model:%s a_tau0:%g T_ratio:%.5g a_star:%.5f Pxy_reduced:%.5f N1:%.5f "
     "s_ratio_end:%.5f s_ratio_upper:%.5f collision_ratio:%.5f "
     "collision_ratio_ci=collision_ratio_ci_t:%.5f z_collision_rate:%.2f s_relax:%.2f "
-    "eta_ehs_02_04:%+.2f eta_ehs_04_08:%+.2f eta_ehs_08_16:%+.2f eta_bgk_02_04:%+.2f "
+    "eta_ehs_bgk_percent:%.2f eta_ehs_02_04:%+.2f eta_ehs_04_08:%+.2f eta_ehs_08_16:%+.2f "
+    "eta_bgk_02_04:%+.2f "
     "eta_bgk_04_08:%+.2f eta_bgk_08_16:%+.2f "
     "T_bgk_percent:%.2f T_bgk_at_s:%.2f s_ehs_percent:%+.2f violations:%.0f " VFY_COST_COLUMNS;
 
@@ -907,13 +1021,15 @@ const vfy_case_desc vfy_as_transient = {
         "duration of the transient; E: s about 20 at alpha = 0.5, 40 at 0.9); "
         "eta_ehs_02_04, _04_08, _08_16: the mean of eta*/eta*_IHS - 1 at the same a*, in "
         "percent, over the outputs with 2 <= s <= 50 (E Fig. 10) and a* in (0.2, 0.4), (0.4, "
-        "0.8), (0.8, 1.6); eta_bgk_* the same for IHS against BGK. E says the three curves "
+        "0.8), (0.8, 1.6); eta_bgk_* the same for IHS against BGK; eta_ehs_bgk_percent the "
+        "largest |bin average| of EHS against BGK. E says the three curves "
         "\"practically coincide, at least in the interval 0.2 < a* < 1.6\", yet prints their "
         "Navier-Stokes limits (a* -> 0) as 1.3 for IHS and 1.1 for EHS and BGK, 18% apart: "
         "the a tau0 = 0.1 rows, which sweep a* up from about 0.2, show the IHS curve above "
         "the other two by about that much at small a* and converging to them as a* grows "
-        "(the bins' columns), so the 5% reading fails at alpha = 0.5 in (0.2, 0.4) and is "
-        "kept failing as evidence. T_bgk_percent: the largest |T(s)/T_bgk(s0 = s) - 1| over "
+        "(the bins' columns). So EHS against BGK (within 5%) judges the solver, and the 5% "
+        "reading of IHS against either is a known difference (DIFFERS, "
+        "docs/differences.md). T_bgk_percent: the largest |T(s)/T_bgk(s0 = s) - 1| over "
         "the run (E Figs. 7-8 plot against s, the BGK model against its s0), T_bgk_at_s where; "
         "s_ehs_percent: "
         "s'/beta of EHS against IHS's s at the end. Figures: {case}-collisions (E Figs. 5-6), -stress (Figs. "

@@ -35,9 +35,9 @@ const char *vfy_verdict_word(vfy_verdict v);
 typedef struct vfy_check {
     vfy_verdict verdict;
     char group[32];   /* the report's group when it was made: the case */
-    char id[96];      /* the report's check id when it was made (the check's
+    char id[160];     /* the report's check id when it was made (the check's
                          name before a row fills it in), or "" */
-    char row[96];     /* the report's row when it was made, or "" */
+    char row[128];    /* the report's row when it was made, or "" */
     char name[96];
     char detail[320];
     double value, reference;   /* what was judged and against what (NaN where

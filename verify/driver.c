@@ -390,6 +390,12 @@ vfy_guard_result vfy_guard_unless(const vfy_case_run *run, const vfy_row *row, c
     return lookup(run, row, g->a) > 0.0 ? VFY_GUARD_SKIP : VFY_JUDGE;
 }
 
+vfy_guard_result vfy_guard_only_unless(const vfy_case_run *run, const vfy_row *row,
+                                       const vfy_guard *g)
+{
+    return lookup(run, row, g->a) > 0.0 ? VFY_OMIT : VFY_JUDGE;
+}
+
 vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,
                                             const vfy_guard *g)
 {
@@ -783,9 +789,13 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
             vfy_skip(r, name, vfy_expand(why, sizeof why, c->guard.reason, run, row));
             continue;
         }
-        if (c->differs != NULL) {
+        if (c->differs != NULL) {   /* the judging check by its name after the row's label */
+            const char *by = c->differs->judged_by, *prefix = row_label_template(run->d);
+            char judge[200];
+            if (strncmp(by, prefix, strlen(prefix)) == 0 && by[strlen(prefix)] == ' ')
+                by += strlen(prefix) + 1;
             snprintf(differs, sizeof differs, "%s; judged by \"%s\" (docs/differences.md)",
-                     c->differs->paper, c->differs->judged_by);
+                     c->differs->paper, vfy_expand(judge, sizeof judge, by, run, row));
             r->differs = differs;
         }
         c->rule(r, name, run, row, c);

@@ -406,6 +406,9 @@ vfy_guard_func vfy_guard_at_least;
 vfy_guard_func vfy_guard_only_at_least;
 /* Judged unless value a is positive (a row marked "$a=1"); then SKIP. */
 vfy_guard_func vfy_guard_unless;
+/* Judged unless value a is positive; then omitted (another check, with a
+ * known difference, judges that row). */
+vfy_guard_func vfy_guard_only_unless;
 /* Reported, not judged (SKIP with the reason) while value a <= x; else
  * omitted: a paper's number shown beside ours that cannot be judged. */
 vfy_guard_func vfy_guard_reported_at_most;

@@ -173,4 +173,12 @@
  * the O(1/n) bias, allowed 2/n. */
 #define VFY_TOL_HARD_FINITE_N_BIAS 2.0
 
+/* ---------------------------------------------------------- paper E (as) */
+
+/* as-steady averages from the time the BGK model's T(t) stays within this
+ * relative band of its steady value (as_steady_window): a* ~ T^(-1/2) is then
+ * within 5e-5 of its steady value, 1/30 of the smallest half-width of a* at
+ * paper sizes (0.0010 on 0.67, N = 8). */
+#define VFY_TOL_AS_RELAX 1e-4
+
 #endif
