@@ -611,6 +611,50 @@ add_test(NAME cli_verify_junit
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/run_junit.cmake)
 set_tests_properties(cli_verify_junit PROPERTIES TIMEOUT 300 LABELS regression
                      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+# ... and of a run with known differences (brs-ex1's Table 1 Conf: DIFFERS,
+# JUnit <skipped> "DIFFERS: ", exit 0), whose verdicts files and index hold the
+# same verdicts (docs/verdicts.md).
+add_test(NAME cli_verify_junit_differs
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCODE=0 -DPYTHON=${PYTHON3}
+                 -DCHECK=${CMAKE_CURRENT_SOURCE_DIR}/check_junit.py
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/junit-differs
+                 -DREPORTS=${CMAKE_CURRENT_BINARY_DIR}/junit-differs-reports
+                 "-DARGS=--suite;quick;--case;grw-ex3,brs-ex1;--out;${CMAKE_CURRENT_BINARY_DIR}/junit-differs-reports"
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/run_junit.cmake)
+set_tests_properties(cli_verify_junit_differs PROPERTIES TIMEOUT 300 LABELS regression
+                     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+
+# The gate measured (docs/verdicts.md).  Every case catches each error its
+# description declares (must_fail), at quick sizes, under the scenes' seeds.
+gdsmc_add_cli_test(cli_verify_must_fail 0 "\nmust-fail: 0 declared errors not caught\n"
+                   verify --suite quick --must-fail --out ${CMAKE_CURRENT_BINARY_DIR}/must-fail)
+set_tests_properties(cli_verify_must_fail PROPERTIES LABELS verification TIMEOUT 1200)
+# --perturb, --seeds: bad input exits 2 before any work, naming what is wrong
+gdsmc_add_cli_test(cli_verify_perturb_unknown_key 2
+                   "--perturb heating.nope: unknown key \\(allowed type, strength, keep_temperature\\)"
+                   verify --suite quick --case grw-ex3 --perturb heating.nope=1.1)
+gdsmc_add_cli_test(cli_verify_perturb_factor 2
+                   "--perturb heating.strength: factor '0' is not a positive number"
+                   verify --suite quick --case grw-ex3 --perturb heating.strength=0)
+gdsmc_add_cli_test(cli_verify_perturb_not_a_number_key 2
+                   "--perturb heating.type: not a number key"
+                   verify --suite quick --case grw-ex3 --perturb heating.type=1.1)
+gdsmc_add_cli_test(cli_verify_perturb_absent_section 2
+                   "--perturb shear.rate=1.1: shear.rate: the scene [^\n]*grw-ex3.ini has no \\[shear\\] section"
+                   verify --suite quick --case grw-ex3 --perturb shear.rate=1.1
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/perturb-absent)
+gdsmc_add_cli_test(cli_verify_perturb_refused_value 2
+                   "--perturb: a perturbed value is refused: [^\n]*collisions.restitution"
+                   verify --suite quick --case grw-ex3 --perturb collisions.restitution=3
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/perturb-refused)
+gdsmc_add_cli_test(cli_verify_seeds_too_few 2 "--seeds '1': allowed an integer 2 <= K <= 1000"
+                   verify --suite quick --seeds 1)
+# a 5% too strong heating fails grw-ex3 (its must_fail)
+gdsmc_add_cli_test(cli_verify_perturb_caught 1
+                   "\nFAIL  grw-ex3 n=64 T_raw vs exact finite-n expectation: .*\nverify: [0-9]+ passed, [1-9][0-9]* failed"
+                   verify --suite quick --case grw-ex3 --perturb heating.strength=1.05
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/perturb-caught)
+set_tests_properties(cli_verify_perturb_caught PROPERTIES LABELS verification)
 
 # What a solver does not report is a SKIP saying so, never a PASS; a check
 # that models the built-in engine's own streams is a SKIP for any other.

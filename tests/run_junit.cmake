@@ -1,12 +1,13 @@
 # --junit (issue 14): the JUnit report of a run whose checks pass, fail and
-# skip parses (Python's xml.etree) and holds exactly the verdict lines.
+# skip parses (Python's xml.etree) and holds exactly the verdict lines; with
+# REPORTS (the run's --out), so do the verdicts files and the index there.
 file(REMOVE ${OUT}.xml)
 execute_process(COMMAND ${EXE} verify ${ARGS} --junit ${OUT}.xml
                 RESULT_VARIABLE rc OUTPUT_FILE ${OUT}.txt ERROR_QUIET)
 if(NOT rc EQUAL CODE)
   message(FATAL_ERROR "exit ${rc}, expected ${CODE}")
 endif()
-execute_process(COMMAND ${PYTHON} ${CHECK} ${OUT}.xml ${OUT}.txt
+execute_process(COMMAND ${PYTHON} ${CHECK} ${OUT}.xml ${OUT}.txt ${REPORTS}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the JUnit report does not match the verdicts:\n${out}${err}")
