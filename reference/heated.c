@@ -110,6 +110,18 @@ double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure clo
     return pow(2.0 * p->beta / L, 2.0 / 3.0);
 }
 
+double ref_heated_vhs_T_steady_maxwellian(const ref_heated_params *p, double lambda)
+{
+    if (!valid(p) || !(lambda >= 0.0 && lambda <= 1.0))
+        return NAN;
+    const double q = 2.0 + lambda;
+    const double g_moment = pow(4.0, 0.5 * q) * tgamma(0.5 * (3.0 + q)) / tgamma(1.5);
+    const double L = p->gamma * (1.0 - p->alpha * p->alpha) / 24.0 * 4.0 * PI * p->C * g_moment;
+    if (L == 0.0)
+        return p->beta > 0.0 ? INFINITY : p->T0;
+    return pow(2.0 * p->beta / L, 2.0 / q);
+}
+
 typedef struct hs_rhs_params {
     double two_beta, L;
 } hs_rhs_params;

@@ -55,6 +55,16 @@ typedef enum ref_heated_closure {
  * +inf when alpha = 1 and beta > 0, T0 when alpha = 1 and beta = 0. */
 double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure closure);
 
+/* The steady temperature of the Maxwellian closure for a VHS kernel B1 =
+ * 4 pi C |g|^lambda (0 <= lambda <= 1; docs/theory.md): with <|g|^p> = (4T)^(p/2)
+ * Gamma((3 + p)/2)/Gamma(3/2) over two Maxwellians at T, p = 2 + lambda,
+ *   2 beta = gamma (1 - alpha^2)/24 4 pi C 4^(p/2) Gamma((3 + p)/2)/Gamma(3/2) T^(p/2).
+ * Exact for Maxwell molecules (lambda = 0: T* = 2 beta/k, A.14); the ratio
+ * of the first-Sonine factor 1 + a2 p (p - 2)/16 (3 a2/16 for hard spheres) is
+ * its model error.  NaN for a bad p or lambda; +inf when alpha = 1 and beta >
+ * 0. */
+double ref_heated_vhs_T_steady_maxwellian(const ref_heated_params *p, double lambda);
+
 /* Integrate a closure with CVODE at times t[0..nt-1] (t[0] is the initial
  * time, where T = T0); T_out[m] = T(t[m]).  opt may be NULL (defaults).
  * Bad p, closure, t (NULL, nt = 0, not finite or not strictly increasing) or

@@ -266,6 +266,29 @@ static void test_hs_steady_closed_form(void **state)
     assert_true(isinf(ref_heated_hs_T_steady(&p, REF_HEATED_SONINE_CLOSURE)));
 }
 
+/* The VHS Maxwellian closure is the hard-sphere one at lambda = 1 and paper A's
+ * exact T_inf = 2 beta/k (A.14) for Maxwell molecules at lambda = 0; in between
+ * it follows <|g|^(2+lambda)> = 4^(1+lambda/2) Gamma((5+lambda)/2)/Gamma(3/2) T^(1+lambda/2):
+ * at lambda = 1/2 with Ex 5's parameters, 2 beta = 0.25 = (3/24) 4^(1.25)
+ * Gamma(2.75)/Gamma(1.5) T^1.25, Gamma(2.75)/Gamma(1.5) = 1.8148393, so T* =
+ * (0.25/(0.125 * 5.6568542 * 1.8148393))^(0.8) = 0.27020. */
+static void test_vhs_maxwellian_closure(void **state)
+{
+    (void)state;
+    ref_heated_params p = ex4();
+    assert_close(ref_heated_vhs_T_steady_maxwellian(&p, 1.0),
+                 ref_heated_hs_T_steady(&p, REF_HEATED_MAXWELLIAN_CLOSURE), 1e-14, 0);
+    assert_close(ref_heated_vhs_T_steady_maxwellian(&p, 0.0), ref_heated_maxwell_T_inf(&p),
+                 1e-14, 0);
+    const double g = tgamma(2.75) / tgamma(1.5);
+    assert_close(g, 1.8148393, 1e-7, 0);
+    assert_close(ref_heated_vhs_T_steady_maxwellian(&p, 0.5),
+                 pow(0.25 / (0.125 * pow(4.0, 1.25) * g), 0.8), 1e-14, 0);
+    assert_close(ref_heated_vhs_T_steady_maxwellian(&p, 0.5), 0.27020, 1e-4, 0);
+    assert_true(isnan(ref_heated_vhs_T_steady_maxwellian(&p, 1.5)));
+    assert_true(isnan(ref_heated_vhs_T_steady_maxwellian(NULL, 0.5)));
+}
+
 /* Integrated closures relax to the closed-form T* (t in [0, 40], rate ~1.6) and
  * start at T0; both closures and both methods. */
 static void test_hs_closure_reaches_steady_state(void **state)
@@ -601,6 +624,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_maxwell_closed_form),
+        cmocka_unit_test(test_vhs_maxwellian_closure),
         cmocka_unit_test(test_cvode_bdf_vs_closed_form),
         cmocka_unit_test(test_cvode_adams_vs_closed_form),
         cmocka_unit_test(test_cvode_tolerance_matters),

@@ -103,6 +103,16 @@ static double T_steady_sonine_at(const sim_scene *s)
     const ref_heated_params p = vfy_heated_params(s);
     return ref_heated_hs_T_steady(&p, REF_HEATED_SONINE_CLOSURE);
 }
+/* The Maxwellian closure's steady temperature of a white-noise heated gas of
+ * any kernel exponent (paper A Ex 6-8; exact for Maxwell molecules). */
+static double T_steady_maxwellian_at(const sim_scene *s)
+{
+    if (!s->heating.present || s->heating.type != SIM_HEATING_WHITE_NOISE
+        || !s->collisions.present)
+        return NAN;
+    const ref_heated_params p = vfy_heated_params(s);
+    return ref_heated_vhs_T_steady_maxwellian(&p, s->collisions.exponent);
+}
 static double T_star_le_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_LE); }
 static double T_star_grad_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_GRAD); }
 
@@ -167,6 +177,10 @@ static const vfy_reference registry[] = {
      eta_star_bgk_at},
     {"T_ratio_bgk", VFY_REF_VALUE, "paper E, BGK model: steady T_s/T0 at the scene's a tau0",
      T_ratio_bgk_at},
+    {"T_steady_maxwellian", VFY_REF_VALUE,
+     "paper A, white-noise heating: steady T of the Maxwellian closure, any kernel exponent "
+     "lambda (exact for Maxwell molecules)",
+     T_steady_maxwellian_at},
     /* values of paper B's hard-sphere scenes */
     {"T_star_le", VFY_REF_VALUE, "paper B (B.21): steady T of the local-equilibrium closure",
      T_star_le_at},
