@@ -71,6 +71,22 @@ sim_status vfy_io_error(const char *path, char *msg, size_t msglen)
     return SIM_EIO;
 }
 
+sim_status vfy_report_file_open(vfy_report_file *rf, const vfy_options *o, const char *file,
+                                char *msg, size_t msglen)
+{
+    snprintf(rf->path, sizeof rf->path, "%s/%s", o->out_dir, file);
+    rf->f = vfy_file_begin(rf->path, rf->tmp, sizeof rf->tmp);
+    return rf->f != NULL ? SIM_OK : vfy_io_error(rf->path, msg, msglen);
+}
+
+sim_status vfy_report_file_close(vfy_report_file *rf, char *msg, size_t msglen)
+{
+    const int ok = !ferror(rf->f);
+    if (vfy_file_commit(rf->f, rf->tmp, rf->path, ok) != 0 || !ok)
+        return vfy_io_error(rf->path, msg, msglen);
+    return SIM_OK;
+}
+
 
 void vfy_result_column(const sim_ensemble_result *r, int k, double *mean, double *ci)
 {

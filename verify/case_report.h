@@ -39,6 +39,21 @@ sim_status vfy_write_rows_so_far(const vfy_options *o, const char *name, const v
 /* msg = "PATH: cannot write: strerror(errno)"; returns SIM_EIO. */
 sim_status vfy_io_error(const char *path, char *msg, size_t msglen);
 
+/* A file of the report directory being written: out_dir/<file> through
+ * vfy_file_begin's FILE.tmp, renamed into place by vfy_report_file_close. */
+typedef struct vfy_report_file {
+    FILE *f;
+    char path[1100], tmp[1200];
+} vfy_report_file;
+
+/* Open o->out_dir/<file> for writing: SIM_OK, or SIM_EIO with msg. */
+sim_status vfy_report_file_open(vfy_report_file *rf, const vfy_options *o, const char *file,
+                                char *msg, size_t msglen);
+
+/* Close it and put it in place (removed if a write failed): SIM_OK, or
+ * SIM_EIO with msg. */
+sim_status vfy_report_file_close(vfy_report_file *rf, char *msg, size_t msglen);
+
 /* Observable k of every output time: mean[m] and (if ci != NULL) ci[m]. */
 void vfy_result_column(const sim_ensemble_result *r, int k, double *mean, double *ci);
 

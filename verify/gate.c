@@ -97,11 +97,10 @@ static sim_status write_seeds(const vfy_options *o, const seed_tally *t, size_t 
                               size_t clean, const size_t *fails_per_run, char *msg,
                               size_t msglen)
 {
-    char path[1200], tmp[1300];
-    snprintf(path, sizeof path, "%s/seeds.csv", o->out_dir);
-    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
-    if (f == NULL)
-        return vfy_io_error(path, msg, msglen);
+    vfy_report_file rf;
+    if (vfy_report_file_open(&rf, o, "seeds.csv", msg, msglen) != SIM_OK)
+        return SIM_EIO;
+    FILE *f = rf.f;
     fprintf(f, "# gdsmc %s verify --seeds %zu at %s sizes: run k uses the seed "
                "vfy_derived_seed(scene seed, k), k = 0 the scene's own\n",
             GDSMC_VERSION, K, o->size == VFY_QUICK ? "quick" : "paper");
@@ -112,12 +111,10 @@ static sim_status write_seeds(const vfy_options *o, const seed_tally *t, size_t 
         fprintf(f, "%s,\"%s\",%zu,%zu,%zu,%zu,%zu\n", t[i].group, t[i].name, runs,
                 t[i].n[VFY_PASS], t[i].n[VFY_FAIL], t[i].n[VFY_SKIP], t[i].n[VFY_DIFFERS]);
     }
-    if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
-        return vfy_io_error(path, msg, msglen);
-
-    snprintf(path, sizeof path, "%s/seeds.md", o->out_dir);
-    if ((f = vfy_file_begin(path, tmp, sizeof tmp)) == NULL)
-        return vfy_io_error(path, msg, msglen);
+    if (vfy_report_file_close(&rf, msg, msglen) != SIM_OK
+        || vfy_report_file_open(&rf, o, "seeds.md", msg, msglen) != SIM_OK)
+        return SIM_EIO;
+    f = rf.f;
     fprintf(f, "# False alarms: %zu runs at %s sizes\n\n", K,
             o->size == VFY_QUICK ? "quick" : "paper");
     fprintf(f, "Made by `gdsmc verify --seeds %zu` (gdsmc %s). Run k draws every scene's "
@@ -146,9 +143,7 @@ static sim_status write_seeds(const vfy_options *o, const seed_tally *t, size_t 
                                               + t[i].n[VFY_DIFFERS],
                         t[i].first_run, t[i].first_fail);
     }
-    if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
-        return vfy_io_error(path, msg, msglen);
-    return SIM_OK;
+    return vfy_report_file_close(&rf, msg, msglen);
 }
 
 sim_status vfy_seeds(const char *suite, const char *cases, const vfy_options *o, size_t K,
@@ -308,11 +303,10 @@ typedef struct power_row {
 static sim_status write_power(const vfy_options *o, const power_row *rows, size_t count,
                               char *msg, size_t msglen)
 {
-    char path[1200], tmp[1300];
-    snprintf(path, sizeof path, "%s/power.csv", o->out_dir);
-    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
-    if (f == NULL)
-        return vfy_io_error(path, msg, msglen);
+    vfy_report_file rf;
+    if (vfy_report_file_open(&rf, o, "power.csv", msg, msglen) != SIM_OK)
+        return SIM_EIO;
+    FILE *f = rf.f;
     fprintf(f, "# gdsmc %s verify --power at %s sizes: relative errors %g%% .. %g%% of the "
                "solver's value, each under %d seeds; smallest_detected is the first caught by "
                "every seed (empty: none up to %g%%)\n",
@@ -330,12 +324,10 @@ static sim_status write_power(const vfy_options *o, const power_row *rows, size_
             fputc(',', f);
         fprintf(f, ",%.2f\n", rows[i].cpu_s);
     }
-    if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
-        return vfy_io_error(path, msg, msglen);
-
-    snprintf(path, sizeof path, "%s/power.md", o->out_dir);
-    if ((f = vfy_file_begin(path, tmp, sizeof tmp)) == NULL)
-        return vfy_io_error(path, msg, msglen);
+    if (vfy_report_file_close(&rf, msg, msglen) != SIM_OK
+        || vfy_report_file_open(&rf, o, "power.md", msg, msglen) != SIM_OK)
+        return SIM_EIO;
+    f = rf.f;
     fprintf(f, "# Power: the smallest error each case detects (%s sizes)\n\n"
                "Made by `gdsmc verify --power` (gdsmc %s). For each key a case declares in "
                "its `must_fail` (the errors it must catch) or `power_keys` (measured, not "
@@ -360,8 +352,8 @@ static sim_status write_power(const vfy_options *o, const power_row *rows, size_
             fprintf(f, " | – | – | %.1f |\n", rows[i].cpu_s);
     }
     fputs("\nFigure: power.png, the smallest error detected against the CPU seconds.\n", f);
-    if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
-        return vfy_io_error(path, msg, msglen);
+    if (vfy_report_file_close(&rf, msg, msglen) != SIM_OK)
+        return SIM_EIO;
 
     double *x = malloc((count ? count : 1) * sizeof *x), *y = malloc((count ? count : 1) * sizeof *y),
            *ci = calloc(count ? count : 1, sizeof *ci);

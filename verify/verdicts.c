@@ -68,11 +68,12 @@ static void csv_number(FILE *f, double x)
 sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_report *r,
                               double wall_s, double cpu_s, char *msg, size_t msglen)
 {
-    char path[1100], tmp[1100];
-    vfy_report_path(o, name, "-verdicts.csv", path, sizeof path);
-    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
-    if (f == NULL)
-        return vfy_io_error(path, msg, msglen);
+    char file[128];
+    snprintf(file, sizeof file, "%s-verdicts.csv", name);
+    vfy_report_file rf;
+    if (vfy_report_file_open(&rf, o, file, msg, msglen) != SIM_OK)
+        return SIM_EIO;
+    FILE *f = rf.f;
     size_t n[VFY_VERDICTS] = {0};
     for (size_t i = 0; i < r->count; i++)
         if (strcmp(r->checks[i].group, name) == 0)
@@ -102,9 +103,7 @@ sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_
         csv_field(f, c->detail);
         fputc('\n', f);
     }
-    if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
-        return vfy_io_error(path, msg, msglen);
-    return SIM_OK;
+    return vfy_report_file_close(&rf, msg, msglen);
 }
 
 /* ------------------------------------------------------------ the index */
@@ -196,11 +195,10 @@ static void figure_links(FILE *f, const vfy_options *o, const char *c)
 
 sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, size_t msglen)
 {
-    char path[1100], tmp[1100];
-    snprintf(path, sizeof path, "%s/README.md", o->out_dir);
-    FILE *f = vfy_file_begin(path, tmp, sizeof tmp);
-    if (f == NULL)
-        return vfy_io_error(path, msg, msglen);
+    vfy_report_file rf;
+    if (vfy_report_file_open(&rf, o, "README.md", msg, msglen) != SIM_OK)
+        return SIM_EIO;
+    FILE *f = rf.f;
     fprintf(f, "# Verdicts: %s\n\n"
                "Made by `gdsmc verify` from the `<case>-verdicts.csv` files in this directory "
                "(one line per check: its id, row, verdict, value, reference, bound and "
@@ -246,7 +244,5 @@ sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, s
             read_verdicts(o, vfy_case_at(i)->name, &cv, f, lists[k].v);
         }
     }
-    if (vfy_file_commit(f, tmp, path, !ferror(f)) != 0)
-        return vfy_io_error(path, msg, msglen);
-    return SIM_OK;
+    return vfy_report_file_close(&rf, msg, msglen);
 }
