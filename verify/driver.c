@@ -396,12 +396,6 @@ vfy_guard_result vfy_guard_only_unless(const vfy_case_run *run, const vfy_row *r
     return lookup(run, row, g->a) > 0.0 ? VFY_OMIT : VFY_JUDGE;
 }
 
-vfy_guard_result vfy_guard_reported_at_most(const vfy_case_run *run, const vfy_row *row,
-                                            const vfy_guard *g)
-{
-    return lookup(run, row, g->a) <= g->x ? VFY_GUARD_SKIP : VFY_OMIT;
-}
-
 vfy_guard_result vfy_guard_after_first(const vfy_case_run *run, const vfy_row *row,
                                        const vfy_guard *g)
 {

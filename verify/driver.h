@@ -409,9 +409,6 @@ vfy_guard_func vfy_guard_unless;
 /* Judged unless value a is positive; then omitted (another check, with a
  * known difference, judges that row). */
 vfy_guard_func vfy_guard_only_unless;
-/* Reported, not judged (SKIP with the reason) while value a <= x; else
- * omitted: a paper's number shown beside ours that cannot be judged. */
-vfy_guard_func vfy_guard_reported_at_most;
 /* Omitted on the first row (a ratio to the previous row). */
 vfy_guard_func vfy_guard_after_first;
 /* Omitted on the first row; judged when value a exceeds x times value b on
