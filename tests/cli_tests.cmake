@@ -649,6 +649,16 @@ gdsmc_add_cli_test(cli_verify_perturb_refused_value 2
                    --out ${CMAKE_CURRENT_BINARY_DIR}/perturb-refused)
 gdsmc_add_cli_test(cli_verify_seeds_too_few 2 "--seeds '1': allowed an integer 2 <= K <= 1000"
                    verify --suite quick --seeds 1)
+# --seeds and --power run and say where their tables are (brs-ex1: a second a run)
+gdsmc_add_cli_test(cli_verify_seeds 0
+                   "seeds: 2 of 2 runs passed whole; 0 checks failed in more than one run \\([^)]*/seeds.md\\)\n.*seeds: run 2 of 2: [0-9]+ passed, 0 failed"
+                   verify --suite quick --case brs-ex1 --seeds 2
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/seeds)
+gdsmc_add_cli_test(cli_verify_power 0
+                   "power: [^\n]*/power.md\n.*power: brs-ex1 collisions.constant=1.05: caught under 3 of 3 seeds\n"
+                   verify --suite quick --case brs-ex1 --power --out ${CMAKE_CURRENT_BINARY_DIR}/power)
+set_tests_properties(cli_verify_seeds cli_verify_power PROPERTIES LABELS verification
+                     TIMEOUT 600)
 # a 5% too strong heating fails grw-ex3 (its must_fail)
 gdsmc_add_cli_test(cli_verify_perturb_caught 1
                    "\nFAIL  grw-ex3 n=64 T_raw vs exact finite-n expectation: .*\nverify: [0-9]+ passed, [1-9][0-9]* failed"

@@ -11,6 +11,7 @@
 #include "driver.h"
 #include "figure.h"
 #include "table.h"
+#include "verdicts.h"
 
 int vfy_must_fail_at(const char *must_fail, size_t i, char *buf, size_t len)
 {
@@ -65,9 +66,11 @@ static double seconds_since(const struct timespec *t0)
 
 /* ------------------------------------------------------------ --seeds */
 
-/* A check's verdicts over the runs, by its case and name. */
+/* A check's verdicts over the runs, by its case, id (the name before a row
+ * fills it in: a name may carry a measured value) and row; its name as the
+ * first run printed it. */
 typedef struct seed_tally {
-    char group[32], name[96];
+    char group[32], id[160], row[128], name[96];
     size_t n[VFY_VERDICTS];
     char first_fail[320];   /* the detail of its first FAIL */
     size_t first_run;
@@ -75,8 +78,10 @@ typedef struct seed_tally {
 
 static seed_tally *tally_find(seed_tally **t, size_t *count, size_t *cap, const vfy_check *c)
 {
+    const char *id = c->id[0] ? c->id : c->name;
     for (size_t i = 0; i < *count; i++)
-        if (strcmp((*t)[i].group, c->group) == 0 && strcmp((*t)[i].name, c->name) == 0)
+        if (strcmp((*t)[i].group, c->group) == 0 && strcmp((*t)[i].id, id) == 0
+            && strcmp((*t)[i].row, c->row) == 0)
             return &(*t)[i];
     if (*count == *cap) {
         size_t grown = *cap ? 2 * *cap : 256;
@@ -89,6 +94,8 @@ static seed_tally *tally_find(seed_tally **t, size_t *count, size_t *cap, const 
     seed_tally *e = &(*t)[(*count)++];
     memset(e, 0, sizeof *e);
     snprintf(e->group, sizeof e->group, "%s", c->group);
+    snprintf(e->id, sizeof e->id, "%s", id);
+    snprintf(e->row, sizeof e->row, "%s", c->row);
     snprintf(e->name, sizeof e->name, "%s", c->name);
     return e;
 }
@@ -105,11 +112,17 @@ static sim_status write_seeds(const vfy_options *o, const seed_tally *t, size_t 
                "vfy_derived_seed(scene seed, k), k = 0 the scene's own\n",
             GDSMC_VERSION, K, o->size == VFY_QUICK ? "quick" : "paper");
     fprintf(f, "# runs without a failure: %zu of %zu\n", clean, K);
-    fputs("case,check,runs,passed,failed,skipped,differs\n", f);
+    fputs("case,check_id,row,check,runs,passed,failed,skipped,differs\n", f);
     for (size_t i = 0; i < count; i++) {
         size_t runs = t[i].n[0] + t[i].n[1] + t[i].n[2] + t[i].n[3];
-        fprintf(f, "%s,\"%s\",%zu,%zu,%zu,%zu,%zu\n", t[i].group, t[i].name, runs,
-                t[i].n[VFY_PASS], t[i].n[VFY_FAIL], t[i].n[VFY_SKIP], t[i].n[VFY_DIFFERS]);
+        fprintf(f, "%s,", t[i].group);
+        vfy_csv_field(f, t[i].id);
+        fputc(',', f);
+        vfy_csv_field(f, t[i].row);
+        fputc(',', f);
+        vfy_csv_field(f, t[i].name);
+        fprintf(f, ",%zu,%zu,%zu,%zu,%zu\n", runs, t[i].n[VFY_PASS], t[i].n[VFY_FAIL],
+                t[i].n[VFY_SKIP], t[i].n[VFY_DIFFERS]);
     }
     if (vfy_report_file_close(&rf, msg, msglen) != SIM_OK
         || vfy_report_file_open(&rf, o, "seeds.md", msg, msglen) != SIM_OK)

@@ -10,9 +10,7 @@
 #include "case_report.h"
 #include "table.h"
 
-/* text as one CSV field: quoted when it holds a comma, a quote or a line
- * break (a quote doubled). */
-static void csv_field(FILE *f, const char *text)
+void vfy_csv_field(FILE *f, const char *text)
 {
     if (strpbrk(text, ",\"\n\r") == NULL) {
         fputs(text, f);
@@ -89,18 +87,18 @@ sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_
         const vfy_check *c = &r->checks[i];
         if (strcmp(c->group, name) != 0)
             continue;
-        csv_field(f, c->id[0] ? c->id : c->name);
+        vfy_csv_field(f, c->id[0] ? c->id : c->name);
         fputc(',', f);
-        csv_field(f, c->row);
+        vfy_csv_field(f, c->row);
         fprintf(f, ",%s", vfy_verdict_word(c->verdict));
         csv_number(f, c->value);
         csv_number(f, c->reference);
         fputc(',', f);
-        csv_field(f, c->allowed);
+        vfy_csv_field(f, c->allowed);
         fputc(',', f);
-        csv_field(f, c->name);
+        vfy_csv_field(f, c->name);
         fputc(',', f);
-        csv_field(f, c->detail);
+        vfy_csv_field(f, c->detail);
         fputc('\n', f);
     }
     return vfy_report_file_close(&rf, msg, msglen);

@@ -17,6 +17,7 @@
 #define GDSMC_VFY_VERDICTS_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "cases.h"
 #include "checks.h"
@@ -30,6 +31,10 @@ sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_
 /* Write out_dir/README.md from the verdicts files there (title names the
  * suite).  Returns SIM_OK or SIM_EIO with msg. */
 sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, size_t msglen);
+
+/* text as one CSV field: quoted when it holds a comma, a quote or a line
+ * break (a quote doubled, a line break written as a space). */
+void vfy_csv_field(FILE *f, const char *text);
 
 /* The fields of one line of CSV text (RFC 4180 quoting), NUL-terminated in
  * place in `line`: fields[k] for k < the count returned (at most max). */
