@@ -184,8 +184,7 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
 }
 
 const vfy_case_desc vfy_grw_ex5 = {
-    .must_fail = "heating.strength=1.05 collisions.restitution=0.95",
-    .power_keys = "collisions.constant=1.05",
+    .must_fail = "heating.strength=1.05 collisions.restitution=0.95 collisions.constant=1.05",
     .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096"}},
     .quick_rows = {.keys = {"particles.n"},
                    .values = {"64 256 1024"},
@@ -528,7 +527,7 @@ static const char *const tails_maxwell_needs[] = {"T_finite_n", NULL};
 static const char *const tails_hs_needs[] = {"T_sonine_closure", NULL};
 const vfy_case_desc vfy_grw_ex6 =
     TAILS_CASE("Ex 6", tails_maxwell_needs, VFY_NEEDS_MAXWELL, tails_maxwell_checks,
-               .must_fail = "collisions.restitution=2", .power_keys = "heating.strength=1.05");
+               .must_fail = "heating.strength=1.05", .power_keys = "collisions.restitution=2");
 const vfy_case_desc vfy_grw_ex7 =
     TAILS_CASE("Ex 7", tails_hs_needs, "the first-Sonine closure needs hard spheres",
                tails_hs_checks, .must_fail = "heating.strength=1.05",

@@ -283,13 +283,13 @@ static double balance_ratio(const sim_scene *scene, const sim_scene *solver,
 {
     const double mu2 = sim_result_steady_mean(res, SIM_STEADY_MU2);
     const double T = sim_result_steady_mean(res, SIM_STEADY_T);
-    const double a = scene->collisions.restitution, a_obs = solver->collisions.restitution;
-    const double g3 = 8.0 * mu2 * pow(2.0 * T, 1.5) / (M_PI * (1.0 - a_obs * a_obs));
-    const double loss = scene->collisions.rate * M_PI * scene->collisions.constant
-                        * (1.0 - a * a) * g3 / 6.0;
+    const double c1 = sim_result_steady_mean(res, SIM_STEADY_C1);
     *rel_ci = sim_result_steady_ci(res, SIM_STEADY_MU2) / mu2
               + 1.5 * sim_result_steady_ci(res, SIM_STEADY_T) / T;
-    return loss / (2.0 * scene->heating.strength);
+    if (scene->heating.type == SIM_HEATING_NON_GAUSSIAN)   /* the input's <|v|> = c1 sqrt(2T) */
+        *rel_ci += sim_result_steady_ci(res, SIM_STEADY_C1) / c1
+                   + 0.5 * sim_result_steady_ci(res, SIM_STEADY_T) / T;
+    return vfy_energy_balance(scene, solver, T, mu2, c1);
 }
 
 /* Probability of c >= c0 under the Maxwellian phi = pi^{-3/2} e^{-c^2} and
@@ -859,6 +859,7 @@ static const vfy_metric nongaussian_metrics[] = {
     HARD_METRIC("f_over_phi_0_ci", Q_RATIO0_CI), HARD_METRIC("updates", Q_UPDATES),
     HARD_METRIC("max_V", Q_MAX_V), {"V_bound", hard_metric, "updates", NULL, Q_V_BOUND},
     HARD_METRIC("f_over_phi_sonine", Q_F_SONINE),
+    HARD_METRIC("balance", Q_BALANCE), HARD_METRIC("balance_tol", Q_BALANCE_TOL),
     {NULL, NULL, NULL, NULL, 0}};
 /* Paper C Fig. 8: (C.76) is semi-empirical, "fairly good agreement"; Eq.
  * (44), exact in the steady state; near v = 0 (paper C §4.3, Fig. 9):
@@ -874,16 +875,20 @@ static const vfy_check_spec nongaussian_checks[] = {
      .plus = "gap_ci"},
     {.name = WHITE_LABEL " f/phi near v = 0 (depleted, C §4.3)", .rule = hard_rule_at_most,
      .value = "f_over_phi_0", .tol = VFY_TOL_HARD_DEPLETED, .plus = "f_over_phi_0_ci"},
+    /* the exact steady energy balance, (2/3) g <|v|> = loss, plus the time step's
+     * splitting error */
+    {.name = WHITE_LABEL " energy balance (2/3) g <|v|> = loss (exact)", .rule = hard_rule_rel,
+     .value = "balance", .x = 1.0, .tol = VFY_TOL_MS_BALANCE_RTOL, .plus = "balance_tol"},
     HARD_ROUNDOFF_CHECK(WHITE_LABEL, HARD_MOMENTUM, "updates"),
     HARD_CHECK(WHITE_LABEL, HARD_VIOLATIONS, NULL), HARD_CHECK(WHITE_LABEL, HARD_FINITE, NULL),
     {.name = NULL}};
 static const char nongaussian_columns[] =
     "alpha:%g n:%.0f N:%.0f g:%.5g h:%g T:%.5f a2:%.5f a2_ci:%.5f a2_C76:%.5f mu4:%.5f "
     "mu4_nongaussian:%.5f f_over_phi_0:%.4f f_over_phi_0_ci:%.4f f_over_phi_sonine:%.4f "
-    "max_V:%.3g V_bound:%.3g violations:%.0f "
+    "balance:%.5f balance_tol:%.5f max_V:%.3g V_bound:%.3g violations:%.0f "
     VFY_COST_COLUMNS;
 const vfy_case_desc vfy_hard_nongaussian = {
-    .must_fail = "heating.strength=1.1",
+    .must_fail = "heating.strength=1.05",
     .power_keys = "collisions.restitution=0.9",
     .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
                    .values = {"0.05 0.1"}},
@@ -907,7 +912,9 @@ const vfy_case_desc vfy_hard_nongaussian = {
         "particles), while the first Sonine approximation gives 1 + 15 a2/8 "
         "(f_over_phi_sonine); allowed at most 0.5. max_V: an upper bound on |V_k| over "
         "ensembles and times (sqrt(N (var + mean^2))) after zero_momentum, against the "
-        "round-off bound V_bound (verify/case_hard.h).")};
+        "round-off bound V_bound (verify/case_hard.h). balance: the collisional loss over the "
+        "thermostat's input (2/3) g <|v|>, 1 in the steady state (exact), judged within "
+        "balance_tol (half-widths and 3/n) plus 0.2% for the time step.")};
 
 /* --------------------------------------------------------------- hard-tiny */
 

@@ -490,3 +490,20 @@ double vfy_metric_max_rel_diff(const vfy_case_run *run, const vfy_row *row, cons
     free(buf);
     return worst;
 }
+
+double vfy_energy_balance(const sim_scene *scene, const sim_scene *solver, double T, double mu2,
+                          double c1)
+{
+    const double a = scene->collisions.restitution, a_obs = solver->collisions.restitution;
+    const double g3 = 8.0 * mu2 * pow(2.0 * T, 1.5) / (M_PI * (1.0 - a_obs * a_obs));
+    const double loss = scene->collisions.rate * M_PI * scene->collisions.constant * (1.0 - a * a)
+                        * g3 / 6.0;
+    switch (scene->heating.type) {
+    case SIM_HEATING_WHITE_NOISE:
+        return loss / (2.0 * scene->heating.strength);
+    case SIM_HEATING_NON_GAUSSIAN:
+        return loss / (2.0 / 3.0 * scene->heating.strength * c1 * sqrt(2.0 * T));
+    default:
+        return NAN;
+    }
+}
