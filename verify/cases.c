@@ -226,10 +226,8 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
         if (status != SIM_OK)
             return status;
     }
-    char title[1200];
-    snprintf(title, sizeof title, "%s (%s sizes)", o->out_dir,
-             o->size == VFY_QUICK ? "quick" : "paper");
-    return vfy_write_index(o, title, msg, msglen);
+    return vfy_write_index(o, o->size == VFY_QUICK ? "quick sizes" : "paper sizes", msg,
+                           msglen);
 }
 
 /* The solver's scene failed where the user's (the same --set) did not, so a

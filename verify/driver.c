@@ -1214,7 +1214,8 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
         for (size_t k = 0; run->rows[i].more && k + 1 < vfy_variant_count(d); k++)
             cpu += run->rows[i].more[k].cpu_seconds;
     }
-    if ((status = vfy_write_verdicts(run->o, run->c->name, r, wall, cpu, msg, msglen))
+    if ((status = vfy_write_verdicts(run->o, run->c->name, r, run->comment, wall, cpu, msg,
+                                     msglen))
         != SIM_OK)
         return status;
     const char *const *headers = run->table.cols;   /* the table again, with what the hook set */

@@ -64,7 +64,8 @@ static void csv_number(FILE *f, double x)
 }
 
 sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_report *r,
-                              double wall_s, double cpu_s, char *msg, size_t msglen)
+                              const char *comment, double wall_s, double cpu_s, char *msg,
+                              size_t msglen)
 {
     char file[128];
     snprintf(file, sizeof file, "%s-verdicts.csv", name);
@@ -76,9 +77,7 @@ sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_
     for (size_t i = 0; i < r->count; i++)
         if (strcmp(r->checks[i].group, name) == 0)
             n[r->checks[i].verdict]++;
-    fprintf(f, "# gdsmc %s verify: %s at %s sizes%s\n", GDSMC_VERSION, name,
-            o->size == VFY_QUICK ? "quick" : "paper",
-            vfy_external(o) ? ", an external solver (--solver)" : "");
+    vfy_write_comment(f, comment);
     fprintf(f, "# counts: passed = %zu, failed = %zu, skipped = %zu, differs = %zu\n",
             n[VFY_PASS], n[VFY_FAIL], n[VFY_SKIP], n[VFY_DIFFERS]);
     fprintf(f, "# cost: wall_s = %.2f, cpu_s = %.2f\n", wall_s, cpu_s);
@@ -128,7 +127,8 @@ static int read_verdicts(const vfy_options *o, const char *name, case_verdicts *
     int header = 0;
     while (fgets(line, sizeof line, f) != NULL) {
         if (line[0] == '#') {
-            sscanf(line, "# gdsmc %63s", cv->version);
+            if (cv->version[0] == '\0')
+                sscanf(line, "# gdsmc %63s", cv->version);
             sscanf(line, "# cost: wall_s = %lf, cpu_s = %lf", &cv->wall_s, &cv->cpu_s);
             continue;
         }
@@ -197,16 +197,17 @@ sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, s
     if (vfy_report_file_open(&rf, o, "README.md", msg, msglen) != SIM_OK)
         return SIM_EIO;
     FILE *f = rf.f;
-    fprintf(f, "# Verdicts: %s\n\n"
-               "Made by `gdsmc verify` from the `<case>-verdicts.csv` files in this directory "
-               "(one line per check: its id, row, verdict, value, reference, bound and "
-               "detail). PASS: judged, and it held. FAIL: judged, and it did not. SKIP: not "
-               "judged, with the reason. DIFFERS: a paper's printed number or sentence that "
-               "this project shows to be off, with the evidence (docs/differences.md); the "
-               "solver is judged by the check named there. Seconds are the simulations' (wall "
-               "and CPU, summed over rows).\n\n",
-            title);
-    fputs("| case | passed | failed | skipped | differs | wall s | CPU s | version | files |\n"
+    fprintf(f, "# Verdicts (%s)\n\n"
+               "Made by gdsmc %s verify: scene files, seeds and sizes as each case's table "
+               "says, from the `<case>-verdicts.csv` files in this directory (one line per "
+               "check: its id, row, verdict, value, reference, bound and detail). PASS: "
+               "judged, and it held. FAIL: judged, and it did not. SKIP: not judged, with the "
+               "reason. DIFFERS: a paper's printed number or sentence that this project shows "
+               "to be off, with the evidence (docs/differences.md); the solver is judged by "
+               "the check named there. wall_s and cpu_s are the simulations' seconds, summed "
+               "over rows.\n\n",
+            title, GDSMC_VERSION);
+    fputs("| case | passed | failed | skipped | differs | wall_s | cpu_s | version | files |\n"
           "|---|---:|---:|---:|---:|---:|---:|---|---|\n",
           f);
     case_verdicts all = {0};

@@ -4,9 +4,9 @@
  * out_dir/<case>-verdicts.csv holds every check the case recorded, a row
  * each: check_id (the check's name before a row fills it in), row (the row's
  * label), verdict (PASS, FAIL, SKIP or DIFFERS), value, reference, allowed,
- * name and detail; its comment lines give the version, the counts and the
- * case's cost ("# cost: wall_s = W, cpu_s = C": the simulations' seconds,
- * which --resume keeps).
+ * name and detail; its comment lines give the provenance (as the case's
+ * table), the counts and the case's cost ("# cost: wall_s = W, cpu_s = C":
+ * the simulations' seconds, which --resume keeps).
  *
  * out_dir/README.md is made from the verdicts files in out_dir (so a run of
  * some cases keeps the others' lines): per case the counts, the cost and
@@ -24,12 +24,14 @@
 #include "error.h"
 
 /* Write the checks of group `name` in r as out_dir/<name>-verdicts.csv,
- * with the case's cost.  Returns SIM_OK or SIM_EIO with msg. */
+ * its provenance `comment` (vfy_run_comment's lines) first, then the counts
+ * and the case's cost.  Returns SIM_OK or SIM_EIO with msg. */
 sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_report *r,
-                              double wall_s, double cpu_s, char *msg, size_t msglen);
+                              const char *comment, double wall_s, double cpu_s, char *msg,
+                              size_t msglen);
 
-/* Write out_dir/README.md from the verdicts files there (title names the
- * suite).  Returns SIM_OK or SIM_EIO with msg. */
+/* Write out_dir/README.md from the verdicts files there (title: "quick
+ * sizes" or "paper sizes").  Returns SIM_OK or SIM_EIO with msg. */
 sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, size_t msglen);
 
 /* text as one CSV field: quoted when it holds a comma, a quote or a line
