@@ -398,8 +398,8 @@ static const char *const values[] = {"a_star_bgk", "Pxy_reduced_bgk", "N1_bgk",
                                      "T_ratio_bgk", NULL};
 
 const vfy_case_desc vfy_as_steady = {
-    .must_fail = "collisions.restitution=0.85",
-    .power_keys = "shear.rate=1.05 collisions.beta=1.05",
+    .must_fail = "collisions.restitution=0.9",
+    .power_keys = "shear.rate=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = paper_rows}, .quick_rows = {.rows = quick_rows, .sets = AS_QUICK_SETS},
     .derive = as_steady_window, .adjust = vfy_adjust_jump_rows,
@@ -708,6 +708,13 @@ static const vfy_difference eta_collapse_difference = {
     .judged_by = ASX_ETA_EHS_BGK};
 static const vfy_check_spec transient_checks[] = {
     {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    /* the steady state the transient ends in, against the BGK model: as-steady's sanity
+     * bound (10%), which a wrong restitution coefficient or drag fails */
+    {.name = AS_NAME "steady a* within 10% of BGK ({a_star_bgk:%.4f})",
+     .rule = vfy_rule_absolute, .value = "a_star", .expected = "a_star_bgk", .rtol = 0.10},
+    {.name = AS_NAME "steady -Pxy/nT within 10% of BGK ({Pxy_reduced_bgk:%.4f})",
+     .rule = vfy_rule_absolute, .value = "Pxy_reduced", .expected = "Pxy_reduced_bgk",
+     .rtol = 0.10},
     /* E Fig. 6: fewer collisions than in local equilibrium (<|V12|> < <|V12|>_0),
      * "except for a short initial period" */
     {.name = AS_NAME "s/s0 = {s_ratio_end:%.4f} below 1 at the end",
@@ -1002,6 +1009,7 @@ const vfy_case_desc vfy_as_transient = {
     .paper_rows = {.rows = transient_paper_rows},
     .quick_rows = {.rows = transient_quick_rows, .sets = AS_QUICK_SETS},
     .needs = transient_needs, .needs_why = "the BGK model beside the simulations",
+    .values = values,
     .metrics = transient_metrics, .checks = transient_checks, .columns = transient_columns,
     .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_ratio", .panel_per_row = 0,
                  .title = "{case}: T/T0 against t, every row"}},
