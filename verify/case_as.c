@@ -1433,7 +1433,7 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
 }
 
 const vfy_case_desc vfy_as_distribution = {
-    .must_fail = "collisions.restitution=0.85",
+    .must_fail = "collisions.restitution=0.8",
     .power_keys = "shear.rate=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = distribution_paper_rows},
@@ -1819,8 +1819,7 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
               "({wall_s:%.1f} s)"
 
 const vfy_case_desc vfy_as_slab = {
-    .must_fail = "shear.rate=1.05",
-    .power_keys = "collisions.restitution=0.95",
+    .must_fail = "shear.rate=1.1 collisions.restitution=0.95",
     .scene = "as-slab", .label = ASL_LABEL, .row_progress = ASL_PROGRESS,
     .paper_rows = {.rows = slab_rows, .sets = "particles.ensembles=6"},
     .quick_rows = {.rows = slab_rows, .sets = ASL_QUICK_SETS},
@@ -1974,7 +1973,7 @@ static sim_status as_vs_after(vfy_case_run *run, vfy_report *r, char *msg, size_
 }
 
 const vfy_case_desc vfy_as_slab_vs_homogeneous = {
-    .must_fail = "shear.rate=1.05 collisions.restitution=0.95",
+    .must_fail = "shear.rate=1.1 collisions.restitution=0.95",
     .scene = "as", .label = "{case} {label}",
     .row_progress = "{case} {label}: T_s/T0 = {T_ratio:%.1f}, -Pxy/nT = {Pxy_reduced:%.4f} "
                     "({wall_s:%.1f} s)",

@@ -554,8 +554,8 @@ static const char *const kappa_values[] = {"kappa_prime_sonine", "kappa_prime_mo
 #define MSG_T_NOTE                                                                         "_ci = 3.2 standard errors over the N = {N} independent ensembles; the checks use "     "_ci_t, Student's t for N - 1 degrees of freedom ({t_quantile:%.2f} standard errors)"
 
 const vfy_case_desc vfy_msg_kappa = {
-    .must_fail = "collisions.constant=1.1",
-    .power_keys = "heat-flux.strength=1.05 collisions.restitution=0.95",
+    .must_fail = "heat-flux.strength=1.05",
+    .power_keys = "collisions.constant=1.05 collisions.restitution=0.95",
     MSG_COMMON(paper_rows, quick_rows), .values = kappa_values, .metrics = kappa_metrics,
     .checks = kappa_checks, .case_checks = kappa_case_checks, .after_rows = msg_kappa_after,
     .columns = "alpha:%.2f eps_star:%g kappa_prime=kappa:%.5f kappa_prime_ci=kappa_ci:%.5f "
@@ -589,7 +589,7 @@ const vfy_case_desc vfy_msg_kappa = {
         "value; " MSG_T_NOTE ". Total wall time {wall_total:%.1f} s."};
 
 const vfy_case_desc vfy_msg_sonine = {
-    .must_fail = "collisions.restitution=0.95",
+    .must_fail = "collisions.restitution=0.9",
     .power_keys = "heat-flux.strength=1.05",
     MSG_COMMON(paper_rows, sonine_quick_rows), .metrics = sonine_metrics, .checks = sonine_checks,
     .case_checks = sonine_case_checks, .after_rows = msg_sonine_after,
@@ -618,8 +618,8 @@ const vfy_case_desc vfy_msg_sonine = {
         ". Total wall time {wall_total:%.1f} s."};
 
 const vfy_case_desc vfy_msg_distribution = {
-    .must_fail = "heat-flux.strength=1.1",
-    .power_keys = "collisions.restitution=0.95",
+    .must_fail = "collisions.restitution=0.5",
+    .power_keys = "heat-flux.strength=1.05",
     MSG_COMMON(distribution_rows, distribution_quick_rows), .metrics = distribution_metrics,
     .checks = distribution_checks, .after_rows = msg_distribution_after,
     .columns = "alpha:%.2f eps_star:%g inner:%.4f inner_ci_t:%.4f inner_paper:%.2f "
