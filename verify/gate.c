@@ -41,7 +41,7 @@ static sim_status run_once(const char *suite, const char *cases, const vfy_optio
 /* A copy of o writing to dir (its own checkpoints and finished list). */
 typedef struct run_options {
     vfy_options o;
-    char dir[1100], checkpoints[1200];
+    char dir[1200], checkpoints[1220];
     vfy_finished finished;
 } run_options;
 
