@@ -186,7 +186,10 @@ static void figure_links(FILE *f, const vfy_options *o, const char *c)
     qsort(names, count, sizeof *names, compare_names);
     for (size_t i = 0; i < count; i++) {
         const char *rest = names[i] + strlen(c);   /* ".png" or "-PART.png" */
-        fprintf(f, ", [%s](%s)", rest[0] == '.' ? "figure" : rest + 1, names[i]);
+        if (rest[0] == '.')
+            fprintf(f, ", [figure](%s)", names[i]);
+        else
+            fprintf(f, ", [%.*s](%s)", (int)(strlen(rest) - 5), rest + 1, names[i]);
         free(names[i]);
     }
 }
