@@ -17,7 +17,7 @@ static void test_relative(void **state)
     assert_int_equal(vfy_check_relative(&r, "double", 0.0470, 0.0235, 0.35), VFY_FAIL);
     assert_int_equal(vfy_check_relative(&r, "too small", 0.0150, 0.0235, 0.35), VFY_FAIL);
     assert_int_equal(vfy_check_relative(&r, "nan", NAN, 0.0235, 0.35), VFY_FAIL);
-    assert_int_equal(r.failed, 3);
+    assert_int_equal(r.counts[VFY_FAIL], 3);
     assert_string_equal(r.checks[1].detail, "0.047 vs 0.0235 (+100.0%, allowed ±35%)");
     vfy_report_free(&r);
 }
@@ -34,7 +34,7 @@ static void test_range_and_absolute(void **state)
     assert_int_equal(vfy_check_absolute(&r, "T*", 0.9530, 0.956, 5e-4), VFY_FAIL);
     assert_int_equal(vfy_check_count(&r, "violations", 0, 0), VFY_PASS);
     assert_int_equal(vfy_check_count(&r, "violations", 3, 0), VFY_FAIL);
-    assert_int_equal(r.failed, 4);
+    assert_int_equal(r.counts[VFY_FAIL], 4);
     vfy_report_free(&r);
 }
 
@@ -54,7 +54,7 @@ static void test_printed(void **state)
     assert_int_equal(vfy_check_printed(&r, "LE", 0.95571, 0.0, 0.956, 3), VFY_PASS);
     assert_int_equal(vfy_check_printed(&r, "LE off", 0.95545, 0.0, 0.956, 3), VFY_FAIL);
     assert_int_equal(vfy_check_printed(&r, "nan", NAN, 0.0, 0.956, 3), VFY_FAIL);
-    assert_int_equal(r.failed, 3);
+    assert_int_equal(r.counts[VFY_FAIL], 3);
     assert_string_equal(r.checks[1].detail, "0.95571 vs 0.953 printed (|diff| 0.0027, allowed "
                                             "0.0009: rounding 0.0005 + ci 0.0004)");
     vfy_report_free(&r);
@@ -83,7 +83,7 @@ static void test_zscore(void **state)
     mean[0] = 1.0;
     mean[3] = NAN;
     assert_int_equal(vfy_check_zscore(&r, "nan", mean, ci, exact, 4, 4.5, NULL), VFY_FAIL);
-    assert_int_equal(r.failed, 3);
+    assert_int_equal(r.counts[VFY_FAIL], 3);
     vfy_report_free(&r);
 }
 
@@ -111,7 +111,7 @@ static void test_missing_is_skip(void **state)
     assert_int_equal(vfy_check_zero(&r, "violations", 0.0), VFY_PASS);
     r.missing = NULL;
     assert_int_equal(vfy_check_zero(&r, "violations", NAN), VFY_FAIL);
-    assert_int_equal(r.failed, 5);
+    assert_int_equal(r.counts[VFY_FAIL], 5);
     vfy_report_free(&r);
 }
 
@@ -121,7 +121,7 @@ static void test_skip_is_not_failure(void **state)
     vfy_report r;
     vfy_report_init(&r, NULL);
     vfy_skip(&r, "CF", "noise-dominated");
-    assert_int_equal(r.failed, 0);
+    assert_int_equal(r.counts[VFY_FAIL], 0);
     assert_int_equal(r.count, 1);
     assert_int_equal(r.checks[0].verdict, VFY_SKIP);
     assert_string_equal(r.checks[0].detail, "noise-dominated");
@@ -141,7 +141,7 @@ static void test_differs_is_not_failure(void **state)
     assert_int_equal(vfy_check_relative(&r, "ehs near", 0.98, 1.0, 0.03), VFY_PASS);
     r.differs = NULL;
     assert_int_equal(vfy_check_relative(&r, "ehs judged", 0.96, 1.0, 0.03), VFY_FAIL);
-    assert_int_equal(r.failed, 1);
+    assert_int_equal(r.counts[VFY_FAIL], 1);
     assert_int_equal(r.counts[VFY_DIFFERS], 1);
     assert_int_equal(r.counts[VFY_PASS], 1);
     assert_int_equal(r.counts[VFY_FAIL], 1);

@@ -390,7 +390,7 @@ static void test_rules_and_guards(void **state)
     assert_int_equal(unless.fn(&run, &rows[1], &unless), VFY_JUDGE);   /* absent */
     vfy_values_set(&rows[1].values, "unjudged", 1);
     assert_int_equal(unless.fn(&run, &rows[1], &unless), VFY_GUARD_SKIP);
-    assert_int_equal(r.failed, 7);
+    assert_int_equal(r.counts[VFY_FAIL], 7);
     vfy_report_free(&r);
     free_run(&run);
 }
@@ -427,7 +427,7 @@ static size_t run_e2e(const char *const *wrong, size_t nwrong, char *table, size
     char msg[512];
     assert_int_equal(vfy_run_described(&e2e_case, &o, &r, msg, sizeof msg), SIM_OK);
     assert_int_equal(r.count, 2);   /* one z-test a row */
-    size_t failed = r.failed;
+    size_t failed = r.counts[VFY_FAIL];
     vfy_report_free(&r);
     char path[600];
     snprintf(path, sizeof path, "%s/driver-e2e.csv", out_dir);
@@ -550,7 +550,7 @@ static void test_rows_variants_adjust(void **state)
     char msg[512], path[600], table[2048];
     assert_int_equal(vfy_run_described(&rows_case, &o, &r, msg, sizeof msg), SIM_OK);
     assert_int_equal(r.count, 6);   /* the wrong pair is skipped at n = 32 */
-    assert_int_equal(r.failed, 1);
+    assert_int_equal(r.counts[VFY_FAIL], 1);
     assert_string_equal(r.checks[0].name, "driver-rows small tiny b");
     assert_string_equal(r.checks[2].name, "driver-rows small wrong pair");
     assert_int_equal(r.checks[2].verdict, VFY_FAIL);

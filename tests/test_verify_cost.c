@@ -76,7 +76,7 @@ static void test_stat_scaling(void **state)
                                                  4.5, NULL), VFY_PASS);
     assert_int_equal(vfy_cost_check_stat_scaling(&r, "independent 1/N", conf1, quarter, 5, 128,
                                                  512, 0, 4.5, NULL), VFY_FAIL);
-    assert_int_equal(r.failed, 5);
+    assert_int_equal(r.counts[VFY_FAIL], 5);
     vfy_report_free(&r);
 }
 
@@ -102,7 +102,7 @@ static void test_model_check(void **state)
                      VFY_FAIL);
     model[1] = NAN;
     assert_int_equal(vfy_cost_check_model(&r, "nan", err, model, 4, 2.0, NULL), VFY_FAIL);
-    assert_int_equal(r.failed, 3);
+    assert_int_equal(r.counts[VFY_FAIL], 3);
     vfy_report_free(&r);
 }
 
@@ -118,7 +118,7 @@ static void test_chi2(void **state)
     assert_int_equal(vfy_cost_check_chi2(&r, "wrong order", 24.0, 5), VFY_FAIL);
     assert_int_equal(vfy_cost_check_chi2(&r, "nan", NAN, 5), VFY_FAIL);
     assert_int_equal(vfy_cost_check_chi2(&r, "no dof", 0.0, 0), VFY_SKIP);
-    assert_int_equal(r.failed, 3);
+    assert_int_equal(r.counts[VFY_FAIL], 3);
     vfy_report_free(&r);
 }
 

@@ -123,7 +123,7 @@ static void test_check_finite(void **state)
     s.values = 0;   /* nothing inspected is no evidence */
     assert_int_equal(vfy_hard_check_finite(&r, "run", &s), VFY_FAIL);
     assert_string_equal(r.checks[0].name, "run no NaN or infinity");
-    assert_int_equal(r.failed, 2);
+    assert_int_equal(r.counts[VFY_FAIL], 2);
     vfy_report_free(&r);
 }
 
@@ -160,7 +160,7 @@ static void test_check_momentum(void **state)
     s = good_summary();
     s.speed = NAN;   /* a NaN bound must not pass either */
     assert_int_equal(vfy_hard_check_momentum(&r, "run", &s, 1e6), VFY_FAIL);
-    assert_int_equal(r.failed, 4);
+    assert_int_equal(r.counts[VFY_FAIL], 4);
     vfy_report_free(&r);
 }
 
@@ -179,7 +179,7 @@ static void test_check_energy(void **state)
     s = good_summary();
     s.T_max = NAN;
     assert_int_equal(vfy_hard_check_energy(&r, "run", &s, 1e6), VFY_FAIL);
-    assert_int_equal(r.failed, 3);
+    assert_int_equal(r.counts[VFY_FAIL], 3);
     vfy_report_free(&r);
 }
 
@@ -204,7 +204,7 @@ static void test_check_cooling_range(void **state)
     s.T_min = 0.0183;
     s.T_max = INFINITY;
     assert_int_equal(vfy_hard_check_cooling_range(&r, "run", &s), VFY_FAIL);
-    assert_int_equal(r.failed, 5);
+    assert_int_equal(r.counts[VFY_FAIL], 5);
     vfy_report_free(&r);
 }
 
@@ -255,7 +255,7 @@ static void test_check_ode(void **state)
     run.must_succeed = 1;
     assert_int_equal(vfy_hard_check_ode(&r, "ode", &run), VFY_FAIL);
     assert_non_null(strstr(r.checks[r.count - 1].detail, "must succeed"));
-    assert_int_equal(r.failed, 9);
+    assert_int_equal(r.counts[VFY_FAIL], 9);
     vfy_report_free(&r);
 }
 
@@ -269,7 +269,7 @@ static void test_check_true(void **state)
     assert_int_equal(last_verdict(&r), VFY_FAIL);
     assert_string_equal(r.checks[0].detail, "3 of 3");
     assert_string_equal(r.checks[1].detail, "because");
-    assert_int_equal(r.failed, 1);
+    assert_int_equal(r.counts[VFY_FAIL], 1);
     vfy_report_free(&r);
 }
 
@@ -307,7 +307,7 @@ static void assert_all_pass(const char *case_name)
 {
     vfy_report r;
     run_case(case_name, NULL, 0, &r);
-    assert_int_equal(r.failed, 0);
+    assert_int_equal(r.counts[VFY_FAIL], 0);
     assert_true(r.count > 0);
     vfy_report_free(&r);
 }

@@ -51,7 +51,7 @@ static inline size_t count_quick_failed(const char *case_name, const char *const
 {
     vfy_report r;
     run_quick_case(case_name, sets, nsets, wrong, nwrong, &r);
-    size_t failed = r.failed, ok = 0;
+    size_t failed = r.counts[VFY_FAIL], ok = 0;
     for (size_t i = 0; i < r.count; i++)
         ok += r.checks[i].verdict == VFY_PASS;
     if (passed)

@@ -1,7 +1,8 @@
 /* Verification checks and their verdicts (SPEC §9).
  *
  * Each check records one line, "PASS|FAIL|SKIP|DIFFERS  name: detail", in a
- * report; a report with any FAIL makes `gdsmc verify` exit 1.  Every kind of
+ * report; a report with any FAIL (counts[VFY_FAIL] > 0) makes `gdsmc verify`
+ * exit 1.  Every kind of
  * check here has a test in tests/test_checks.c that hands it a wrong answer
  * and sees it fail.
  *
@@ -48,7 +49,6 @@ typedef struct vfy_check {
 typedef struct vfy_report {
     vfy_check *checks;
     size_t count, capacity;
-    size_t failed;
     FILE *echo;   /* if not NULL, each verdict is printed here as it is made */
     const char *group;  /* the case being judged (vfy_run sets it), or NULL */
     const char *missing;  /* if not NULL: a NaN value is a SKIP with this reason, not a FAIL
@@ -58,7 +58,8 @@ typedef struct vfy_report {
     const char *differs;  /* if not NULL: a FAIL is recorded as DIFFERS, this text after
                              its detail (a paper comparison with a declared known
                              difference; the driver sets it) */
-    size_t counts[VFY_VERDICTS];   /* the checks recorded, by verdict */
+    size_t counts[VFY_VERDICTS];   /* the checks recorded, by verdict (counted even when
+                                      there is no memory for their text) */
 } vfy_report;
 
 void vfy_report_init(vfy_report *r, FILE *echo);

@@ -880,7 +880,7 @@ static int cmd_verify(int argc, char **argv)
     }
     size_t counts[VFY_VERDICTS];
     memcpy(counts, report.counts, sizeof counts);
-    size_t failed = report.failed;
+    size_t failed = report.counts[VFY_FAIL];
     vfy_report_free(&report);
     if (status == SIM_ECANCELED) {
         fprintf(stderr, "gdsmc verify: %s; the finished simulations are saved in %s: run the "

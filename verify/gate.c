@@ -191,11 +191,11 @@ sim_status vfy_seeds(const char *suite, const char *cases, const vfy_options *o,
             }
         }
         if (status == SIM_OK) {
-            fails_per_run[k] = r.failed;
-            *clean += r.failed == 0;
+            fails_per_run[k] = r.counts[VFY_FAIL];
+            *clean += r.counts[VFY_FAIL] == 0;
             if (o->progress) {
                 fprintf(o->progress, "seeds: run %zu of %zu: %zu passed, %zu failed, %zu "
-                        "skipped (%.0f s)\n", k + 1, K, r.counts[VFY_PASS], r.failed,
+                        "skipped (%.0f s)\n", k + 1, K, r.counts[VFY_PASS], r.counts[VFY_FAIL],
                         r.counts[VFY_SKIP], seconds_since(&t0));
                 for (size_t i = 0; i < r.count; i++)
                     if (r.checks[i].verdict == VFY_FAIL)
@@ -237,7 +237,7 @@ static sim_status run_perturbed(const vfy_case *c, const char *suite, const vfy_
     sim_status status = run_once(suite, c->name, &ro.o, &r, msg, msglen);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
     vfy_finished_free(&ro.finished);
-    *failed = r.failed;
+    *failed = r.counts[VFY_FAIL];
     if (cpu_s)
         *cpu_s = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
     if (first) {
