@@ -273,25 +273,6 @@ static double hs_loss(const sim_scene *s, double T, double a2)
            * 32.0 / sqrt(M_PI) * pow(T, 1.5) * (1.0 + 3.0 * a2 / 16.0);
 }
 
-/* The exact steady energy balance (top of this file): the collisional loss
- * gamma pi C (1 - alpha^2) <|g|^3>/6 of the reference scene, with <|g|^3>
- * from the solver's steady mu2 (reduced with the solver's alpha, which the
- * observer used) and T, over the heating 2 beta; its relative confidence
- * half-width in *rel_ci. */
-static double balance_ratio(const sim_scene *scene, const sim_scene *solver,
-                            const sim_ensemble_result *res, double *rel_ci)
-{
-    const double mu2 = sim_result_steady_mean(res, SIM_STEADY_MU2);
-    const double T = sim_result_steady_mean(res, SIM_STEADY_T);
-    const double c1 = sim_result_steady_mean(res, SIM_STEADY_C1);
-    *rel_ci = sim_result_steady_ci(res, SIM_STEADY_MU2) / mu2
-              + 1.5 * sim_result_steady_ci(res, SIM_STEADY_T) / T;
-    if (scene->heating.type == SIM_HEATING_NON_GAUSSIAN)   /* the input's <|v|> = c1 sqrt(2T) */
-        *rel_ci += sim_result_steady_ci(res, SIM_STEADY_C1) / c1
-                   + 0.5 * sim_result_steady_ci(res, SIM_STEADY_T) / T;
-    return vfy_energy_balance(scene, solver, T, mu2, c1);
-}
-
 /* Probability of c >= c0 under the Maxwellian phi = pi^{-3/2} e^{-c^2} and
  * its first-Sonine correction: ∫_{c >= c0} phi (1 + a2 S2(c^2)) d^3c with
  * S2(x) = x^2/2 - 5x/2 + 15/8 (d = 3).  J_m = ∫_{c0}^inf c^m e^{-c^2} dc by
@@ -628,11 +609,11 @@ static double hard_metric(const vfy_case_run *run, const vfy_row *row, const vfy
         return row->scene.collisions.restitution;
     case Q_BALANCE:
     case Q_BALANCE_CI: {
-        const double b = balance_ratio(&row->scene, &row->solver, &row->res, &ci);
+        const double b = vfy_energy_balance(&row->scene, &row->solver, &row->res, &ci);
         return which == Q_BALANCE ? b : ci;
     }
     case Q_BALANCE_TOL:
-        balance_ratio(&row->scene, &row->solver, &row->res, &ci);
+        vfy_energy_balance(&row->scene, &row->solver, &row->res, &ci);
         return ci + VFY_TOL_HARD_BALANCE_BIAS / (double)row->res.n;
     case Q_GAP_CI: /* mu4 and the relation named m->a: their relative half-widths */ {
         char name[48];

@@ -154,16 +154,9 @@ static const char *const a2_values[] = {"a2_C10", "a2_C32", "a2_C5", "a2_C40", "
 static double ms_balance(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)run;
-    const vfy_values *v = &row->values;
-    const double T = vfy_values_get(v, "T"), mu2 = vfy_values_get(v, "mu2");
-    const double c1 = vfy_values_get(v, "c1");
-    if (m->x == 1.0) {
-        const int white = row->scene.heating.type == SIM_HEATING_WHITE_NOISE;
-        return vfy_values_get(v, "mu2_ci") / mu2 + 1.5 * vfy_values_get(v, "T_ci") / T
-               + (white ? 0.0
-                        : vfy_values_get(v, "c1_ci") / c1 + 0.5 * vfy_values_get(v, "T_ci") / T);
-    }
-    return vfy_energy_balance(&row->scene, &row->solver, T, mu2, c1);
+    double rel_ci;
+    const double b = vfy_energy_balance(&row->scene, &row->solver, &row->res, &rel_ci);
+    return m->x == 1.0 ? rel_ci : b;
 }
 #define BALANCE_METRICS                                                                \
     {"balance", ms_balance, NULL, NULL, 0}, {"balance_ci", ms_balance, NULL, NULL, 1},    \

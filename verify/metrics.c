@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "observe.h"
+#include "steady.h"
 
 /* max(worst, x), NaN when either is: a maximum over output times is NaN if
  * any term is (a quantity an external solver did not report), never the
@@ -491,19 +492,27 @@ double vfy_metric_max_rel_diff(const vfy_case_run *run, const vfy_row *row, cons
     return worst;
 }
 
-double vfy_energy_balance(const sim_scene *scene, const sim_scene *solver, double T, double mu2,
-                          double c1)
+double vfy_energy_balance(const sim_scene *scene, const sim_scene *solver,
+                          const sim_ensemble_result *res, double *rel_ci)
 {
+    const double mu2 = sim_result_steady_mean(res, SIM_STEADY_MU2);
+    const double T = sim_result_steady_mean(res, SIM_STEADY_T);
+    const double c1 = sim_result_steady_mean(res, SIM_STEADY_C1);
+    const int white = scene->heating.type == SIM_HEATING_WHITE_NOISE;
+    if (rel_ci != NULL) {
+        *rel_ci = sim_result_steady_ci(res, SIM_STEADY_MU2) / mu2
+                  + 1.5 * sim_result_steady_ci(res, SIM_STEADY_T) / T;
+        if (!white)   /* the input's <|v|> = c1 sqrt(2T) */
+            *rel_ci += sim_result_steady_ci(res, SIM_STEADY_C1) / c1
+                       + 0.5 * sim_result_steady_ci(res, SIM_STEADY_T) / T;
+    }
     const double a = scene->collisions.restitution, a_obs = solver->collisions.restitution;
     const double g3 = 8.0 * mu2 * pow(2.0 * T, 1.5) / (M_PI * (1.0 - a_obs * a_obs));
     const double loss = scene->collisions.rate * M_PI * scene->collisions.constant * (1.0 - a * a)
                         * g3 / 6.0;
-    switch (scene->heating.type) {
-    case SIM_HEATING_WHITE_NOISE:
+    if (white)
         return loss / (2.0 * scene->heating.strength);
-    case SIM_HEATING_NON_GAUSSIAN:
+    if (scene->heating.type == SIM_HEATING_NON_GAUSSIAN)
         return loss / (2.0 / 3.0 * scene->heating.strength * c1 * sqrt(2.0 * T));
-    default:
-        return NAN;
-    }
+    return NAN;
 }

@@ -61,13 +61,14 @@ double vfy_z_pair(double a, double sa, double b, double sb);
 /* The exact steady energy balance of a heated hard-sphere gas (docs/theory.md;
  * verify/case_hard.c derives it for the n-particle process): the collisional
  * loss of T, gamma pi C (1 - alpha^2) <|g|^3>/6 with <|g|^3> = 8 mu2 (2T)^(3/2)/(pi
- * (1 - alpha'^2)) from the measured steady mu2 (paper C Eq. 65, reduced with the
+ * (1 - alpha'^2)) from the result's steady mu2 (paper C Eq. 65, reduced with the
  * solver's alpha', which its observer used) and T, over the thermostat's input at
  * scene's strength: white noise 2 beta, non-Gaussian (2/3) g <|v|> with <|v|> =
  * c1 sqrt(2T).  1 in every steady state, whatever a2; NAN for another
- * thermostat. */
-double vfy_energy_balance(const sim_scene *scene, const sim_scene *solver, double T, double mu2,
-                          double c1);
+ * thermostat.  *rel_ci (may be NULL) gets its relative half-width, those of the
+ * steady values added. */
+double vfy_energy_balance(const sim_scene *scene, const sim_scene *solver,
+                          const sim_ensemble_result *res, double *rel_ci);
 
 /* Weighted least squares of ln f = ln K - A c^b over the bins k with
  * c[k] >= c_lo, f[k] > 0 and ci[k] < f[k]/2 (ci = lambda standard errors):
