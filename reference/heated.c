@@ -122,6 +122,14 @@ double ref_heated_vhs_T_steady_maxwellian(const ref_heated_params *p, double lam
     return pow(2.0 * p->beta / L, 2.0 / q);
 }
 
+double ref_heated_tail_A(const ref_heated_params *p, double lambda, double T)
+{
+    if (!valid(p) || !(lambda >= 0.0 && lambda <= 1.0) || !(p->beta > 0.0) || !(T > 0.0))
+        return NAN;
+    const double b = 1.0 + 0.5 * lambda;
+    return sqrt(4.0 * PI * p->gamma * p->C / p->beta) / b * pow(2.0 * T, 0.5 * b);
+}
+
 typedef struct hs_rhs_params {
     double two_beta, L;
 } hs_rhs_params;

@@ -65,6 +65,17 @@ double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure clo
  * 0. */
 double ref_heated_vhs_T_steady_maxwellian(const ref_heated_params *p, double lambda);
 
+/* The high-speed tail of the white-noise heated gas with the VHS kernel B1 =
+ * 4 pi C |g|^lambda (docs/theory.md, "The heated tail"): far out, a particle
+ * of speed v loses itself at the rate gamma 4 pi C v^lambda and the heating
+ * diffuses it with coefficient beta, so f ~ K exp(-a v^b) with b = 1 +
+ * lambda/2 and a = sqrt(4 pi gamma C / beta) / b.  Returns A = a v0^b, the
+ * amplitude in the reduced speed c = |v|/v0, v0 = sqrt(2T) at the steady T
+ * (m = 1).  For hard spheres this is paper C's Eq. (36) once the steady
+ * energy balance ties beta to mu2 and T.  NaN for a bad p or lambda, beta <= 0
+ * or T <= 0. */
+double ref_heated_tail_A(const ref_heated_params *p, double lambda, double T);
+
 /* Integrate a closure with CVODE at times t[0..nt-1] (t[0] is the initial
  * time, where T = T0); T_out[m] = T(t[m]).  opt may be NULL (defaults).
  * Bad p, closure, t (NULL, nt = 0, not finite or not strictly increasing) or

@@ -289,6 +289,31 @@ static void test_vhs_maxwellian_closure(void **state)
     assert_true(isnan(ref_heated_vhs_T_steady_maxwellian(NULL, 0.5)));
 }
 
+/* The heated tail's amplitude (docs/theory.md, "The heated tail"): paper A's
+ * Ex 6-8 parameters (beta = 30, gamma = 16, C = 1/(4 pi)) give a = sqrt(16/30)/b
+ * in absolute speed; for hard spheres it is paper C's Eq. (36) (2/3) sqrt(6 pi/mu2)
+ * when beta is the one the steady energy balance gives for mu2 and T: 2 beta =
+ * gamma pi C (1 - alpha^2) <|g|^3>/6, <|g|^3> = 8 mu2 (2T)^(3/2)/(pi (1 - alpha^2)). */
+static void test_heated_tail_amplitude(void **state)
+{
+    (void)state;
+    ref_heated_params p = {.alpha = 0.1, .beta = 30.0, .gamma = 16.0, .C = 0.25 / M_PI,
+                           .T0 = 1.0};
+    const double T = 15.0;
+    assert_close(ref_heated_tail_A(&p, 0.0, T), sqrt(16.0 / 30.0) * sqrt(2.0 * T), 1e-14, 0);
+    assert_close(ref_heated_tail_A(&p, 0.5, T), sqrt(16.0 / 30.0) / 1.25 * pow(2.0 * T, 0.625),
+                 1e-14, 0);
+    const double mu2 = 2.385, Ths = 2.9;
+    p.beta = 2.0 / 3.0 * p.gamma * p.C * mu2 * pow(2.0 * Ths, 1.5);
+    assert_close(ref_heated_tail_A(&p, 1.0, Ths), ref_sonine_tail_A_white_noise_mu2(mu2, 3.0),
+                 1e-13, 0);
+    assert_true(isnan(ref_heated_tail_A(&p, 1.5, T)));
+    assert_true(isnan(ref_heated_tail_A(&p, 1.0, 0.0)));
+    p.beta = 0.0;
+    assert_true(isnan(ref_heated_tail_A(&p, 1.0, T)));
+    assert_true(isnan(ref_heated_tail_A(NULL, 1.0, T)));
+}
+
 /* Integrated closures relax to the closed-form T* (t in [0, 40], rate ~1.6) and
  * start at T0; both closures and both methods. */
 static void test_hs_closure_reaches_steady_state(void **state)
@@ -625,6 +650,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_maxwell_closed_form),
         cmocka_unit_test(test_vhs_maxwellian_closure),
+        cmocka_unit_test(test_heated_tail_amplitude),
         cmocka_unit_test(test_cvode_bdf_vs_closed_form),
         cmocka_unit_test(test_cvode_adams_vs_closed_form),
         cmocka_unit_test(test_cvode_tolerance_matters),

@@ -56,14 +56,26 @@
  * 0.14; hard spheres have 0.063 at alpha = 0.1); 1.5% covers |a2| <= 0.24.  A
  * heating 5% off moves T by 4%. */
 #define VFY_TOL_VHS_CLOSURE_RTOL 0.015
-/* Paper A's tails (Ex 6-8): the exponent b = 1 + lambda/2 within two
- * standard errors and at most 0.05 (issue 18), with a standard error of at
- * most 0.03.  The clean range starts at two thermal speeds (c = |C|/v0 = 2,
- * past the Gaussian core, fixed before any run) and ends before the first
- * shell whose relative standard error exceeds 10%; b_far starts at c = 3.5
- * (the drift of the slope along the tail); the local slope is the same fit
- * over a window of width 1 in c (b_local: the clean range's last one).  b is
- * judged from n = 1e6 on (at quick sizes the clean range ends near c = 3.5). */
+/* Paper A's tails (Ex 6-8).  The exponent b = 1 + lambda/2 at most 0.05 off
+ * (issue 18) is paper A's reading of its figures, a known difference
+ * (docs/differences.md), with a standard error of at most 0.03.  The clean
+ * range starts at two thermal speeds (c = |C|/v0 = 2, past the Gaussian core,
+ * fixed before any run) and ends before the first shell whose relative
+ * standard error exceeds 10%; b_far starts at c = 3.5 (the drift of the slope
+ * along the tail); the local slope is the same fit over a window of width 1
+ * in c (b_local: the clean range's last one), drawn with 2 standard errors.
+ * The tail is judged from n = 1e6 on (at quick sizes the clean range ends
+ * near c = 3.5).
+ * The amplitude A of exp(-A c^b) at b = 1 + lambda/2, fitted over c >= 3 (as
+ * paper C's tails, ms-tails), against the loss-diffusion balance
+ * (docs/theory.md, "The heated tail") within 6%: the balance fixes the
+ * exponential, not the prefactor, whose slow growth (a power of c, from the
+ * gain term) the fit absorbs as a deficit that shrinks as the range moves
+ * out.  At n = 1e7 the fit lies 4.8%, 1.0% and 2.7% below (Maxwell, hard
+ * spheres, VHS), with standard errors near 0.1%; from c >= 2 on, 9%, 2.8%
+ * and 6.2% below (n = 1e6: 4.9%, 0.6%, 3.2% over c >= 3).  A tail of the
+ * wrong form misses by far more: grw-ex7 simulated with the VHS kernel at
+ * lambda = 1/2 (--solver-set, n = 1e6) fits A = 1.66 against 2.90. */
 #define VFY_TOL_TAILS_Z 2.0
 #define VFY_TOL_TAILS_B_ABS 0.05
 #define VFY_TOL_TAILS_B_SE 0.03
@@ -72,6 +84,8 @@
 #define VFY_TOL_TAILS_WINDOW 1.0
 #define VFY_TOL_TAILS_REL_MAX 0.1
 #define VFY_TOL_TAILS_JUDGED_N 1e6
+#define VFY_TOL_TAILS_A_C_LO 3.0
+#define VFY_TOL_TAILS_A_RTOL 0.06
 
 /* ---------------------------------------------------------- paper B (brs) */
 
