@@ -27,6 +27,7 @@
 
 #define SIM_MISSING_EVENTS 1u
 #define SIM_MISSING_VIOLATIONS 2u
+#define SIM_MISSING_COLLISIONS 4u   /* and the background and normals counts */
 
 typedef struct sim_ensemble_result {
     size_t outputs;      /* rows */
@@ -43,7 +44,8 @@ typedef struct sim_ensemble_result {
     double *steady_ci;
     sim_counts counts;   /* summed over ensembles */
     unsigned missing;    /* counts a result from elsewhere (an external solver) lacks:
-                            SIM_MISSING_EVENTS, SIM_MISSING_VIOLATIONS; 0 from the engine */
+                            SIM_MISSING_EVENTS, SIM_MISSING_VIOLATIONS,
+                            SIM_MISSING_COLLISIONS; 0 from the engine */
     double cpu_seconds;  /* process CPU time, all threads (and MPI ranks) */
     double wall_seconds; /* with MPI, the slowest rank's */
     int threads;         /* OpenMP threads used (summed over MPI ranks) */

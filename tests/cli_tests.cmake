@@ -558,9 +558,14 @@ gdsmc_add_no_output_test(cli_solver_not_found 2
     ${SB}-not_found/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-not_found
     --solver "nosuch-solver {scene} {out}")
 gdsmc_add_no_output_test(cli_solver_exit_status 2
-    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 3 \\(--solver 'sh -c \"echo boom >&2 && exit 3\"'\\); the last lines of its output \\([^\n]*/\\.solver/[0-9a-f]+\\.log\\):\n    boom\n$"
+    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 4 \\(--solver 'sh -c \"echo boom >&2 && exit 4\"'\\); the last lines of its output \\([^\n]*/\\.solver/[0-9a-f]+\\.err\\):\n    boom\n$"
     ${SB}-exit_status/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-exit_status
-    --solver "sh -c \"echo boom >&2 && exit 3\"")
+    --solver "sh -c \"echo boom >&2 && exit 4\"")
+# Exit status 3 is a refusal only with its reason on standard error.
+gdsmc_add_no_output_test(cli_solver_refusal_without_reason 2
+    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 3, a refusal, but gave no reason as the last line of its standard error [^\n]*/\\.solver/[0-9a-f]+\\.err \\(--solver 'sh -c \"echo out && exit 3\"'\\)\n$"
+    ${SB}-refusal_without_reason/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet
+    --out ${SB}-refusal_without_reason --solver "sh -c \"echo out && exit 3\"")
 gdsmc_add_no_output_test(cli_solver_timeout 2
     "^gdsmc verify: grw-ex4 n=64: the solver took more than 0.5 s \\(--solver-timeout\\) and was killed \\(--solver 'sleep 30'\\)\n$"
     ${SB}-timeout/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-timeout
@@ -579,6 +584,30 @@ gdsmc_add_cli_exact(cli_x_verify_solver_timeout_bad 2
 gdsmc_add_cli_exact(cli_x_verify_solver_quote 2
                     "gdsmc verify: --solver 'sh -c 'echo': an unterminated single quote (see gdsmc verify --help)"
                     verify --case grw-ex4 --solver "sh -c 'echo")
+
+# A refusal is an answer (docs/solver-protocol.md): the whole quick suite
+# through a solver that refuses every scene runs to the end, every check that
+# needs the solver a SKIP with the reason, the JUnit report written (exit 0:
+# nothing failed) ...
+add_test(NAME cli_solver_refuses_everything
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gdsmc> -DCODE=0 -DPYTHON=${PYTHON3}
+                 -DCHECK=${CMAKE_CURRENT_SOURCE_DIR}/check_junit.py
+                 -DOUT=${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all
+                 -DREPORTS=${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all-reports
+                 "-DSUMMARY=verify: [0-9]+ passed, 0 failed, [1-9][0-9]* skipped, [1-9][0-9]* rows refused by the solver"
+                 "-DARGS=--suite;quick;--out;${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all-reports;--solver;sh -c \"echo 'nothing here is implemented' >&2 && exit 3\""
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/run_junit.cmake)
+set_tests_properties(cli_solver_refuses_everything PROPERTIES TIMEOUT 300 LABELS regression
+                     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+# ... and one that refuses white noise: ms-table1's white-noise rows are SKIP
+# with its reason (the last line of its standard error), its Gaussian rows
+# are judged, and grw-ex3 (white noise) does not stop ms-a2-gaussian.
+gdsmc_add_cli_test(cli_solver_refuses_some 0
+    "SKIP  grw-ex3 n=64 [^\n]*: solver refused: white-noise heating is not implemented\n.*PASS  ms-a2-gaussian .*SKIP  ms-table1 alpha=0\\.4 white [^\n]*: solver refused: white-noise heating is not implemented\n.*PASS  ms-table1 alpha=0\\.4 gaussian .*\nverify: 11 passed, 0 failed, 15 skipped, 4 rows refused by the solver\n"
+    verify --suite quick --case ms-table1,grw-ex3,ms-a2-gaussian
+    --out ${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-some
+    --solver "sh tests/solvers/refuse_white_noise.sh $<TARGET_FILE:gdsmc> {scene} {out}")
+set_tests_properties(cli_solver_refuses_some PROPERTIES TIMEOUT 600 LABELS regression)
 
 # An independent solver in another language (examples/python, NumPy): paper
 # A's Examples 3 and 4 at quick sizes pass through the solver protocol, and

@@ -493,10 +493,19 @@ static sim_status simulate_external(const sim_scene *scene, const vfy_options *o
     if (o->progress)
         fprintf(o->progress, "   %s: running the solver\n", label);
     sim_status status = vfy_solver_run(o->solver, scene, label, res, &info, msg, msglen);
+    if (status == SIM_EUNSUPPORTED) {   /* refused: a result that reports nothing */
+        if (o->progress)
+            fprintf(o->progress, "   %s: the solver refused: %s\n", label, msg);
+        if (vfy_result_blank(scene, res) != SIM_OK) {
+            snprintf(msg, msglen, "out of memory");
+            return SIM_ENOMEM;
+        }
+    }
     if (status != SIM_OK)
         return status;
     res->missing = (info.has_events ? 0u : SIM_MISSING_EVENTS)
-                   | (info.has_violations ? 0u : SIM_MISSING_VIOLATIONS);
+                   | (info.has_violations ? 0u : SIM_MISSING_VIOLATIONS)
+                   | SIM_MISSING_COLLISIONS;   /* the protocol does not carry them */
     snprintf(checkpoint_label, cap, "%s (solver: %s)", label,   /* which solver made it */
              info.solver[0] ? info.solver : "no solver line");
     snprintf(o->solver->line, sizeof o->solver->line, "%s", info.solver);

@@ -127,8 +127,10 @@ sim_status vfy_require_references(const sim_scene *scene, const char *const *nam
 /* Shared by the cases: build the engine for scene and run its ensembles,
  * with progress lines labelled `label`; with o->checkpoint_dir, save the
  * result there at once, and with o->resume, or when o->finished holds the
- * scene's key, take a matching saved result instead of simulating.  msg gets "FILE:LINE: key: ..." on failure;
- * SIM_ECANCELED when a stop was requested. */
+ * scene's key, take a matching saved result instead of simulating.  msg gets
+ * "FILE:LINE: key: ..." on failure; SIM_ECANCELED when a stop was requested.
+ * An external solver's refusal is SIM_EUNSUPPORTED with msg its reason and
+ * res a blank result (vfy_result_blank), never saved. */
 sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char *label,
                         sim_ensemble_result *res, char *msg, size_t msglen);
 

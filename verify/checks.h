@@ -60,6 +60,7 @@ typedef struct vfy_report {
                              difference; the driver sets it) */
     size_t counts[VFY_VERDICTS];   /* the checks recorded, by verdict (counted even when
                                       there is no memory for their text) */
+    size_t refused;   /* rows an external solver refused (their checks are SKIPs) */
 } vfy_report;
 
 void vfy_report_init(vfy_report *r, FILE *echo);

@@ -880,7 +880,7 @@ static int cmd_verify(int argc, char **argv)
     }
     size_t counts[VFY_VERDICTS];
     memcpy(counts, report.counts, sizeof counts);
-    size_t failed = report.counts[VFY_FAIL];
+    size_t failed = report.counts[VFY_FAIL], refused = report.refused;
     vfy_report_free(&report);
     if (status == SIM_ECANCELED) {
         fprintf(stderr, "gdsmc verify: %s; the finished simulations are saved in %s: run the "
@@ -895,6 +895,8 @@ static int cmd_verify(int argc, char **argv)
            counts[VFY_SKIP]);
     if (counts[VFY_DIFFERS] > 0)   /* after the closing line's "N skipped" CI readers parse */
         printf(", %zu differ from the papers", counts[VFY_DIFFERS]);
+    if (refused > 0)
+        printf(", %zu %s refused by the solver", refused, refused == 1 ? "row" : "rows");
     putchar('\n');
     return failed ? EXIT_CHECK_FAILED : EXIT_OK;
 }

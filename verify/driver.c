@@ -256,6 +256,8 @@ const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_r
         int w;
         if (s != NULL)
             w = snprintf(buf + used, len - used, "%s", s);
+        else if (isnan(v) && vfy_external(run->o))   /* the solver did not report it */
+            w = snprintf(buf + used, len - used, "(not reported)");
         else if (fmt[0])
             w = snprintf(buf + used, len - used, fmt, v);
         else if (v == floor(v) && fabs(v) < 1e15)
@@ -618,13 +620,15 @@ static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const 
     /* what an external solver did not report is NaN (and its checks SKIP) */
     const double events = res->missing & SIM_MISSING_EVENTS ? NAN
                                                             : (double)res->counts.candidates;
+    const int counted = !(res->missing & SIM_MISSING_COLLISIONS);
     const double v[] = {(double)res->ensembles, (double)res->outputs, res->cpu_seconds,
                         res->wall_seconds, events,
                         events > 0 || isnan(events) ? 1e9 * res->cpu_seconds / events : 0.0,
-                        (double)res->counts.collisions, (double)res->counts.background,
+                        counted ? (double)res->counts.collisions : NAN,
+                        counted ? (double)res->counts.background : NAN,
                         res->missing & SIM_MISSING_VIOLATIONS ? NAN
                                                               : (double)res->counts.violations,
-                        (double)res->counts.normals};
+                        counted ? (double)res->counts.normals : NAN};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
         char name[48];
         snprintf(name, sizeof name, "%s%s", names[k], suffix);
@@ -676,10 +680,35 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
             snprintf(label + strlen(label), sizeof label - strlen(label), " %s", variant);
         sim_ensemble_result *res = k == 0 ? &row->res : &row->more[k - 1];
         status = vfy_simulate(&row->solver, run->o, label, res, msg, msglen);
+        if (status == SIM_EUNSUPPORTED && vfy_external(run->o)) {   /* an answer, not an error */
+            if (row->refused[0] == '\0')
+                snprintf(row->refused, sizeof row->refused, "%s%s%s", variant,
+                         variant[0] ? ": " : "", msg);
+            status = SIM_OK;
+        }
         if (status == SIM_OK)
             row_cost_values(row, res, suffix);
     }
     return status;
+}
+
+/* The first row of the run an external solver refused, or NULL. */
+static const vfy_row *run_refused(const vfy_case_run *run)
+{
+    for (size_t i = 0; i < run->nrows; i++)
+        if (run->rows[i].refused[0] != '\0')
+            return &run->rows[i];
+    return NULL;
+}
+
+/* Why a check of the whole case is not judged when row `no` was refused. */
+static const char *needs_refused_row(const vfy_case_run *run, const vfy_row *no, char *buf,
+                                     size_t len)
+{
+    char label[160];
+    snprintf(buf, len, "needs a row the solver refused (%s: %s)",
+             vfy_expand(label, sizeof label, row_label_template(run->d), run, no), no->refused);
+    return buf;
 }
 
 /* Whether row's result lacks something (an external solver's NaN or a
@@ -744,12 +773,17 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
     const int incomplete =
         vfy_external(run->o) && (row != NULL ? row_incomplete(row) : run_incomplete(run));
     const char *const was = r->missing;
+    char label[160] = "", refused[480] = "";
+    const vfy_row *no = row != NULL ? (row->refused[0] ? row : NULL) : run_refused(run);
+    if (no != NULL && row != NULL)
+        snprintf(refused, sizeof refused, "solver refused: %s", row->refused);
+    else if (no != NULL)   /* a case check: it may need the refused row */
+        needs_refused_row(run, no, refused, sizeof refused);
     if (incomplete)
-        r->missing = "needs quantities the solver did not report";
-    char label[160] = "";
+        r->missing = refused[0] ? refused : "needs quantities the solver did not report";
     if (row != NULL)
         vfy_expand(label, sizeof label, row_label_template(run->d), run, row);
-    r->row = label;
+    r->row = row != NULL ? label : "";
     for (const vfy_check_spec *c = checks; c && c->name; c++) {
         vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
         if (g == VFY_OMIT)
@@ -762,6 +796,10 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
             vfy_skip(r, name, why);
             continue;
         }
+        if (row != NULL && no != NULL) {   /* nothing of the row to judge */
+            vfy_skip(r, name, refused);
+            continue;
+        }
         const char *gone = NULL;   /* an operand an external solver did not report */
         if (row != NULL && incomplete)
             gone = operand_missing(run, row, c->value)      ? c->value
@@ -772,10 +810,13 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
                    : c->expected && isnan(lookup(run, NULL, c->expected)) ? c->expected
                                                                           : NULL;
         if (gone != NULL) {
-            snprintf(why, sizeof why,
-                     reported_quantity(row, gone) ? "%s not reported by the solver"
-                                             : "%s needs quantities the solver did not report",
-                     gone);
+            if (no != NULL)
+                snprintf(why, sizeof why, "%s: %s", gone, refused);
+            else
+                snprintf(why, sizeof why,
+                         reported_quantity(row, gone) ? "%s not reported by the solver"
+                                                      : "%s needs quantities the solver did not report",
+                         gone);
             vfy_skip(r, name, why);
             continue;
         }
@@ -877,6 +918,8 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
         vfy_values_set(&row->values, *v, vfy_reference_value(*v, &row->scene));
     if (!d->no_simulation && (status = row_simulate(run, s, row, msg, msglen)) != SIM_OK)
         return status;
+    if (row->refused[0] != '\0')
+        r->refused++;
     for (const vfy_paper_column *p = d->paper_columns; p && p->name; p++)
         vfy_values_set(&row->values, p->name, row->index < p->count ? p->v[row->index] : NAN);
     for (const vfy_metric *m = d->metrics; m && m->name; m++)
@@ -886,7 +929,7 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
-    if (d->row_progress && run->o->progress) {
+    if (d->row_progress && run->o->progress && row->refused[0] == '\0') {
         char line[512];
         fprintf(run->o->progress, "   %s\n", vfy_expand(line, sizeof line, d->row_progress, run,
                                                          row));
@@ -1201,8 +1244,11 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     vfy_values_set(&run->values, "outputs", (double)last->res.outputs);
     run_provenance(run);
     /* the hook's own checks on what an incomplete external result left NaN */
+    char refused[480];
+    const vfy_row *no = run_refused(run);
     if (vfy_external(run->o) && run_incomplete(run))
-        r->missing = "needs quantities the solver did not report";
+        r->missing = no != NULL ? needs_refused_row(run, no, refused, sizeof refused)
+                                : "needs quantities the solver did not report";
     sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
     r->missing = NULL;
     if (status != SIM_OK)

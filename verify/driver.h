@@ -80,6 +80,8 @@ typedef struct vfy_row {
     sim_ensemble_result res;    /* the first variant's result (or the only one) */
     sim_ensemble_result *more;  /* the other variants' results, in order */
     vfy_values values;
+    char refused[280];          /* why an external solver refused the row (or a
+                                   variant of it, named first), or "" */
 } vfy_row;
 
 /* The series `name` of a row (an observable of the result, or a reference):

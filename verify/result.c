@@ -381,6 +381,20 @@ static sim_status allocate(const sim_scene *scene, sim_ensemble_result *res)
     return SIM_OK;
 }
 
+sim_status vfy_result_blank(const sim_scene *scene, sim_ensemble_result *res)
+{
+    memset(res, 0, sizeof *res);
+    sim_status status = allocate(scene, res);
+    if (status != SIM_OK) {
+        sim_ensemble_result_free(res);
+        return status;
+    }
+    for (size_t m = 0; m < res->outputs; m++)
+        res->t[m] = sim_scene_output_time(scene, m);
+    res->missing = SIM_MISSING_EVENTS | SIM_MISSING_VIOLATIONS | SIM_MISSING_COLLISIONS;
+    return SIM_OK;
+}
+
 static sim_status parse(reader *r, const sim_scene *scene, sim_ensemble_result *res,
                         vfy_result_info *info)
 {

@@ -64,6 +64,11 @@ int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
 sim_status vfy_result_read(const char *path, const sim_scene *scene, sim_ensemble_result *res,
                            vfy_result_info *info, char *msg, size_t msglen);
 
+/* A result for scene that reports nothing: the scene's output times, every
+ * mean, variance and half-width NaN, events and violations missing (what a
+ * refused scene leaves for the checks).  SIM_OK or SIM_ENOMEM (res freed). */
+sim_status vfy_result_blank(const sim_scene *scene, sim_ensemble_result *res);
+
 /* The same from text in memory (len bytes, NUL bytes refused); name stands
  * for the file in messages (tests and the fuzzer). */
 sim_status vfy_result_parse(const char *text, size_t len, const char *name,

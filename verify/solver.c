@@ -172,6 +172,29 @@ static void log_tail(const char *path, char *buf, size_t cap)
     buf[used < cap ? used : cap - 1] = '\0';
 }
 
+/* The last non-blank line of the file at path (at most cap - 1 bytes of it,
+ * trailing white space removed) in buf; "" when there is none. */
+static void last_line(const char *path, char *buf, size_t cap)
+{
+    buf[0] = '\0';
+    FILE *f = fopen(path, "rb");
+    if (f == NULL)
+        return;
+    char text[1025];
+    fseek(f, 0, SEEK_END);
+    long size = ftell(f);
+    fseek(f, size > 1024 ? size - 1024 : 0, SEEK_SET);
+    size_t len = fread(text, 1, 1024, f);
+    fclose(f);
+    text[len] = '\0';
+    while (len > 0 && strchr(" \t\r\n", text[len - 1]) != NULL)
+        text[--len] = '\0';
+    const char *nl = strrchr(text, '\n'), *line = nl ? nl + 1 : text;
+    const size_t n = strlen(line) < cap - 1 ? strlen(line) : cap - 1;
+    memcpy(buf, line, n);
+    buf[n] = '\0';
+}
+
 static double wall_now(void)
 {
     struct timespec ts;
@@ -179,9 +202,10 @@ static double wall_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* Start argv with its output to log: the child's pid, or -1 with errno set
- * (the exec's own errno when the command could not be run). */
-static pid_t start(char **argv, const char *log)
+/* Start argv with its standard output to log and its standard error to err:
+ * the child's pid, or -1 with errno set (the exec's own errno when the
+ * command could not be run). */
+static pid_t start(char **argv, const char *log, const char *err)
 {
     int fds[2];
     if (pipe(fds) != 0)
@@ -196,14 +220,15 @@ static pid_t start(char **argv, const char *log)
     if (pid == 0) {   /* the child: its own process group, output to the log */
         close(fds[0]);
         setpgid(0, 0);
-        int in = open("/dev/null", O_RDONLY), out = open(log, O_WRONLY | O_CREAT | O_TRUNC,
-                                                          0644);
+        int in = open("/dev/null", O_RDONLY);
+        int out = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int errs = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (in >= 0)
             dup2(in, 0);
-        if (out >= 0) {
+        if (out >= 0)
             dup2(out, 1);
-            dup2(out, 2);
-        }
+        if (errs >= 0)
+            dup2(errs, 2);
         execvp(argv[0], argv);
         int e = errno;
         ssize_t ignored = write(fds[1], &e, sizeof e);
@@ -228,11 +253,12 @@ sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, cons
 {
     memset(res, 0, sizeof *res);
     memset(info, 0, sizeof *info);
-    char scene_path[1100], out_path[1100], log_path[1100], why[200];
+    char scene_path[1100], out_path[1100], log_path[1100], err_path[1100], why[200];
     const uint64_t key = vfy_checkpoint_key(scene);
     snprintf(scene_path, sizeof scene_path, "%s/%016" PRIx64 ".ini", solver->work_dir, key);
     snprintf(out_path, sizeof out_path, "%s/%016" PRIx64 ".result", solver->work_dir, key);
     snprintf(log_path, sizeof log_path, "%s/%016" PRIx64 ".log", solver->work_dir, key);
+    snprintf(err_path, sizeof err_path, "%s/%016" PRIx64 ".err", solver->work_dir, key);
 
     char *words[MAX_WORDS + 1], buf[SPLIT_BYTES], expanded[MAX_WORDS][1200];
     int n = vfy_solver_split(solver->command, words, MAX_WORDS, buf, sizeof buf, why,
@@ -260,7 +286,7 @@ sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, cons
     unlink(out_path);   /* a result from before must not pass for this run's */
 
     const double wall0 = wall_now();
-    pid_t pid = start(words, log_path);
+    pid_t pid = start(words, log_path, err_path);
     if (pid < 0) {
         snprintf(msg, msglen, "%s: the solver cannot be started: '%s': %s (--solver '%s')",
                  label, words[0], strerror(errno), solver->command);
@@ -292,15 +318,28 @@ sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, cons
     }
     const double wall = wall_now() - wall0;
     char tail[700];
+    if (WIFEXITED(status) && WEXITSTATUS(status) == VFY_SOLVER_REFUSES) {
+        last_line(err_path, tail, 240);
+        if (tail[0] != '\0') {   /* a refusal: the reason is the message */
+            snprintf(msg, msglen, "%s", tail);
+            return SIM_EUNSUPPORTED;
+        }
+        snprintf(msg, msglen, "%s: the solver exited with status %d, a refusal, but gave no "
+                 "reason as the last line of its standard error %s (--solver '%s')", label,
+                 VFY_SOLVER_REFUSES, err_path, solver->command);
+        return SIM_EINVAL;
+    }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-        log_tail(log_path, tail, sizeof tail);
+        struct stat es;   /* the standard error, or the output when that is empty */
+        const char *quoted = stat(err_path, &es) == 0 && es.st_size > 0 ? err_path : log_path;
+        log_tail(quoted, tail, sizeof tail);
         if (WIFSIGNALED(status))
             snprintf(why, sizeof why, "was killed by signal %d (%s)", WTERMSIG(status),
                      strsignal(WTERMSIG(status)));
         else
             snprintf(why, sizeof why, "exited with status %d", WEXITSTATUS(status));
         snprintf(msg, msglen, "%s: the solver %s (--solver '%s'); the last lines of its output "
-                 "(%s):%s", label, why, solver->command, log_path,
+                 "(%s):%s", label, why, solver->command, quoted,
                  tail[0] ? tail : "\n    (none)");
         return SIM_EINVAL;
     }

@@ -8,8 +8,13 @@
  * all but \" and \\), but no shell runs: `sh -c '...'` is there for a user
  * who wants one.  {scene} and {out} may stand anywhere inside a word.  The
  * child inherits the environment (OMP_NUM_THREADS and the rest) and the
- * working directory; its standard output and error go to a log file beside
- * the result, whose last lines a failure quotes.
+ * working directory; its standard output goes to a log file beside the
+ * result (KEY.log) and its standard error to another (KEY.err), whose last
+ * lines a failure quotes (the log's when the error file is empty).
+ *
+ * A solver that cannot do a scene refuses it: it exits with status
+ * VFY_SOLVER_REFUSES and writes the reason as the last line of its standard
+ * error (docs/solver-protocol.md); nothing else counts as a refusal.
  */
 #ifndef GDSMC_VFY_SOLVER_H
 #define GDSMC_VFY_SOLVER_H
@@ -19,6 +24,8 @@
 #include "ensemble.h"
 #include "result.h"
 #include "scene.h"
+
+#define VFY_SOLVER_REFUSES 3   /* the exit status of a refusal */
 
 typedef struct vfy_solver {
     const char *command;   /* "python3 mysolver.py {scene} {out}" */
@@ -49,8 +56,11 @@ uint64_t vfy_solver_identity(const char *command);
  * messages.  SIM_EINVAL with a message naming the command or the file, line
  * and column: the command not found or not executable, a non-zero exit or
  * a signal (its last standard-error lines quoted), the time limit exceeded,
- * a missing, empty or malformed result; SIM_ECANCELED when a stop was
- * requested (the child killed); SIM_EIO when the files cannot be written. */
+ * a missing, empty or malformed result, a refusal without a reason;
+ * SIM_EUNSUPPORTED when the solver refused the scene, msg its reason (the
+ * last line of its standard error, at most 239 bytes), res empty;
+ * SIM_ECANCELED when a stop was requested (the child killed); SIM_EIO when
+ * the files cannot be written. */
 sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, const char *label,
                           sim_ensemble_result *res, vfy_result_info *info, char *msg,
                           size_t msglen);
