@@ -16,7 +16,7 @@ FUZZ_SECONDS ?= 600
 CMAKE_FLAGS ?=
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-# Debian 12 packages the build needs (SPEC: never vendored).
+# Debian 12 packages the build needs (installed from Debian, never vendored).
 PACKAGES = cmake make gcc pkg-config libgsl-dev libsundials-dev libcmocka-dev \
            librandom123-dev libinih-dev gnuplot-nox python3 python3-numpy
 FUZZ_PACKAGES = clang libomp-dev

@@ -1,4 +1,4 @@
-/* References for paper B, a granular gas in a host medium (SPEC §4, §8):
+/* References for paper B, a granular gas in a host medium (docs/theory.md §12):
  * closed forms (B.14)-(B.18), CVODE for (B.13), (B.21) and (B.22), and the
  * closures' steady states by GSL root finding. */
 #include "background.h"
@@ -21,7 +21,7 @@ static int positive(double x)
 }
 
 /* Describe the first out-of-range parameter into buf; return 0 when all are valid.
- * Ranges (SPEC §4): masses, densities, T_B, C1, T0 finite and > 0; C2 finite
+ * Ranges (docs/theory.md §12): masses, densities, T_B, C1, T0 finite and > 0; C2 finite
  * and >= 0; e in (0, 1]; velocities finite. */
 static int bad_params(const ref_background_params *p, char *buf, size_t len)
 {
@@ -56,7 +56,7 @@ static int valid(const ref_background_params *p)
     return !bad_params(p, NULL, 0);
 }
 
-/* alpha = m_B/(m + m_B), SPEC §4 (a mass ratio, not a restitution coefficient). */
+/* alpha = m_B/(m + m_B), docs/theory.md §3.4 (a mass ratio, not a restitution coefficient). */
 static double mass_ratio(const ref_background_params *p)
 {
     return p->bg_mass / (p->mass + p->bg_mass);
@@ -121,7 +121,7 @@ static double exp_difference_quotient(double B, double C, double s)
     return exp(-lo * s) * growth(hi - lo, s);
 }
 
-/* (B.15) for B != C, (B.16) for B = C (SPEC §4), at s = rho_B C1 t. */
+/* (B.15) for B != C, (B.16) for B = C (docs/theory.md §12.1), at s = rho_B C1 t. */
 double ref_background_maxwell_T(const ref_background_params *p, double t)
 {
     if (!valid(p) || !(isfinite(t) && t >= 0.0))

@@ -1,4 +1,4 @@
-/* References for paper B: a granular gas in a host medium (SPEC §4, §8).
+/* References for paper B: a granular gas in a host medium (docs/theory.md §12).
  *
  * The grains (mass m, number density rho) collide elastically with a fixed
  * Maxwellian background f^B = rho_B M(m_B, u_B, T_B) through the kernel B1 and
@@ -14,7 +14,7 @@
  *    give the grain-grain term the physical rate K (rho_B^2/rho) C1 = rho C2,
  *    but the background terms the rate (rho_B^2/rho) C1, which depends on the
  *    grain density; a grain's collision rate with the background is
- *    E1 = 4 pi C1 rho_B (...) (SPEC §4) whatever rho is, and the Grad
+ *    E1 = 4 pi C1 rho_B (...) (docs/theory.md §5.1) whatever rho is, and the Grad
  *    coefficient of du/dt in (B.22) is exactly the rho_B C1-rate one derived
  *    from it.  So ref_background_hs uses the physical rates: the background
  *    terms of (B.21)/(B.22) times rho_B C1, the grain-grain terms (the ones
@@ -93,7 +93,7 @@ ref_status ref_background_maxwell_ode(const ref_background_params *p, const doub
                                       char *msg, size_t msglen);
 
 /* Exact expectation of the n-particle DSMC estimator of the centred
- * temperature, T_n = (m/3n) Σ |v_i - V|^2, for Maxwell kernels (SPEC §10:
+ * temperature, T_n = (m/3n) Σ |v_i - V|^2, for Maxwell kernels (docs/theory.md §12.2:
  * exact finite-n behaviour), when the n initial velocities are i.i.d. with
  * mean u0 and temperature T0 (a Maxwellian or the mixture B.35).  With
  * x_i = v_i - u_B, Q = E Σ|x_i|^2 and P = E|Σ x_i|^2 obey a closed linear
@@ -117,7 +117,7 @@ ref_status ref_background_maxwell_T_mean(const ref_background_params *p, double 
 /* ---------------------------------------------------------------- hard spheres */
 
 /* Total rate of background collisions of a grain with velocity v for the
- * hard-sphere kernel B1 = C1 |g| (SPEC §4, Algorithm 2), a = |v - u_B|,
+ * hard-sphere kernel B1 = C1 |g| (docs/theory.md §5.1, Algorithm 2), a = |v - u_B|,
  * b = sqrt(2 T_B/m_B):
  *   E1(v) = 4 pi C1 rho_B (pi^{-1/2} b e^{-a^2/b^2} + (2a^2 + b^2)/(2a) erf(a/b)),
  *   E1(u_B) = 8 sqrt(pi) C1 rho_B b,
@@ -126,7 +126,7 @@ ref_status ref_background_maxwell_T_mean(const ref_background_params *p, double 
 double ref_background_hs_E1(const ref_background_params *p, const double v[3]);
 double ref_background_hs_E1_majorant(const ref_background_params *p, const double v[3]);
 
-/* Hydrodynamic closures for hard spheres (SPEC §4; paper B Eqs. B.21, B.22),
+/* Hydrodynamic closures for hard spheres (docs/theory.md §12.3; paper B Eqs. B.21, B.22),
  * S = (1-alpha) T_B + alpha T, du = |u - u_B|, written in the paper's scaled
  * time and K (see the top of this file for the conversion to physical time):
  * LE (B.21), local equilibrium:
@@ -159,7 +159,7 @@ ref_status ref_background_hs(const ref_background_params *p, ref_background_clos
  * width of 1e-14.  dT/dt > 0 at T = 0 (the background heats a cold gas) and
  * < 0 at T = T_B when there is inelastic loss (rho C2 > 0 and e < 1); with
  * no loss T* = T_B is returned.  The steady state does not depend on the
- * time scale (rho_B C1).  SPEC §4 checks (m = m_B = T_B = rho = rho_B = C1 = 1,
+ * time scale (rho_B C1).  docs/theory.md §12.3 checks (m = m_B = T_B = rho = rho_B = C1 = 1,
  * e = 1/2): K = 1/8: 0.9557 (LE), 0.9562 (GRAD); K = 1: 0.7428, 0.7574.
  * NaN on bad p or closure, or if the solver fails (the bracket and the
  * function are checked first, so GSL's error handler is not reached except

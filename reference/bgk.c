@@ -1,5 +1,5 @@
-/* Paper E's BGK-model reference for homogeneous uniform shear flow (SPEC §7,
- * §8): rates, the closed-form steady state, the steady marginals (E 3.18-3.20),
+/* Paper E's BGK-model reference for homogeneous uniform shear flow (docs/theory.md §15,
+ * §16): rates, the closed-form steady state, the steady marginals (E 3.18-3.20),
  * and CVODE on the second-moment system with the collision counter s0.  The
  * derivations are in bgk.h. */
 #include "bgk.h"
@@ -42,7 +42,7 @@ static int bad_params(const ref_bgk_params *p, char *buf, size_t len)
     return 0;
 }
 
-/* Rates at T0 in units of 1/tau0 (dimensionless; SPEC §7, E 2.16-2.18):
+/* Rates at T0 in units of 1/tau0 (dimensionless; docs/theory.md §2.3, E 2.16-2.18):
  *   nu' tau0 = beta/(c_eta_nu 5 sqrt(pi)/8),  zeta0 tau0 = (2/(3 sqrt(pi)))(1 - alpha^2). */
 typedef struct reduced_rates {
     double beta, nu_tau, zeta_tau, tau_eta_over_tau;
@@ -59,7 +59,7 @@ static reduced_rates reduced(const ref_bgk_params *p)
     return r;
 }
 
-/* E 2.12-2.13 with n sigma^2 = 4 gamma C (SPEC §7 corrections). */
+/* E 2.12-2.13 with n sigma^2 = 4 gamma C (docs/theory.md §2.3). */
 static double lambda0(const ref_bgk_params *p)
 {
     return 1.0 / (sqrt(2.0) * PI * 4.0 * p->gamma * p->C);

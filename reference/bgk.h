@@ -1,7 +1,7 @@
-/* Paper E's BGK-model reference for homogeneous uniform shear flow (SPEC §7,
- * §8; Astillero and Santos, PRE 71 (2005) 031309, seed 004, "E").
+/* Paper E's BGK-model reference for homogeneous uniform shear flow (docs/theory.md §15,
+ * §16; Astillero and Santos, PRE 71 (2005) 031309, seed 004, "E").
  *
- * Units and time scales (E Eqs. 2.12-2.18 with SPEC §7's corrections).  Hard
+ * Units and time scales (E Eqs. 2.12-2.18 as docs/theory.md §2.3 takes them).  Hard
  * spheres with B = C|g| and rate factor gamma, so that, with the suite's
  * normalisation ∫ f dv = 1, n sigma^2 = 4 gamma C and
  *   lambda0     = 1/(sqrt(2) pi n sigma^2)                 (E 2.12)
@@ -18,7 +18,7 @@
  * beta times the IHS rate, i.e. relaxation rate beta/tau_eta, and the drag
  * -m (zeta0/2) V).  Its second moments P_ij = n m <V_i V_j> close exactly:
  *   dP_ij/dt = -a (delta_ix P_yj + delta_jx P_yi) - nu' (P_ij - p delta_ij)
- *              - zeta0 P_ij,           p = tr P/3 = n T          (SPEC §7)
+ *              - zeta0 P_ij,           p = tr P/3 = n T          (docs/theory.md §15.1)
  * (shear term: the moment of a V_y df/dV_x; drag: of (zeta0/2) d/dV.(Vf)
  * gives -zeta0 P_ij).  In components (xz = yz = 0 stay 0 from an isotropic
  * start), with P written per unit density (P/n, temperature units):
@@ -33,7 +33,7 @@
  *   EHS: ds0'/dt = beta/(sqrt(pi) tau(T))     (tau' = tau/beta, E 2.19)
  * and E's figures plot s'/beta.
  *
- * Steady state (derived from the system above; SPEC §7).  Set the time
+ * Steady state (derived from the system above; docs/theory.md §15.2).  Set the time
  * derivatives to 0 and x = zeta0/nu' (a function of alpha only, since both
  * rates are proportional to sqrt(T)):
  *   Pyy = Pzz = nu' T/(nu' + zeta0) = T/(1 + x)
@@ -46,18 +46,18 @@
  * The first relation fixes a tau(T_s) = (a/nu')(nu' tau); as tau is
  * proportional to T^(-1/2), T_s/T0 = (a tau0/(a tau_s))^2 with tau0 = tau(T0).
  * Then a* = a tau_eta(T_s) (with c_eta) and eta* = (-Pxy/p)/a*.
- * SPEC §7 check, alpha = 0.9, c_eta = c_eta_nu = 1.016: a tau_s = 0.32627,
+ * docs/theory.md §15.2 check, alpha = 0.9, c_eta = c_eta_nu = 1.016: a tau_s = 0.32627,
  * -Pxy/p = 0.32855, (Pxx - Pyy)/p = 0.23417, a* = 0.36722.
  *
  * The two 1.016's.  E's printed ratios need c_eta = 1.016 in a* = a tau_eta
- * (SPEC §7).  Inside nu' = beta/tau_eta the 1.016 is a convention E does not
+ * (docs/theory.md §15.2).  Inside nu' = beta/tau_eta the 1.016 is a convention E does not
  * settle; c_eta_nu lets the caller choose it.  Moving c_eta_nu from 1.016 to
  * 1 scales x by 1/1.016 and moves the steady values by less than 1 - 1/1.016
  * = 1.6% (by at most 1.5% over E's range alpha = 0.5-0.95; the largest
  * change is that of (Pxx - Pyy)/p and T_s/T0, -Pxy/p and a tau_s move by
  * less than 0.8%).
  * Both default to REF_BGK_C_ETA.  beta = (1 + alpha)/2 is settled (E's
- * eta*_NS = 1.1 for BGK at alpha = 0.5 needs it; SPEC §7).
+ * eta*_NS = 1.1 for BGK at alpha = 0.5 needs it; docs/theory.md §15.2).
  *
  * Bad input.  Every function checks p: NULL; alpha outside (0, 1];
  * shear_rate not finite or < 0; gamma, C, mass, T0, c_eta, c_eta_nu not
@@ -144,7 +144,7 @@ ref_status ref_bgk_steady_state(const ref_bgk_params *p, ref_bgk_steady *out, ch
                                 size_t msglen);
 
 /* The steady velocity distribution and its marginals (E Eqs. 3.16-3.20, E Figs.
- * 17-18; SPEC §7 "marginals").
+ * 17-18; docs/theory.md §15.3).
  *
  * Solution.  In the Lagrangian frame the steady equation of the model reads
  *   div_V(F f) = -nu' (f - f_L),   F = -(zeta0/2) V - a V_y x̂,   div_V F = -3 zeta0/2,

@@ -1,4 +1,4 @@
-/* References for paper A, the uniformly heated granular gas (SPEC §3, §8, §10). */
+/* References for paper A, the uniformly heated granular gas (docs/theory.md §11). */
 #include "heated.h"
 
 #include <math.h>
@@ -10,7 +10,7 @@
 static const double PI = 3.14159265358979323846;
 
 /* Describe the first out-of-range parameter into buf; return 0 when all are valid.
- * Ranges: SPEC §3 (alpha in (0,1], beta >= 0, gamma > 0), C > 0, T0 > 0, all finite. */
+ * Ranges: docs/theory.md §11 (alpha in (0,1], beta >= 0, gamma > 0), C > 0, T0 > 0, all finite. */
 static int bad_params(const ref_heated_params *p, char *buf, size_t len)
 {
     if (!p)
@@ -33,7 +33,7 @@ static int valid(const ref_heated_params *p)
     return !bad_params(p, NULL, 0);
 }
 
-/* k = gamma pi C0 (1 - alpha^2)  (SPEC §3, paper A Eq. A.13-14). */
+/* k = gamma pi C0 (1 - alpha^2)  (docs/theory.md §11.1, paper A Eq. A.13-14). */
 double ref_heated_maxwell_rate(const ref_heated_params *p)
 {
     if (!valid(p))
@@ -63,7 +63,7 @@ double ref_heated_maxwell_T(const ref_heated_params *p, double t)
     return p->T0 * exp(-k * t) + 2.0 * p->beta * growth;
 }
 
-/* SPEC §10 (exact finite-n behaviour): E T_centred = (1 - 1/n) T(t). */
+/* docs/theory.md §11.2 (exact finite-n behaviour): E T_centred = (1 - 1/n) T(t). */
 double ref_heated_maxwell_T_centred_mean(const ref_heated_params *p, double n, double t)
 {
     if (!(n >= 1.0 && isfinite(n)))
@@ -71,8 +71,8 @@ double ref_heated_maxwell_T_centred_mean(const ref_heated_params *p, double n, d
     return (1.0 - 1.0 / n) * ref_heated_maxwell_T(p, t);
 }
 
-/* SPEC §10: E T_raw = T(t) + (T0 + 2 beta t - T(t)) / n; the 1/n term is the
- * random walk of the total momentum under white-noise heating (SPEC §1). */
+/* docs/theory.md §11.2: E T_raw = T(t) + (T0 + 2 beta t - T(t)) / n; the 1/n term is the
+ * random walk of the total momentum under white-noise heating (docs/theory.md §1.2). */
 double ref_heated_maxwell_T_raw_mean(const ref_heated_params *p, double n, double t)
 {
     if (!(n >= 1.0 && isfinite(n)))
@@ -83,7 +83,7 @@ double ref_heated_maxwell_T_raw_mean(const ref_heated_params *p, double n, doubl
     return T + (p->T0 + 2.0 * p->beta * t - T) / n;
 }
 
-/* Loss coefficient L of dT/dt = 2 beta - L T^{3/2} (SPEC §3 Ex 5):
+/* Loss coefficient L of dT/dt = 2 beta - L T^{3/2} (docs/theory.md §11.4):
  * L = gamma (1-alpha^2)/24 * 4 pi C1 * 32/sqrt(pi) * factor, with factor
  * 1 (Maxwellian closure) or 1 + 3 a2/16, a2 from paper C Eq. (C.10), d = 3. */
 static double hs_loss(const ref_heated_params *p, ref_heated_closure closure)

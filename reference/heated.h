@@ -1,4 +1,4 @@
-/* References for paper A: the uniformly heated granular gas (SPEC §3).
+/* References for paper A: the uniformly heated granular gas (docs/theory.md §11).
  *
  * dT/dt = 2 beta - gamma (1 - alpha^2)/24 ∫∫ B1(|g|) |g|^2 f f, with the
  * particle mass m = 1 (paper A's units; callers refuse other masses).
@@ -21,7 +21,7 @@ typedef struct ref_heated_params {
     double T0;      /* initial temperature, > 0 */
 } ref_heated_params;
 
-/* Maxwell molecules: k = gamma pi C0 (1 - alpha^2) (SPEC §3, A.13-14). */
+/* Maxwell molecules: k = gamma pi C0 (1 - alpha^2) (docs/theory.md §11.1, A.13-14). */
 double ref_heated_maxwell_rate(const ref_heated_params *p);
 /* T_inf = 2 beta / k (A.14); +inf when k = 0 (alpha = 1) and beta > 0, T0 when
  * k = 0 and beta = 0 (the limit of T(t)). */
@@ -30,7 +30,7 @@ double ref_heated_maxwell_T_inf(const ref_heated_params *p);
 double ref_heated_maxwell_T(const ref_heated_params *p, double t);
 
 /* Exact expectations of the n-particle DSMC estimators for Maxwell molecules
- * (SPEC §10: exact finite-n behaviour), for i.i.d. initial velocities from a
+ * (docs/theory.md §11.2: exact finite-n behaviour), for i.i.d. initial velocities from a
  * Maxwellian at rest with temperature T0.  With X = Σ|v_i - V|^2, collisions
  * conserve momentum and remove k X on average, heating adds 6 beta (n-1), so
  * E X(t) = 3 (n-1) T(t); E|Σ v_i|^2 / n = 3 T0 + 6 beta t.  Hence
@@ -41,7 +41,7 @@ double ref_heated_maxwell_T(const ref_heated_params *p, double t);
 double ref_heated_maxwell_T_centred_mean(const ref_heated_params *p, double n, double t);
 double ref_heated_maxwell_T_raw_mean(const ref_heated_params *p, double n, double t);
 
-/* Heated hard spheres (SPEC §3 Ex 5), two closures of the temperature
+/* Heated hard spheres (docs/theory.md §11.4), two closures of the temperature
  * equation with B1 = 4 pi C1 |g| and <|g|^3> = (32/sqrt(pi)) T^{3/2}:
  *   MAXWELLIAN: dT/dt = 2 beta - gamma (1-alpha^2)/24 4 pi C1 (32/sqrt(pi)) T^{3/2}
  *   SONINE:     the same loss times (1 + 3 a2/16), a2 from (C.10), d = 3. */
@@ -56,7 +56,7 @@ typedef enum ref_heated_closure {
 double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure closure);
 
 /* The steady temperature of the Maxwellian closure for a VHS kernel B1 =
- * 4 pi C |g|^lambda (0 <= lambda <= 1; docs/theory.md): with <|g|^p> = (4T)^(p/2)
+ * 4 pi C |g|^lambda (0 <= lambda <= 1; docs/theory.md §11.4): with <|g|^p> = (4T)^(p/2)
  * Gamma((3 + p)/2)/Gamma(3/2) over two Maxwellians at T, p = 2 + lambda,
  *   2 beta = gamma (1 - alpha^2)/24 4 pi C 4^(p/2) Gamma((3 + p)/2)/Gamma(3/2) T^(p/2).
  * Exact for Maxwell molecules (lambda = 0: T* = 2 beta/k, A.14); the ratio
@@ -66,7 +66,7 @@ double ref_heated_hs_T_steady(const ref_heated_params *p, ref_heated_closure clo
 double ref_heated_vhs_T_steady_maxwellian(const ref_heated_params *p, double lambda);
 
 /* The high-speed tail of the white-noise heated gas with the VHS kernel B1 =
- * 4 pi C |g|^lambda (docs/theory.md, "The heated tail"): far out, a particle
+ * 4 pi C |g|^lambda (docs/theory.md §11.5, "The heated tail"): far out, a particle
  * of speed v loses itself at the rate gamma 4 pi C v^lambda and the heating
  * diffuses it with coefficient beta, so f ~ K exp(-a v^b) with b = 1 +
  * lambda/2 and a = sqrt(4 pi gamma C / beta) / b.  Returns A = a v0^b, the

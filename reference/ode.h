@@ -1,4 +1,4 @@
-/* Moment ODEs and closures integrated with SUNDIALS CVODE (SPEC §8).
+/* Moment ODEs and closures integrated with SUNDIALS CVODE (docs/theory.md §16).
  *
  * ode_cvode.c is the one file that calls SUNDIALS: it creates the context,
  * vector, linear solver and integrator, maps negative CVODE flags through

@@ -1,4 +1,4 @@
-/* The one adapter between gdsmc and SUNDIALS 6.4.1 CVODE (SPEC §8, STYLE "Errors").
+/* The one adapter between gdsmc and SUNDIALS 6.4.1 CVODE (docs/theory.md §16, STYLE "Errors").
  *
  * Lifecycle per call, as in SUNDIALS' examples/cvode/serial/cvRoberts_dns.c:
  * context -> vector -> CVodeCreate/Init/tolerances -> (BDF: dense matrix and

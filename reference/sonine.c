@@ -1,4 +1,4 @@
-/* Sonine-approximation formulas of paper C (SPEC §5; paper C = Montanero and
+/* Sonine-approximation formulas of paper C (docs/theory.md §13; paper C = Montanero and
  * Santos, seed 002).  Equation numbers "(N)" are paper C's; see sonine.h for
  * the contract.  tgamma, not lgamma: lgamma writes the global signgam. */
 #include "sonine.h"
@@ -254,7 +254,7 @@ size_t ref_sonine_all(double alpha, double d, ref_sonine_value *out, size_t cap)
          "(42), mu2^(0)"},
         {"Aprime_nongaussian", ref_sonine_tail_Aprime_nongaussian(alpha, d),
          "(52), loss term only, a2 = 0"},
-        /* Paper D (SPEC §6), transport.h. */
+        /* Paper D (docs/theory.md §14), transport.h. */
         {"zeta_star", ref_transport_zeta_star(alpha, d), "D (2.14) at a2 (40) = D (2.16)"},
         {"nu_kappa_star", ref_transport_nu_kappa_star(alpha, d), "D (2.46)"},
         {"kappa_over_kappa0", ref_transport_kappa_star(alpha, d), "D (2.41), (2.47)"},

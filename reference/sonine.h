@@ -1,4 +1,4 @@
-/* Sonine-approximation formulas of paper C (SPEC §5; Montanero and Santos,
+/* Sonine-approximation formulas of paper C (docs/theory.md §13; Montanero and Santos,
  * "Computer simulation of uniformly heated granular fluids", seed 002):
  * estimates of the fourth cumulant a2 for three thermostats, the first Sonine
  * expansion of the collisional moments mu2 and mu4, the constants beta_n and
@@ -161,7 +161,7 @@ typedef struct ref_sonine_value {
  * mu2_nongaussian, mu4_nongaussian at (50); mu2_nongaussian_fit,
  * mu4_nongaussian_fit by (72), (73) at (76)), and the tails A_white_noise,
  * A_gaussian, A_white_noise_mu2_0 and A_gaussian_mu2_0 (with mu2^(0)), and
- * Aprime_nongaussian; then paper D's heat-flux coefficients (SPEC §6,
+ * Aprime_nongaussian; then paper D's heat-flux coefficients (docs/theory.md §14,
  * transport.h): the first Sonine approximation zeta_star, nu_kappa_star,
  * kappa_over_kappa0, kappa_prime_over_kappa0, mu_star (D (2.14), (2.46),
  * (2.41), (2.42), (2.38) at a2 (40) = D (2.16)), the same five with the

@@ -1,4 +1,4 @@
-/* Heat-flux transport coefficients of paper D (SPEC §6); see transport.h for
+/* Heat-flux transport coefficients of paper D (docs/theory.md §14); see transport.h for
  * the contract, the sources and the derivations.  "D (N)" = paper D's Eq. (N);
  * "D ref. [28]" = Garzó, Santos and Montanero, Physica A 376 (2007) 94. */
 #include "transport.h"
@@ -152,7 +152,7 @@ double ref_transport_sonine_P(int k)
 
 double ref_transport_b1_per_kappa(void)
 {
-    /* (d/(d-1))/(nu0 tau) with nu0 tau = 8/(5 sqrt pi) (SPEC §6), d = 3. */
+    /* (d/(d-1))/(nu0 tau) with nu0 tau = 8/(5 sqrt pi) (docs/theory.md §2.3), d = 3. */
     return 15.0 * sqrt(PI) / 16.0;
 }
 
@@ -336,7 +336,7 @@ static ref_status elastic_factor(int n, double **factor, char *msg, size_t msgle
  * block is the order-m matrix, the quadrature being exact at every order. */
 static void elastic_fill(const double *Lf, int n, int m, ref_transport_elastic *out)
 {
-    /* Right-hand side 5 sqrt2 pi e_1 (transport.h): b'_k in SPEC §6's units. */
+    /* Right-hand side 5 sqrt2 pi e_1 (transport.h): b'_k in the units of docs/theory.md §14. */
     const double r = 5.0 * sqrt(2.0) * PI;
     double x[REF_TRANSPORT_ELASTIC_MAX_ORDER];
     out->order = m;

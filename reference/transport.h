@@ -1,4 +1,4 @@
-/* Heat-flux transport coefficients of paper D (SPEC §6; Montanero, Santos and
+/* Heat-flux transport coefficients of paper D (docs/theory.md §14; Montanero, Santos and
  * Garzó, "First-order Chapman-Enskog velocity distribution function in a
  * granular gas", Physica A 376 (2007) 75, seed 003).  Equation numbers
  * "D (N)" are paper D's.
@@ -34,7 +34,7 @@
  *     convergence, as Pekeris and Alterman did (kappa/kappa0 = 1.025218, the
  *     value paper D quotes from its ref. [37]; D §4).
  *
- * Units: reduced as in SPEC §6: nu0 of D (2.15) for rates (zeta* = zeta/nu0,
+ * Units: reduced as in docs/theory.md §14: nu0 of D (2.15) for rates (zeta* = zeta/nu0,
  * nu*_kappa = nu_kappa/nu0), kappa0 of D (2.47) (the elastic FIRST-Sonine
  * conductivity) for kappa and kappa', and mu* = n mu/(T kappa0).
  *
@@ -85,8 +85,8 @@ ref_status ref_transport_first_sonine(double alpha, double d, double a2,
                                       char *msg, size_t msglen);
 
 /* The standard first Sonine approximation with a2 of paper C's (C.40) = D
- * (2.16), ref_sonine_a2_gaussian_alt (SPEC §6).  At alpha = 0.5, d = 3:
- * kappa'/kappa0 = 1.31870, kappa/kappa0 = 1.90108 (SPEC §6).  At alpha = 1
+ * (2.16), ref_sonine_a2_gaussian_alt (docs/theory.md §14.1).  At alpha = 0.5, d = 3:
+ * kappa'/kappa0 = 1.31870, kappa/kappa0 = 1.90108 (docs/theory.md §14.1).  At alpha = 1
  * every one gives the elastic first-Sonine values: zeta* = 0, mu* = 0,
  * kappa* = kappa'* = 1, nu*_kappa = (d-1)/d. */
 double ref_transport_zeta_star(double alpha, double d);        /* D (2.14) at (2.16) */
@@ -106,7 +106,7 @@ double ref_transport_mu_star_modified(double alpha, double d);
 
 /* ------------------------------------------ exact elastic solution, d = 3 */
 /*
- * The problem.  SPEC §6's force (D Eq. 4.1 with the thermostat of D Eq. 4.2)
+ * The problem.  The force of docs/theory.md §7 (D Eq. 4.1 with the thermostat of D Eq. 4.2)
  * is the acceleration a = G'·eps, G'_ij = (T/(2m)) delta_ij - V_i V_j/2.
  * Linearising the steady Boltzmann equation ∂_V·(a f) = J[f, f] about the
  * Maxwellian, with f = f_M (1 + phi):
@@ -114,7 +114,7 @@ double ref_transport_mu_star_modified(double alpha, double d);
  * (d = 3; the -V(V·eps)/2 part gives c^2 - 2, the constant part -1/2), which
  * is exactly the Chapman-Enskog source (c^2 - 5/2) V·∇ln T with ∇ln T -> eps:
  * so kappa' = kappa at alpha = 1, and eps > 0 drives q_x < 0.  In reduced
- * units (c = V/v0, lambda = 1/(sqrt2 pi n sigma^2), eps* = lambda eps, SPEC §6)
+ * units (c = V/v0, lambda = 1/(sqrt2 pi n sigma^2), eps* = lambda eps, docs/theory.md §2.3)
  * with phi = eps* c_x Σ_k b'_k L_k^(3/2)(c^2):
  *   Lop[c_x Phi] = 4 sqrt2 pi c_x (c^2 - 5/2),
  *   Lop[phi](c) = ∫dc1 phi_M(c1) |g| ∫dΩ' [phi' + phi1' - phi - phi1],
@@ -127,7 +127,7 @@ double ref_transport_mu_star_modified(double alpha, double d);
  * for the scattering angle); the integrands are polynomials, so the rules
  * are exact up to rounding (no truncation error at any order).
  *
- * Normalisation.  b'_k = P_k <c_x L_k^(3/2)(c^2)>/eps* (SPEC §6, D (3.10)),
+ * Normalisation.  b'_k = P_k <c_x L_k^(3/2)(c^2)>/eps* (docs/theory.md §10.5, D (3.10)),
  * and the heat flux gives b'_1 = (15 sqrt(pi)/16) kappa'/kappa0, so at order 1
  * b'_1 = 15 sqrt(pi)/16 and kappa/kappa0 = 1 exactly.  kappa/kappa0 at order
  * N is b'_1(N)/b'_1(1).  Order 2 gives 45/44 = 1.0227273 (Chapman-Cowling's
@@ -175,11 +175,11 @@ double ref_transport_kappa_elastic_exact(void);
 double ref_transport_b_elastic_exact(int k);
 
 /* P_k = 1/<c_x^2 [L_k^(3/2)(c^2)]^2> under phi_M = 3 k! Gamma(3/2)/Gamma(k + 5/2):
- * 4/5, 16/35, 32/105 for k = 1, 2, 3 (SPEC §6, D (3.10)).  k >= 0, else NaN. */
+ * 4/5, 16/35, 32/105 for k = 1, 2, 3 (docs/theory.md §10.5, D (3.10)).  k >= 0, else NaN. */
 double ref_transport_sonine_P(int k);
 
 /* b'_1/(kappa'/kappa0) = (d/(d-1))/(nu0 tau) = 15 sqrt(pi)/16 = 1.661675 at
- * d = 3 (SPEC §6 identity, from q = (m/2)∫V^2 V f and D (2.47)). */
+ * d = 3 (docs/theory.md §14.2 identity, from q = (m/2)∫V^2 V f and D (2.47)). */
 double ref_transport_b1_per_kappa(void);
 
 #endif

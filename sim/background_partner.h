@@ -1,4 +1,4 @@
-/* Partners drawn from the fixed Maxwellian background of paper B (SPEC §4),
+/* Partners drawn from the fixed Maxwellian background of paper B (docs/theory.md §5.2),
  * shared by effect_background.c and its tests. */
 #ifndef GDSMC_SIM_BACKGROUND_PARTNER_H
 #define GDSMC_SIM_BACKGROUND_PARTNER_H

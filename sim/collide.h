@@ -1,11 +1,11 @@
-/* The inelastic binary collision rule (SPEC §3, paper A Eq. (3)).
+/* The inelastic binary collision rule (docs/theory.md §3.1, paper A Eq. (3)).
  *
  *   v' = (v+w)/2 + (1-alpha)/4 g + (1+alpha)/4 |g| e
  *   w' = (v+w)/2 - (1-alpha)/4 g - (1+alpha)/4 |g| e,   g = v - w, e on S^2.
  *
  * Momentum is conserved exactly (up to round-off); the energy changes by
  * -(1-alpha^2)/4 (1 - mu) |g|^2 with mu = (g.e)/|g|.  Paper B's binary rule is
- * the same with alpha = e (SPEC §4).  Below it, the elastic rule of a grain
+ * the same with alpha = e (docs/theory.md §3.1).  Below it, the elastic rule of a grain
  * with a background partner (paper B).
  */
 #ifndef GDSMC_SIM_COLLIDE_H
@@ -28,12 +28,12 @@ static inline void sim_collide_inelastic(double v[3], double w[3], double alpha,
     }
 }
 
-/* The contact rule of paper C (SPEC §5): inelastic hard spheres meeting along
+/* The contact rule of paper C (docs/theory.md §3.2): inelastic hard spheres meeting along
  * the unit vector s with gs = (v - w).s > 0,
  *   v' = v - (1+alpha)/2 gs s,   w' = w + (1+alpha)/2 gs s.
  * With s drawn with density proportional to Θ(g.s)(g.s) on S^2 this is paper
  * A's rule (above) with e uniform: g' = (1-alpha)/2 g + (1+alpha)/2 |g| e,
- * e = g - 2 (g.s) s / |g| being uniform (SPEC §5). */
+ * e = g - 2 (g.s) s / |g| being uniform (docs/theory.md §3.2). */
 static inline void sim_collide_contact(double v[3], double w[3], double alpha, double gs,
                                        const double s[3])
 {
@@ -44,7 +44,7 @@ static inline void sim_collide_contact(double v[3], double w[3], double alpha, d
     }
 }
 
-/* Elastic collision of a grain v with a background partner w (SPEC §4, paper B
+/* Elastic collision of a grain v with a background partner w (docs/theory.md §3.4, paper B
  * Eq. (2)): v' = (1 - a) v + a w + a |v - w| e, with the mass ratio
  * a = m_B / (m + m_B).  The partner's post-collision velocity, which the fixed
  * background never keeps, is w' = (1 - a) v + a w - (1 - a) |v - w| e. */

@@ -1,4 +1,4 @@
-/* Effects: the physical processes a scene names (SPEC §2), as type objects.
+/* Effects: the physical processes a scene names (docs/theory.md §2.1), as type objects.
  *
  * An effect is {type, params}: a const table of functions and the effect's
  * parameters, built once from the scene by its constructor.  Two kinds:
@@ -23,7 +23,7 @@
  * each event the `fire` specialised for its kernel and for the presence of a
  * flow, so the hot loop carries no branch on scene options.
  *
- * The time-step scheme (SPEC §5, §10) alternates whole-system stages of length
+ * The time-step scheme (docs/theory.md §8.5) alternates whole-system stages of length
  * h: an event process's `stage` (Bird's collision stage: candidates at the
  * majorant rate, the fractional remainder kept in the per-run state) and a
  * flow's `step`.  Both keep the shared velocity bound covering every velocity

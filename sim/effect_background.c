@@ -1,5 +1,5 @@
 /* Elastic collisions of the grains with a fixed Maxwellian background, the
- * J_EL part of paper B (SPEC §4), in the same exact jump scheme as the binary
+ * J_EL part of paper B (docs/theory.md §5), in the same exact jump scheme as the binary
  * collisions (no time splitting: the engine draws which process fires).
  *
  * The background f^B = rho_B M(m_B, u_B, T_B) is never stored: a partner w is
@@ -18,7 +18,7 @@
  *    b = sqrt(2 T_B / m_B), because ∫ |w - u_B| f^B = rho_B 2 b / sqrt(pi).
  *    It is sampled exactly in O(1): i uniform; w from the mixture of f^B / rho_B
  *    (weight a_max) and p2 ∝ |w - u_B| f^B (weight 2 b / sqrt(pi)); accept
- *    with |v_i - w| / (a_max + |w - u_B|).  This is the split of SPEC §4
+ *    with |v_i - w| / (a_max + |w - u_B|).  This is the split of docs/theory.md §5.2
  *    (uniform choice for the b part, rejection against max a_i for the a part)
  *    with the two rejections folded into one test, and it has the same total
  *    as the paper's per-grain majorant Σ E1max(v_i) with a_i <= a_max.  We use

@@ -1,5 +1,5 @@
-/* Binary inelastic collisions, the exact jump scheme of paper A §3 (SPEC §3),
- * also the binary part of paper B's Algorithms 1 and 2 (SPEC §4).
+/* Binary inelastic collisions, the exact jump scheme of paper A §3 (docs/theory.md §8.3),
+ * also the binary part of paper B's Algorithms 1 and 2 (docs/theory.md §5).
  *
  * VHS kernel B = C |g|^lambda with e uniform on S^2, 0 <= lambda <= 1: each
  * unordered pair {i, j} collides at the rate 4 pi gamma C |g|^lambda / n.  The
@@ -39,7 +39,7 @@
  * ahead, their memory prefetched) with a 32-bit uniform each for the
  * acceptance test that follows (rng.h: exact Bernoulli trials).
  *
- * The time-step scheme (SPEC §5, paper C §3), hard spheres: a collision
+ * The time-step scheme (docs/theory.md §8.5, paper C §3), hard spheres: a collision
  * stage of length h draws candidates at the rate R_c = 8 pi gamma C (n - 1) U_max
  * (Bird's (1/2) n omega_max h per stage with omega_max = 16 pi gamma C
  * (n - 1)/n U_max; the fractional remainder is kept for the next stage), each an
@@ -59,7 +59,7 @@
  * grows within the stage, the remaining stage time is spent at the new rate.
  * With collisions.rule = relative-speed the stage accepts as the jump scheme
  * does (stage 2: |g| / (a_i + a_j), then e uniform) at the jump scheme's rate
- * 4 pi gamma C (n - 1) R, a quarter of R_c: equal in distribution (SPEC §5).
+ * 4 pi gamma C (n - 1) R, a quarter of R_c: equal in distribution (docs/theory.md §3.2).
  * Paper E's frictional elastic hard spheres (collisions.model = ehs) collide
  * elastically at beta = (1 + alpha)/2 times this rate.
  * Maxwell molecules and VHS (issue 15: the heat-flux force on any kernel):
@@ -609,7 +609,7 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
     collisions_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
-    /* model ehs (paper E, SPEC §7): elastic collisions at beta = (1 + alpha)/2
+    /* model ehs (paper E, docs/theory.md §3.3): elastic collisions at beta = (1 + alpha)/2
      * times the rate; the engine adds its drag (effect_drag.c) */
     const int ehs = scene->collisions.model == SIM_MODEL_EHS;
     const double alpha = scene->collisions.restitution;

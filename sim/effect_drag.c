@@ -1,5 +1,5 @@
 /* The drag of frictional elastic hard spheres (EHS, paper E Eq. (4.22),
- * SPEC §7; issue 16), a flow of the time-step scheme (and, beside the
+ * docs/theory.md §6.2; issue 16), a flow of the time-step scheme (and, beside the
  * homogeneous shear, of the jump scheme: sheared_drag_scale_after).
  *
  * Paper E's EHS gas collides elastically at beta = (1 + alpha)/2 times the

@@ -1,4 +1,4 @@
-/* The heat-flux force of paper D (SPEC §6, issue 15), a flow of the
+/* The heat-flux force of paper D (docs/theory.md §7, issue 15), a flow of the
  * time-step scheme.
  *
  * A weak velocity-dependent force along x drives a heat flux in a homogeneous

@@ -1,4 +1,4 @@
-/* Thermostats (SPEC §2, §3, §5): the three of paper C, each its own type.
+/* Thermostats (docs/theory.md §4): the three of paper C, each its own type.
  *
  * White noise (paper A Eq. (18), paper C Eq. (8)): between collisions each
  * velocity performs Brownian motion,

@@ -1,4 +1,4 @@
-/* Uniform shear flow in the Lagrangian frame (paper E §IV B, SPEC §7;
+/* Uniform shear flow in the Lagrangian frame (paper E §IV B, docs/theory.md §6.1;
  * issues 16 and 18).
  *
  * In the frame moving with the flow u = a y x̂, a homogeneous gas obeys

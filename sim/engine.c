@@ -1,5 +1,5 @@
-/* The engine: scene -> effects -> the exact jump scheme (SPEC §2, §3) or the
- * time-step scheme (SPEC §5, §10).
+/* The engine: scene -> effects -> the exact jump scheme (docs/theory.md §8.3) or the
+ * time-step scheme (docs/theory.md §8.5).
  *
  * The jump scheme simulates the Markov jump process without time splitting
  * (paper A §3, paper B §3): candidate events arrive at rate pi_hat = Σ of the event

@@ -1,4 +1,4 @@
-/* The DSMC engine (SPEC §2, §3): built once from a scene, then run for any
+/* The DSMC engine (docs/theory.md §8): built once from a scene, then run for any
  * number of ensembles.
  *
  * Lifecycle (as CVODE's): sim_engine_create, then per thread a workspace,

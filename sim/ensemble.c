@@ -69,7 +69,7 @@ static void merge(block_stats *a, const block_stats *b, size_t len)
 /* ---- Where the blocks run: one process, or the ranks of MPI (GDSMC_MPI) ----
  *
  * Every number must be the same whatever the numbers of processes and threads
- * (SPEC §10, reproducibility): ensemble j always uses random stream (seed, j)
+ * (docs/theory.md §8.6, reproducibility): ensemble j always uses random stream (seed, j)
  * and belongs to block j / block_size(N), and every process merges the
  * blocks' sums in block order.  With MPI, rank r of `size` computes the
  * blocks b = r, r + size, r + 2 size, ..., each with its OpenMP threads; then

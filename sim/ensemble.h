@@ -1,4 +1,4 @@
-/* N independent ensembles and their statistics (SPEC §1).
+/* N independent ensembles and their statistics (docs/theory.md §1.3).
  *
  * Ensembles run in parallel with OpenMP.  Ensemble j always uses random
  * stream (seed, j), and the sums are formed in fixed blocks of ensembles

@@ -181,7 +181,7 @@ size_t sim_observe_row_length(const sim_scene *scene)
 }
 
 /* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2 theta), theta = T/m (E Eq. 2.18
- * with SPEC §7's 1.016). */
+ * with the 1.016 of docs/theory.md §2.3). */
 static double tau_eta(const sim_scene *scene, double theta)
 {
     return 1.016 * 5.0 * sqrt(M_PI) / 8.0 * sim_scene_mean_free_path(scene) / sqrt(2.0 * theta);

@@ -1,4 +1,4 @@
-/* Observables of one particle system (SPEC §1, names of SPEC §9).
+/* Observables of one particle system (docs/theory.md §1.2, §9).
  *
  * Every observable is an estimator xi^(n) computed from the n velocities with
  * weights 1/n; the ensemble layer averages them over N ensembles.  With m the
@@ -30,14 +30,14 @@ typedef enum sim_observable {
     SIM_OBS_QX, SIM_OBS_QY, SIM_OBS_QZ,
     SIM_OBS_A2, SIM_OBS_A3,
     SIM_OBS_BASE,  /* the observables every scene records, first in each output row */
-    /* Paper E's uniform shear flow (SPEC §7, E §III), after the base set in a
+    /* Paper E's uniform shear flow (docs/theory.md §9.3, E §III), after the base set in a
      * scene with [shear]; sim_observe_shear below defines them. */
     SIM_OBS_S = SIM_OBS_BASE, SIM_OBS_S0, SIM_OBS_T_RATIO,
     SIM_OBS_PXY_REDUCED, SIM_OBS_N1, SIM_OBS_N2, SIM_OBS_A_STAR, SIM_OBS_ETA_STAR,
     SIM_OBS_PSI1, SIM_OBS_PSI2, SIM_OBS_V12_RATIO,
     SIM_OBS_R0, SIM_OBS_R1, SIM_OBS_R2, SIM_OBS_R3,
     SIM_OBS_SHEAR_END,  /* the row of a homogeneous shear flow ends here */
-    /* The Lees-Edwards slab (paper E §IV A, SPEC §7), after the shear set; sim/slab.h
+    /* The Lees-Edwards slab (paper E §IV A, docs/theory.md §9.4), after the shear set; sim/slab.h
      * defines them.  Then four profiles of shear.layers columns each, M = layers:
      * n_0 .. n_{M-1}, ux_0 .., T_0 .., Pxy_0 .. (SIM_OBS_PROFILE + k M + I). */
     SIM_OBS_UX_CENTRE = SIM_OBS_SHEAR_END, SIM_OBS_UX_TOP, SIM_OBS_N_CENTRE, SIM_OBS_N_TOP,
@@ -114,7 +114,7 @@ void sim_sums_compute(const sim_particles *p, sim_sums *s);
 /* The observables at most quadratic in the velocities, T .. Pyz, of a system
  * of n particles with sums s at time t, as exact conditional expectations over
  * the increments a lazy white-noise flow still owes (variance-reduced
- * observation, SPEC §10; issue 18): particle i owes a Gaussian increment of
+ * observation, docs/theory.md §9.2; issue 18): particle i owes a Gaussian increment of
  * mean 0 and variance s_i = spread (t - stamp_i) per component, independent of
  * everything else, so with S = (1/n) Σ s_i = spread (t - Σ stamp_i/n)
  *   E T_raw = T_raw(v) + m S,   E u = u(v),
@@ -131,7 +131,7 @@ void sim_observe_sums(const sim_sums *s, size_t n, double mass, double t, double
  * slab. */
 size_t sim_observe_row_length(const sim_scene *scene);
 
-/* Paper E's shear-flow observables of one system at output m (SPEC §7, E
+/* Paper E's shear-flow observables of one system at output m (docs/theory.md §9.3, E
  * Eqs. 3.13-3.15, 4.16-4.19), written into row[SIM_OBS_S .. SIM_OBS_R3] of
  * the full output row `row`, whose base part sim_observe has filled from the
  * same particles; prev is the row of output m - 1 (NULL at m = 0).  With T the

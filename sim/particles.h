@@ -1,4 +1,4 @@
-/* The particle system of one ensemble (SPEC §1): n velocities, weight 1/n each.
+/* The particle system of one ensemble (docs/theory.md §1.1): n velocities, weight 1/n each.
  *
  * Structure of arrays, one array per attribute: velocities as one array of
  * 3-vectors (a particle's three components share a cache line, or two

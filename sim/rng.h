@@ -2,7 +2,7 @@
  *
  * One stream per ensemble, keyed by (seed, ensemble index): an ensemble draws
  * the same numbers whichever thread runs it, so results do not depend on the
- * thread count (SPEC §10, reproducibility).  The stream is a gsl_rng of type
+ * thread count (docs/theory.md §8.6, reproducibility).  The stream is a gsl_rng of type
  * sim_rng_philox4x64, so GSL's exact samplers (the ziggurat normal, Poisson
  * and beta variates among them) run on it; the inline functions below are its
  * fast path.  Every sampler here is exact in distribution (to the rounding of

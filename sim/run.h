@@ -14,7 +14,7 @@
 #include "particles.h"
 
 /* The velocity bound shared by the event processes whose majorants depend on
- * speeds (hard-sphere and VHS kernels, SPEC §3, §4 Algorithm 2): every velocity
+ * speeds (hard-sphere and VHS kernels, docs/theory.md §8.3, §5.2): every velocity
  * an event can see lies within `radius` of `centre`.  The engine sets it at
  * each output time from the synchronised system (plus the lazy flow's reach
  * over the next interval); an effect that changes a velocity calls

@@ -1,4 +1,4 @@
-/* A scene: the parsed, validated description of one simulation (SPEC §2).
+/* A scene: the parsed, validated description of one simulation (docs/scenes.md).
  *
  * Plain data.  verify/scene_ini.c fills it from an INI file (each value range-
  * checked there, with file, line and key in the message); sim_engine_create()
@@ -17,7 +17,7 @@ typedef enum sim_scheme {
     SIM_SCHEME_TIMESTEP  /* Bird-style splitting with step dt */
 } sim_scheme;
 
-/* How the time-step scheme composes its stages in one step h (SPEC §10). */
+/* How the time-step scheme composes its stages in one step h (docs/theory.md §8.5). */
 typedef enum sim_splitting {
     SIM_SPLIT_EULER,   /* Lie: collisions for h, then free flight for h (paper C §3) */
     SIM_SPLIT_STRANG   /* free flight h/2, collisions h, free flight h/2 */
@@ -53,7 +53,7 @@ typedef enum sim_collision_model {
     SIM_MODEL_EHS   /* frictional elastic hard spheres with drag, paper E */
 } sim_collision_model;
 
-/* How the time-step scheme's hard-sphere stage accepts a candidate pair (SPEC §5;
+/* How the time-step scheme's hard-sphere stage accepts a candidate pair (docs/theory.md §3.2;
  * collisions.rule).  Equal in distribution: both give each pair the rate
  * 4 pi gamma C |g|/n and the same post-collision law. */
 typedef enum sim_collision_rule {
@@ -140,7 +140,7 @@ typedef struct sim_scene {
         double flow_wave;
     } particles;
 
-    /* [collisions] binary inelastic collisions (SPEC §3) */
+    /* [collisions] binary inelastic collisions (docs/theory.md §2.2, §3) */
     struct {
         int present;
         sim_kernel_kind kernel;
@@ -155,7 +155,7 @@ typedef struct sim_scene {
                                      jump scheme always accepts by |g|) */
     } collisions;
 
-    /* [heating] thermostats (SPEC §3, §5) */
+    /* [heating] thermostats (docs/theory.md §4) */
     struct {
         int present;
         sim_heating_kind type;
@@ -165,7 +165,7 @@ typedef struct sim_scene {
                                 homogeneous cooling state in scaled variables, paper C) */
     } heating;
 
-    /* [background] host medium (SPEC §4) */
+    /* [background] host medium (docs/theory.md §5) */
     struct {
         int present;
         double density, mass, temperature;
@@ -174,7 +174,7 @@ typedef struct sim_scene {
         double constant;         /* C1 */
     } background;
 
-    /* [shear] uniform shear flow (SPEC §7) */
+    /* [shear] uniform shear flow (docs/theory.md §6) */
     struct {
         int present;
         double rate;
@@ -185,13 +185,13 @@ typedef struct sim_scene {
         size_t pairs;        /* random pairs per output for <|V12|^3> (observe.h); 0: none */
     } shear;
 
-    /* [heat-flux] homogeneous heat-flux force (SPEC §6) */
+    /* [heat-flux] homogeneous heat-flux force (docs/theory.md §7) */
     struct {
         int present;
         double strength;
     } heat_flux;
 
-    /* [steady] steady-state observers (SPEC §5): time averages, per ensemble, over the
+    /* [steady] steady-state observers (docs/theory.md §10): time averages, per ensemble, over the
      * output times t >= from of the reduced moments, the collisional moments mu2, mu4
      * (by `pairs` random pairs per sample) and the reduced speed distribution
      * (`bins` shells on 0 <= c < c_max); see sim/steady.h. */
@@ -224,13 +224,13 @@ int sim_scene_key_line(const sim_scene *scene, const char *key);
 double sim_scene_grain_mass(const sim_scene *scene);
 
 /* The mean free path lambda0 = 1/(sqrt(2) pi n sigma^2) with n sigma^2 =
- * 4 gamma C, the hard-sphere convention of papers D and E (SPEC §6, §7), used
+ * 4 gamma C, the hard-sphere convention of papers D and E (docs/theory.md §2.3), used
  * for every kernel: eps* = lambda0 eps, tau = lambda0/sqrt(2T/m). */
 double sim_scene_mean_free_path(const sim_scene *scene);
 
 /* The collision rate factor beta: collisions.beta when set, else the
  * model's, 1 for ihs and paper E's (1 + alpha)/2 for ehs (elastic collisions
- * at beta times the IHS rate, SPEC §7). */
+ * at beta times the IHS rate, docs/theory.md §3.3). */
 double sim_scene_collision_rate_factor(const sim_scene *scene);
 
 /* Output time m (0 <= m < outputs): m t_end / (outputs - 1). */

@@ -1,4 +1,4 @@
-/* The Lees-Edwards slab (slab.h; paper E §IV A, SPEC §7). */
+/* The Lees-Edwards slab (slab.h; paper E §IV A, docs/theory.md §6.3). */
 #include "slab.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* The Lees-Edwards slab: uniform shear flow as a laboratory makes it (paper E
- * §IV A, Eqs. 4.2-4.13; SPEC §7; issue 17).  Internal to sim/.
+ * §IV A, Eqs. 4.2-4.13; docs/theory.md §6.3; issue 17).  Internal to sim/.
  *
  * The gas fills -L/2 < y < L/2 (L = shear.length), split into M = shear.layers
  * layers of width dy = L/M; each particle has a position y beside its velocity
@@ -27,7 +27,7 @@
  *                4.13 with 1/lambda0 = 4 sqrt(2) pi gamma C).  A candidate is a
  *                uniform pair i != j of the layer, accepted with |g|/w_I, and
  *                collides by paper A's rule with e uniform (equal in distribution
- *                to the contact rule, SPEC §7's corrections); alpha = 1 for EHS.
+ *                to the contact rule, docs/theory.md §3.2); alpha = 1 for EHS.
  *                The candidates are a Poisson process in each step (exponential
  *                waiting times; Bird's remainder carried from step to step biases
  *                the rate by O(1/N_I) as N_I changes); when a collision grows R_I

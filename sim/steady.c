@@ -290,7 +290,7 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
     else
         speed_moments(p, V, inv_v0, 0, 1.0, 1, sum, m);
     const double m1 = m[0] * w, m3 = m[1] * w, m4 = m[2] * w, m6 = m[3] * w;
-    /* a2 = (4/15) <c^4> - 1, a3 = -(8/105) <c^6> + 1 + 3 a2 (SPEC §1) */
+    /* a2 = (4/15) <c^4> - 1, a3 = -(8/105) <c^6> + 1 + 3 a2 (docs/theory.md §10.2) */
     const double a2 = 4.0 / 15.0 * m4 - 1.0;
     const double a3 = -8.0 / 105.0 * m6 + 1.0 + 3.0 * a2;
 

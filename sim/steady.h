@@ -1,4 +1,4 @@
-/* Steady-state observers (SPEC §5, paper C §3): quantities sampled at the
+/* Steady-state observers (docs/theory.md §10, paper C §3): quantities sampled at the
  * output times t >= steady.from of each ensemble and averaged over those
  * times, so that each ensemble yields one time average and the ensemble layer
  * gives their mean and a confidence half-width from N independent ensembles
@@ -7,7 +7,7 @@
  * Reduced units: with V the bulk velocity, C = v - V, T the centred
  * temperature and v0 = sqrt(2T/m), c = C/v0 (<c^2> = 3/2).  Per sample:
  *   T                          centred temperature
- *   a2, a3                     as observe.h (SPEC §1)
+ *   a2, a3                     as observe.h (docs/theory.md §1.2)
  *   c1 = <c>, c3 = <c^3>
  *   mu2, mu4                   collisional moments by pair sampling, paper C
  *                              Eqs. (65)-(67): v0^{-p-1} (1/N') Σ' Phi_p(C_i, C_j)
@@ -25,7 +25,7 @@
  * The relations are computed per sample so that the difference between a
  * direct mu4 and an indirect one has its own confidence interval.
  *
- * With a [heat-flux] section (paper D, SPEC §6), eps* = lambda eps with
+ * With a [heat-flux] section (paper D, docs/theory.md §10.5), eps* = lambda eps with
  * lambda = 1/(sqrt(2) pi n sigma^2) and n sigma^2 = 4 gamma C (the hard-sphere
  * convention, used for every kernel), these follow the bins:
  *   qx                         (m/2) <|C|^2 C_x>
@@ -48,7 +48,7 @@
  * The time averages divide by eps* only once the sample is taken, so eps = 0
  * gives NaN for everything but qx.
  *
- * With a [shear] section (paper E, SPEC §7), last: the time averages of the
+ * With a [shear] section (paper E, docs/theory.md §10.6), last: the time averages of the
  * output row's shear observables (observe.h, sim_observe_shear)
  *   Pxy_reduced, N1, N2, a_star, v12_ratio, R0, R1, R2, R3
  * and, with steady.bins = B > 0, E's marginals of the reduced velocity

@@ -132,14 +132,14 @@ add_test(NAME cli_solver_conformance
 set_tests_properties(cli_solver_conformance PROPERTIES TIMEOUT 300 LABELS regression
                      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 
-# gdsmc sonine (SPEC §5, §9): paper C's Sonine values as CSV name,value.  Bad
+# gdsmc sonine (docs/theory.md §13): paper C's Sonine values as CSV name,value.  Bad
 # input: the message and nothing else (anchored: standard output comes first).
 gdsmc_add_cli_test(cli_sonine_help 0 "usage: gdsmc sonine --alpha A" sonine --help)
 gdsmc_add_cli_test(cli_sonine_mu4_0 0 "name,value.*mu4_0,10\\.9248886721"
                    sonine --alpha 0.2)
 gdsmc_add_cli_test(cli_sonine_tails 0 "A_white_noise,1\\.98767.*A_gaussian,4\\.41153"
                    sonine --alpha 0.4)
-# paper D at alpha = 0.5 (SPEC §6: 1.31870, 1.90108) and the exact elastic value
+# paper D at alpha = 0.5 (docs/theory.md §14.1: 1.31870, 1.90108) and the exact elastic value
 gdsmc_add_cli_test(cli_sonine_kappa 0
                    "kappa_over_kappa0,1\\.90108.*kappa_prime_over_kappa0,1\\.31870.*kappa_elastic_exact,1\\.025218"
                    sonine --alpha 0.5)

@@ -1,5 +1,5 @@
 # The same run on 1 process and on 2 MPI ranks (1 thread each, then 1 and 2
-# threads) must give byte-identical CSVs (SPEC §10: a seed fixes every
+# threads) must give byte-identical CSVs (docs/theory.md §8.6: a seed fixes every
 # number; sim/ensemble.c shares the blocks of ensembles across the ranks).
 # Hard spheres with heating: the majorant, fictitious collisions and Brownian
 # catch-ups all take part.  Also: only rank 0 speaks, and bad input still

@@ -1,5 +1,5 @@
 /* Every kind of verification check passes a right answer and fails a wrong
- * one (SPEC §9: a check must be able to fail). */
+ * one (a check must be able to fail: docs/verdicts.md). */
 #include "test_util.h"
 
 #include <string.h>
@@ -12,7 +12,7 @@ static void test_relative(void **state)
     (void)state;
     vfy_report r;
     vfy_report_init(&r, NULL);
-    /* SPEC §3 Table 1, n = 256: Emax 0.235E-01 */
+    /* paper A Table 1, n = 256: Emax 0.235E-01 */
     assert_int_equal(vfy_check_relative(&r, "near", 0.0251, 0.0235, 0.35), VFY_PASS);
     assert_int_equal(vfy_check_relative(&r, "double", 0.0470, 0.0235, 0.35), VFY_FAIL);
     assert_int_equal(vfy_check_relative(&r, "too small", 0.0150, 0.0235, 0.35), VFY_FAIL);

@@ -1,6 +1,6 @@
 /* Unit tests of the reference/ layer, first part: the CVODE adapter (ode.h),
  * paper A's references (heated.h) and the Sonine formula (C.10) (sonine.h).
- * Every known answer names its source; SPEC = /work/shared/SPEC.md. */
+ * Every known answer names its source: a docs/theory.md section or a paper's equation. */
 #include "test_reference_util.h"
 
 #include <stdlib.h>
@@ -10,18 +10,19 @@
 #include "ode.h"
 #include "sonine.h"
 
-#define NT 81 /* output times 0, 0.1, ..., 8 (SPEC §3 Ex 3-4: interval [0, 8]) */
+#define NT 81 /* output times 0, 0.1, ..., 8 (paper A Ex 3-4: interval [0, 8]) */
 
 static const double PI = 3.14159265358979323846;
 
-/* SPEC §3 Ex 3: lambda = 0, alpha = 1/2, beta = 1, gamma = 4, C0 = 1/(4 pi), T0 = 1. */
+/* Paper A Ex 3 (docs/theory.md §11.1): lambda = 0, alpha = 1/2, beta = 1, gamma = 4,
+ * C0 = 1/(4 pi), T0 = 1. */
 static ref_heated_params ex3(void)
 {
     ref_heated_params p = {0.5, 1.0, 4.0, 1.0 / (4.0 * PI), 1.0};
     return p;
 }
 
-/* SPEC §3 Ex 4: as Ex 3 with beta = 1/8.  Ex 5 (hard spheres) has the same numbers. */
+/* Paper A Ex 4: as Ex 3 with beta = 1/8.  Ex 5 (hard spheres) has the same numbers. */
 static ref_heated_params ex4(void)
 {
     ref_heated_params p = ex3();
@@ -35,7 +36,8 @@ static void test_maxwell_closed_form(void **state)
 {
     (void)state;
     ref_heated_params p3 = ex3(), p4 = ex4();
-    /* SPEC §3 Ex 3-4: k = gamma pi C0 (1 - alpha^2) = 4 pi/(4 pi) 3/4 = 3/4, T_inf = 2 beta/k. */
+    /* docs/theory.md §11.1: k = gamma pi C0 (1 - alpha^2) = 4 pi/(4 pi) 3/4 = 3/4,
+     * T_inf = 2 beta/k. */
     assert_close(ref_heated_maxwell_rate(&p3), 0.75, 1e-15, 0);
     assert_close(ref_heated_maxwell_T_inf(&p3), 8.0 / 3.0, 1e-15, 0);
     assert_close(ref_heated_maxwell_T_inf(&p4), 1.0 / 3.0, 1e-15, 0);
@@ -183,7 +185,7 @@ typedef struct moment_params {
     double n, beta, k;
 } moment_params;
 
-/* Independent derivation (SPEC §10): S = Σ|v_i|^2, P2 = |Σ v_i|^2.  Heating adds
+/* Independent derivation (of docs/theory.md §11.2): S = Σ|v_i|^2, P2 = |Σ v_i|^2.  Heating adds
  * variance 2 beta per component and particle: dE[S]/dt = 6 n beta, and the total
  * momentum is a sum of n such walks: dE[P2]/dt = 6 n beta.  Collisions keep P and
  * remove k Σ|v_i - V|^2 = k (S - P2/n) on average. */
@@ -245,7 +247,7 @@ static void test_finite_n_expectations(void **state)
 static void test_hs_steady_closed_form(void **state)
 {
     (void)state;
-    ref_heated_params p = ex4(); /* SPEC §3 Ex 5: alpha = 1/2, beta = 0.125, gamma = 4, C1 = 1/(4 pi) */
+    ref_heated_params p = ex4(); /* paper A Ex 5: alpha = 1/2, beta = 0.125, gamma = 4, C1 = 1/(4 pi) */
     /* Maxwellian closure: T* = (2 beta / (gamma (1-alpha^2)/24 4 pi C1 32/sqrt(pi)))^{2/3}
      *   = (0.25 / (4*0.75/24 * 32/sqrt(pi)))^{2/3} = (sqrt(pi)/16)^{2/3}
      *   = pi^{1/3} / 2^{8/3} = 0.23065876858050355. */
@@ -289,7 +291,7 @@ static void test_vhs_maxwellian_closure(void **state)
     assert_true(isnan(ref_heated_vhs_T_steady_maxwellian(NULL, 0.5)));
 }
 
-/* The heated tail's amplitude (docs/theory.md, "The heated tail"): paper A's
+/* The heated tail's amplitude (docs/theory.md §11.5, "The heated tail"): paper A's
  * Ex 6-8 parameters (beta = 30, gamma = 16, C = 1/(4 pi)) give a = sqrt(16/30)/b
  * in absolute speed; for hard spheres it is paper C's Eq. (36) (2/3) sqrt(6 pi/mu2)
  * when beta is the one the steady energy balance gives for mu2 and T: 2 beta =
@@ -368,7 +370,7 @@ static void test_sonine_a2_white_noise(void **state)
     /* Elastic limit: a2 = 0 (factor 1 - a). */
     assert_close(ref_sonine_a2_white_noise(1.0, 3.0), 0.0, 0, 0);
     assert_close(ref_sonine_a2_white_noise(1.0, 2.0), 0.0, 0, 0);
-    /* SPEC §5: sign change at alpha = 1/sqrt(2) (factor 1 - 2a^2). */
+    /* docs/theory.md §13.3: sign change at alpha = 1/sqrt(2) (factor 1 - 2a^2). */
     for (double d = 2.0; d <= 3.0; d += 1.0) {
         assert_close(ref_sonine_a2_white_noise(1.0 / sqrt(2.0), d), 0.0, 0, 1e-16);
         assert_true(ref_sonine_a2_white_noise(0.7, d) > 0.0);

@@ -1,7 +1,7 @@
 /* Unit tests of the reference/ layer, paper B (background.h): the Maxwell closed
- * forms (B.14)-(B.18) against SPEC §4's checks and against CVODE on (B.13), the
+ * forms (B.14)-(B.18) against the checks of docs/theory.md §12 and against CVODE on (B.13), the
  * hard-sphere closures (B.21)/(B.22) and their steady states, and the traps.
- * Every known answer names its source; SPEC = /work/shared/SPEC.md. */
+ * Every known answer names its source: a docs/theory.md section or a paper's equation. */
 #include "test_reference_util.h"
 
 #include <string.h>
@@ -13,10 +13,10 @@
 
 static const double PI = 3.14159265358979323846;
 
-#define NG 129 /* output times i/128 in [0, 1] (SPEC §4 uses i/512; 129 keeps the tests fast) */
+#define NG 129 /* output times i/128 in [0, 1] (paper B uses i/512; 129 keeps the tests fast) */
 
-/* SPEC §4 Ex 1: f0 = (M1 + M2)/2 gives u0 = (0, 1, 0), T0 = 8/3; rho_B = m_B = T_B = 1,
- * u_B = 0, C1 = C2 = 1, e = 1/2, m = 1, rho = 1 (alpha = 1/2, Kn = 1). */
+/* Paper B Ex 1 (docs/theory.md §12.1): f0 = (M1 + M2)/2 gives u0 = (0, 1, 0), T0 = 8/3;
+ * rho_B = m_B = T_B = 1, u_B = 0, C1 = C2 = 1, e = 1/2, m = 1, rho = 1 (alpha = 1/2, Kn = 1). */
 static ref_background_params ex1(void)
 {
     ref_background_params p = {.mass = 1.0, .bg_density = 1.0, .bg_mass = 1.0,
@@ -26,7 +26,7 @@ static ref_background_params ex1(void)
     return p;
 }
 
-/* SPEC §4 Ex 2: f0 Maxwellian u = 0, T = 1; u_B = (0, 1, 0); C2 = 1/8 (Kn = 1/8). */
+/* Paper B Ex 2: f0 Maxwellian u = 0, T = 1; u_B = (0, 1, 0); C2 = 1/8 (Kn = 1/8). */
 static ref_background_params ex2(void)
 {
     ref_background_params p = ex1();
@@ -37,7 +37,7 @@ static ref_background_params ex2(void)
     return p;
 }
 
-/* SPEC §4 Ex 3: Ex 2 with m_B = 1/8 (alpha = 1/9). */
+/* Paper B Ex 3: Ex 2 with m_B = 1/8 (alpha = 1/9). */
 static ref_background_params ex3(void)
 {
     ref_background_params p = ex2();
@@ -57,8 +57,8 @@ static ref_background_params b_equals_c(void)
     return p;
 }
 
-/* SPEC §4 Ex 4/5 (hard spheres): m = m_B = T_B = rho = rho_B = C1 = 1, e = 1/2,
- * u_B = (0, 1, 0), u0 = 0, T0 = 1, C2 = K. */
+/* Paper B Ex 4/5 (hard spheres, docs/theory.md §12.3): m = m_B = T_B = rho = rho_B = C1 = 1,
+ * e = 1/2, u_B = (0, 1, 0), u0 = 0, T0 = 1, C2 = K. */
 static ref_background_params hs_ex(double K)
 {
     ref_background_params p = ex2();
@@ -78,9 +78,9 @@ static void assert_u(const ref_background_params *p, double t, double u0, double
 
 /* ---------------------------------------------------------------- closed forms (B.14-B.18) */
 
-/* SPEC §4 Ex 1 / paper B Eqs. (37)-(38): u = (0, 1, 0) e^{-2 pi t},
+/* Paper B Ex 1, Eqs. (37)-(38): u = (0, 1, 0) e^{-2 pi t},
  * T = (8/3)e^{-11 pi t/4} + (8/11)(1 - e^{-11 pi t/4}) - (8/15)(e^{-4 pi t} - e^{-11 pi t/4}),
- * T* = 8/11; at SPEC's 513 output times t_i = i/512. */
+ * T* = 8/11; at paper B's 513 output times t_i = i/512. */
 static void test_maxwell_ex1(void **state)
 {
     (void)state;
@@ -98,8 +98,8 @@ static void test_maxwell_ex1(void **state)
     assert_u(&p, 30.0, 0.0, 0.0, 0.0, 1e-60);
 }
 
-/* SPEC §4 Ex 2: C = 67 pi/32, B = 4 pi, T* = 64/67, A/(C - B) = -64/183, T0 = 1,
- * so T = e^{-Ct} + (64/67)(1 - e^{-Ct}) - (64/183)(e^{-4 pi t} - e^{-Ct});
+/* Paper B Ex 2 (docs/theory.md §12.1): C = 67 pi/32, B = 4 pi, T* = 64/67, A/(C - B) = -64/183,
+ * T0 = 1, so T = e^{-Ct} + (64/67)(1 - e^{-Ct}) - (64/183)(e^{-4 pi t} - e^{-Ct});
  * u = (0, 1, 0)(1 - e^{-2 pi t}). */
 static void test_maxwell_ex2(void **state)
 {
@@ -119,7 +119,7 @@ static void test_maxwell_ex2(void **state)
         assert_true(ref_background_maxwell_T(&p, i / 16.0) > 64.0 / 67.0);
 }
 
-/* SPEC §4 Ex 3: alpha = 1/9, B = 8 pi/9, C = 2291 pi/2592, T* = 2048/2291,
+/* Paper B Ex 3 (docs/theory.md §12.1): alpha = 1/9, B = 8 pi/9, C = 2291 pi/2592, T* = 2048/2291,
  * A/(C - B) = -256/39; u = (0, 1, 0)(1 - e^{-4 pi t/9}).  C - B = -13 pi/2592 is
  * small, so this also exercises B close to C in (B.15). */
 static void test_maxwell_ex3(void **state)
@@ -279,10 +279,10 @@ static double grad_steady_quadratic(const ref_background_params *p)
     return TB * 2.0 * (5.0 * c + a) / (b + sqrt(b * b + 12.0 * c * (5.0 * c + a)));
 }
 
-/* SPEC §4: steady temperatures 0.9557 (LE), 0.9562 (Grad) for K = 1/8 and
+/* docs/theory.md §12.3: steady temperatures 0.9557 (LE), 0.9562 (Grad) for K = 1/8 and
  * 0.7428 (LE), 0.7574 (Grad) for K = 1 (paper: 0.956, 0.956, 0.743, 0.757).
  * More digits from an independent bisection (Python, 200 halvings on [0, 1]) of
- * SPEC's forms: 0.9557111983467963, 0.956188617760106, 0.7428166454917884,
+ * the forms of docs/theory.md §12.3: 0.9557111983467963, 0.956188617760106, 0.7428166454917884,
  * 0.7573504538999856. */
 static void test_hs_steady_root(void **state)
 {
@@ -327,11 +327,11 @@ static void test_hs_steady_root(void **state)
     r.C1 = 0.25;
     assert_close(ref_background_hs_T_steady(&r, REF_BACKGROUND_LE), le8, 1e-13, 0);
     assert_close(ref_background_hs_T_steady(&r, REF_BACKGROUND_GRAD), gr8, 1e-13, 0);
-    /* More loss, lower T*; and LE below Grad at K = 1 (SPEC §4 Ex 5). */
+    /* More loss, lower T*; and LE below Grad at K = 1 (paper B Ex 5). */
     assert_true(le1 < le8 && gr1 < gr8 && le1 < gr1);
 }
 
-/* CVODE on (B.21)/(B.22) from SPEC §4 Ex 4/5's initial state (u0 = 0, T0 = 1,
+/* CVODE on (B.21)/(B.22) from paper B Ex 4/5's initial state (u0 = 0, T0 = 1,
  * u_B = (0, 1, 0)) reaches the root-found T* and u_B by t = 5 (rates ~ 19),
  * for K = 1/8 and 1, both closures, both methods. */
 static void test_hs_cvode_reaches_steady_state(void **state)
@@ -448,7 +448,7 @@ static void test_hs_velocity_relaxation(void **state)
     assert_true(fabs(k_le / k - 1.0) > 1e-2);
 }
 
-/* An independent transcription of SPEC §4's (B.21)/(B.22), written term by term as
+/* An independent transcription of docs/theory.md §12.3's (B.21)/(B.22), written term by term as
  * printed (not in background.c's factorised form), in physical time: background
  * terms times rho_B C1, the K terms with K rho_B C1 = rho C2.  y = (u, T). */
 static void spec_rhs(const ref_background_params *p, ref_background_closure c, const double *y,
@@ -780,7 +780,7 @@ static double e1_outer(double s, void *params)
     return 2.0 * PI * s * s * pow(PI * b * b, -1.5) * exp(-s * s / (b * b)) * r;
 }
 
-/* E1(v) of SPEC §4 against GSL quadrature of 4 pi C1 rho_B ∫ |v - w| f^B dw/rho_B,
+/* E1(v) of docs/theory.md §5.1 against GSL quadrature of 4 pi C1 rho_B ∫ |v - w| f^B dw/rho_B,
  * its v = u_B limit, and the majorant E1max >= E1. */
 static void test_hs_E1(void **state)
 {

@@ -1,11 +1,11 @@
 /* Unit tests of the reference/ layer, paper E (bgk.h): the BGK model of
  * homogeneous uniform shear flow.  Its rates, the closed-form steady state
- * against SPEC §7's check values, CVODE's late times against the closed form
+ * against the check values of docs/theory.md §15.2, CVODE's late times against the closed form
  * for a tau0 = 4 and 0.1, the elastic short-time expansion, homogeneous
  * cooling (Haff) and s0, an independent tensor-form RK4, the steady marginals
  * (E 3.18-3.20: normalisation, moments, the Gaussian-mixture halves, a direct
  * angular quadrature, the near-elastic expansion), and the traps.
- * Every known answer names its source; SPEC = /work/shared/SPEC.md,
+ * Every known answer names its source: a docs/theory.md section or a paper's equation;
  * E = Astillero and Santos, PRE 71 (2005) 031309 (seed 004). */
 #include "test_reference_util.h"
 
@@ -61,7 +61,7 @@ static ref_bgk_steady steady(const ref_bgk_params *p)
 
 /* ---------------------------------------------------------------- rates */
 
-/* SPEC §7 with its corrections: n sigma^2 = 4 gamma C, lambda0 = 1/(sqrt2 pi n sigma^2),
+/* docs/theory.md §2.3: n sigma^2 = 4 gamma C, lambda0 = 1/(sqrt2 pi n sigma^2),
  * tau = lambda0/sqrt(2T/m), tau_eta = 1.016 (5 sqrt(pi)/8) tau (E: tau_eta/tau = 1.13),
  * zeta0 = (2/(3 sqrt pi))(1 - alpha^2)/tau, nu' = beta/tau_eta, beta = (1 + alpha)/2. */
 static void test_rates(void **state)
@@ -103,7 +103,7 @@ static void test_rates(void **state)
 
 /* ---------------------------------------------------------------- steady state */
 
-/* SPEC §7 (Corrections): alpha = 0.9, c_eta = 1.016 in both places:
+/* docs/theory.md §15.2: alpha = 0.9, c_eta = 1.016 in both places:
  * a tau = 0.32627, -Pxy/p = 0.32855, (Pxx - Pyy)/p = 0.23417, a* = 0.36722 (5 digits);
  * the paper's DSMC gives 0.33, 0.24 (E §V A).  T_s/T0 at a tau0 = 4 is
  * (4/0.32627)^2 = 150.3 (E's inhomogeneous DSMC: about 147). */
@@ -120,14 +120,15 @@ static void test_steady_check_values(void **state)
     assert_close(s.eta_star, 0.32855 / 0.36722, 2e-5, 0);
     assert_close(s.T_ratio, pow(4.0 / 0.32627, 2.0), 4e-5, 0);
     assert_close(s.T_ratio, 147.0, 0.03, 0); /* E §V A, the DSMC value */
-    /* More digits (Python, double, the formulas of SPEC §7). */
+    /* More digits (Python, double, the formulas of docs/theory.md §15.2). */
     assert_close(s.a_tau, 0.3262669611961661, 1e-14, 0);
     assert_close(s.shear_stress, 0.3285530979939543, 1e-14, 0);
     assert_close(s.normal_xy, 0.23417332513829128, 1e-14, 0);
     assert_close(s.a_star, 0.3672161386900696, 1e-14, 0);
     assert_close(s.T_ratio, 150.30512414388434, 1e-13, 0);
-    /* The steady T solves SPEC §7's balance a^2 = 3 zeta0 (nu' + zeta0)^2/(2 nu') with the
-     * physical rates at T_s, and the reduced stresses are SPEC's forms at those rates. */
+    /* The steady T solves the balance of docs/theory.md §15.2,
+     * a^2 = 3 zeta0 (nu' + zeta0)^2/(2 nu'), with the physical rates at T_s, and the
+     * reduced stresses are its forms at those rates. */
     ref_bgk_rates r;
     assert_int_equal(ref_bgk_rates_at(&p, s.T_ratio * p.T0, &r, NULL, 0), REF_OK);
     const double a = p.shear_rate, nu = r.nu, z = r.zeta0;
@@ -173,7 +174,7 @@ static void test_steady_independent_of_shear_rate(void **state)
     }
 }
 
-/* SPEC §7: beta = (1 + alpha)/2 is settled; the viscosity-matching
+/* docs/theory.md §15.2: beta = (1 + alpha)/2 is settled; the viscosity-matching
  * beta_w = (1 + alpha)(2 + alpha)/6 must miss the check values.  A wrong beta is
  * the same model as c_eta_nu -> c_eta_nu beta/beta_w (nu' = beta/(c_eta_nu k tau)),
  * so the library itself can be run with it: at alpha = 0.9 it gives a tau = 0.32165,
@@ -260,7 +261,7 @@ static void run(const ref_bgk_params *p, const double *t_tau0, size_t n,
 }
 
 /* Late times: CVODE's reduced stresses, a tau, a*, eta* and T/T0 equal the closed
- * form (SPEC §7) for a tau0 = 4 (heating, T_s >> T0) and a tau0 = 0.1 (cooling),
+ * form (docs/theory.md §15.2) for a tau0 = 4 (heating, T_s >> T0) and a tau0 = 0.1 (cooling),
  * alpha = 0.5, 0.7, 0.9, both methods, after s0 > 200 collisions per particle (E:
  * the transient lasts s = 20-40; the slowest relaxation here is alpha = 0.9,
  * a tau0 = 0.1, converged to 1e-8 by s = 180).  Checked to 1e-6 (4 digits
@@ -299,9 +300,9 @@ static void test_cvode_late_times_equal_steady(void **state)
     }
 }
 
-/* An independent transcription of SPEC §7 in tensor form, all nine components,
+/* An independent transcription of docs/theory.md §15.1 in tensor form, all nine components,
  *   dP_ij/dt = -a (delta_ix P_yj + delta_jx P_yi) - nu' (P_ij - p delta_ij) - zeta0 P_ij,
- * with nu' = beta/tau_eta(T), zeta0(T) from SPEC's formulas, plus ds0/dt, in the
+ * with nu' = beta/tau_eta(T), zeta0(T) from docs/theory.md §2.3, plus ds0/dt, in the
  * units of p (physical time, P/n), P[3 i + j] with x, y, z = 0, 1, 2. */
 static void tensor_rhs(const ref_bgk_params *p, const double *P, double s_factor, double *dP)
 {

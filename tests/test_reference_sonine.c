@@ -1,5 +1,5 @@
 /* Unit tests of the Sonine-approximation formulas of paper C (sonine.h).
- * Every known answer names its source: SPEC = /work/shared/SPEC.md §5, "(N)"
+ * Every known answer names its source: a docs/theory.md section (§13), "(N)"
  * = paper C's Eq. (N), "Table 1" = paper C's Table 1. */
 #include "test_reference_util.h"
 
@@ -32,7 +32,7 @@ static void test_beta(void **state)
      * 2 pi ∫_0^1 x^n dx = 2 pi/(n+1); in d = 2, ∫_{-pi/2}^{pi/2} cos^n t dt. */
     for (int n = 0; n <= 5; n++)
         assert_close(ref_sonine_beta(n, 3.0), 2.0 * PI / (n + 1), 1e-14, 0);
-    assert_close(ref_sonine_beta(1.0, 3.0), PI, 1e-15, 0); /* SPEC §5: beta_1 = pi */
+    assert_close(ref_sonine_beta(1.0, 3.0), PI, 1e-15, 0); /* docs/theory.md §13.1: beta_1 = pi */
     assert_close(ref_sonine_beta(3.0, 3.0), PI / 2.0, 1e-15, 0);
     assert_close(ref_sonine_beta(0.0, 2.0), PI, 1e-15, 0);
     assert_close(ref_sonine_beta(1.0, 2.0), 2.0, 1e-15, 0);
@@ -50,7 +50,7 @@ static void test_mu2_0(void **state)
 {
     (void)state;
     for (double a = 0.0; a <= 1.0; a += 0.0625) {
-        /* SPEC §5: the general-d (27) is sqrt(2 pi)(1 - a^2) at d = 3. */
+        /* docs/theory.md §13.1: the general-d (27) is sqrt(2 pi)(1 - a^2) at d = 3. */
         assert_close(ref_sonine_mu2_0(a, 3.0), sqrt(2.0 * PI) * (1.0 - a * a), 1e-14, 1e-300);
         /* d = 2: pi^(1/2)/(sqrt 2 Gamma(1)) = sqrt(pi/2). */
         assert_close(ref_sonine_mu2_0(a, 2.0), sqrt(PI / 2.0) * (1.0 - a * a), 1e-14, 1e-300);
@@ -66,7 +66,8 @@ static void test_mu2_0(void **state)
 static void test_mu4_0_table1(void **state)
 {
     (void)state;
-    /* SPEC §5 and Table 1: mu4^(0) = 10.925, 9.812, 7.797, 4.638 at alpha = 0.2 ... 0.8. */
+    /* docs/theory.md §13.1 and Table 1: mu4^(0) = 10.925, 9.812, 7.797, 4.638 at
+     * alpha = 0.2 ... 0.8. */
     const double alpha[] = {0.2, 0.4, 0.6, 0.8}, table[] = {10.925, 9.812, 7.797, 4.638};
     for (int i = 0; i < 4; i++)
         assert_printed(ref_sonine_mu4_0(alpha[i], 3.0), table[i], 3);
@@ -136,7 +137,7 @@ typedef double (*a2_fn)(double alpha, double d);
 static void test_a2_d3_forms(void **state)
 {
     (void)state;
-    /* SPEC §5: the general-d forms at d = 3 equal the d = 3 forms written out. */
+    /* docs/theory.md §13.3: the general-d forms at d = 3 equal the d = 3 forms written out. */
     for (double a = 0.0; a <= 1.0; a += 0.03125) {
         double n = 16 * (1 - a) * (1 - 2 * a * a), c = (1 - a) * a * a;
         assert_close(ref_sonine_a2_white_noise(a, 3.0), n / (241 - 177 * a + 30 * c), 1e-14,
@@ -220,7 +221,7 @@ static void test_a2_sign_and_limits(void **state)
                               ref_sonine_a2_gaussian, ref_sonine_a2_gaussian_alt};
     for (double d = 2.0; d <= 4.0; d += 1.0) {
         for (int i = 0; i < 4; i++) {
-            /* SPEC §5: sign change at alpha = 1/sqrt(2) for (10), (32), (5), (40). */
+            /* docs/theory.md §13.3: sign change at alpha = 1/sqrt(2) for (10), (32), (5), (40). */
             assert_close(changing[i](1.0 / sqrt(2.0), d), 0.0, 0, 1e-16);
             assert_true(changing[i](0.70, d) > 0.0);
             assert_true(changing[i](0.72, d) < 0.0);
@@ -286,10 +287,10 @@ static void test_table1_expansions(void **state)
 static void test_tails(void **state)
 {
     (void)state;
-    /* SPEC §5 / paper C §4.1: white noise A ≈ 1.99 (alpha = 0.4), 2.11 (0.5). */
+    /* docs/theory.md §13.4 / paper C §4.1: white noise A ≈ 1.99 (alpha = 0.4), 2.11 (0.5). */
     assert_printed(ref_sonine_tail_A_white_noise(0.4, 3.0), 1.99, 2);
     assert_printed(ref_sonine_tail_A_white_noise(0.5, 3.0), 2.11, 2);
-    /* SPEC §5 / paper C §4.2: Gaussian A ≈ 3.82 (alpha = 0.2), 4.41 (0.4). */
+    /* docs/theory.md §13.4 / paper C §4.2: Gaussian A ≈ 3.82 (alpha = 0.2), 4.41 (0.4). */
     assert_printed(ref_sonine_tail_A_gaussian(0.2, 3.0), 3.82, 2);
     assert_printed(ref_sonine_tail_A_gaussian(0.4, 3.0), 4.41, 2);
     /* The documented choice: mu2^(0) alone would miss the Gaussian digits (3.92, 4.48),
@@ -417,7 +418,7 @@ static void test_all(void **state)
     assert_string_equal(few[0].name, "beta_1");
     assert_string_equal(few[2].name, "untouched");
     assert_int_equal(ref_sonine_all(0.2, 3.0, NULL, 0), REF_SONINE_ALL_COUNT);
-    /* SPEC §5 check through the listing. */
+    /* docs/theory.md §13.1 check through the listing. */
     ref_sonine_all(0.2, 3.0, v, REF_SONINE_ALL_COUNT);
     assert_printed(lookup(v, REF_SONINE_ALL_COUNT, "mu4_0"), 10.925, 3);
     /* alpha = 1: a2 all zero, tails infinite. */

@@ -1,9 +1,9 @@
 /* Unit tests of paper D's heat-flux transport coefficients (transport.h).
- * Every known answer names its source: SPEC = /work/shared/SPEC.md §6,
+ * Every known answer names its source: a docs/theory.md section (§14),
  * "D (N)" = paper D's Eq. (N), "C&C" = Chapman and Cowling, The Mathematical
  * Theory of Non-Uniform Gases (3rd ed., 1970), chs. 9-10.
  *
- * The formulas are checked three ways: against the numbers SPEC §6 prints,
+ * The formulas are checked three ways: against the numbers docs/theory.md §14 quotes,
  * against the formulas written out again here, and, for the collision
  * frequencies and the cooling rate, against an independent evaluation of the
  * inelastic hard-sphere collision integrals by exact Gaussian quadrature (so a
@@ -34,12 +34,12 @@ static ref_transport_sonine sonine(double alpha, double d, double a2, ref_transp
     return s;
 }
 
-/* ------------------------------------------------ first Sonine, SPEC §6 */
+/* ------------------------------------------------ first Sonine, docs/theory.md §14.1 */
 
 static void test_check_values(void **state)
 {
     (void)state;
-    /* SPEC §6: alpha = 0.5 gives kappa'/kappa0 = 1.31870, kappa/kappa0 = 1.90108. */
+    /* docs/theory.md §14.1: alpha = 0.5 gives kappa'/kappa0 = 1.31870, kappa/kappa0 = 1.90108. */
     assert_printed(ref_transport_kappa_prime_star(0.5, 3.0), 1.31870, 5);
     assert_printed(ref_transport_kappa_star(0.5, 3.0), 1.90108, 5);
     /* D (2.38): mu* = 2 (kappa - kappa')/kappa0 = 2 (1.90108 - 1.31870) within rounding. */
@@ -53,7 +53,7 @@ static void test_check_values(void **state)
     assert_true(fabs(c5.kappa_star - 1.90108) > 1e-4); /* the printed digits pick (C.40) */
 }
 
-/* SPEC §6 formulas written out again, at high-entropy (alpha, d, a2). */
+/* The formulas of docs/theory.md §14.1 written out again, at high-entropy (alpha, d, a2). */
 static void test_formulas(void **state)
 {
     (void)state;
@@ -308,7 +308,7 @@ static void test_collision_integrals(void **state)
 static void test_sonine_P(void **state)
 {
     (void)state;
-    /* SPEC §6: P_k = 4/5, 16/35, 32/105. */
+    /* docs/theory.md §10.5: P_k = 4/5, 16/35, 32/105. */
     assert_close(ref_transport_sonine_P(1), 4.0 / 5.0, 1e-15, 0);
     assert_close(ref_transport_sonine_P(2), 16.0 / 35.0, 1e-15, 0);
     assert_close(ref_transport_sonine_P(3), 32.0 / 105.0, 1e-15, 0);
@@ -331,7 +331,7 @@ static void test_sonine_P(void **state)
 static void test_b1_identity_constant(void **state)
 {
     (void)state;
-    /* SPEC §6: b'_1 = (15 sqrt(pi)/16) kappa'/kappa0 = 1.661675 kappa'/kappa0;
+    /* docs/theory.md §14.2: b'_1 = (15 sqrt(pi)/16) kappa'/kappa0 = 1.661675 kappa'/kappa0;
      * = (d/(d-1))/(nu0 tau) with nu0 tau = 8/(5 sqrt(pi)). */
     assert_printed(ref_transport_b1_per_kappa(), 1.661675, 6);
     assert_close(ref_transport_b1_per_kappa(), 1.5 / (8 / (5 * sqrt(PI))), 1e-15, 0);
@@ -388,7 +388,7 @@ static void test_elastic_exact(void **state)
     char msg[256];
     assert_int_equal(ref_transport_elastic_exact(&e, msg, sizeof msg), REF_OK);
     assert_string_equal(msg, "");
-    /* D §4 (its ref. [37], Pekeris-Alterman; SPEC §6): kappa/kappa0 = 1.025218. */
+    /* D §4 (its ref. [37], Pekeris-Alterman; docs/theory.md §14.3): kappa/kappa0 = 1.025218. */
     assert_close(e.kappa, 1.025218, 0, 1e-6);
     assert_printed(ref_transport_kappa_elastic_exact(), 1.025218, 6);
     /* Converged in the sense of transport.h, and not before. */
@@ -399,7 +399,7 @@ static void test_elastic_exact(void **state)
         assert_true(fabs(e.kappa_by_order[n] - e.kappa_by_order[n - 1])
                     > REF_TRANSPORT_ELASTIC_TOL);
     assert_close(e.kappa_by_order[2], 45.0 / 44.0, 1e-13, 0);
-    /* SPEC §6 identity: b'_1 = 1.661675 kappa'/kappa0 (kappa' = kappa at alpha = 1),
+    /* docs/theory.md §14.2 identity: b'_1 = 1.661675 kappa'/kappa0 (kappa' = kappa at alpha = 1),
      * so b'_1 exact = 1.7036. */
     assert_close(ref_transport_b_elastic_exact(1), 1.661675 * e.kappa, 0, 1e-6);
     assert_printed(ref_transport_b_elastic_exact(1), 1.7036, 4);
@@ -454,7 +454,7 @@ static void test_listing(void **state)
                               ref_transport_b_elastic_exact(3)};
     for (int i = 0; i < NEW; i++)
         assert_close(v[27 + i].value, want[i], 0, 0);
-    /* SPEC §6 check values through the listing. */
+    /* docs/theory.md §14.1 check values through the listing. */
     assert_printed(lookup(v, REF_SONINE_ALL_COUNT, "kappa_over_kappa0"), 1.90108, 5);
     assert_printed(lookup(v, REF_SONINE_ALL_COUNT, "kappa_prime_over_kappa0"), 1.31870, 5);
     assert_printed(lookup(v, REF_SONINE_ALL_COUNT, "kappa_elastic_exact"), 1.025218, 6);

@@ -1,11 +1,11 @@
-/* Tests of verify/scene_ini.c: scene files to sim_scene (SPEC §2).
+/* Tests of verify/scene_ini.c: scene files to sim_scene (docs/scenes.md).
  *
  * Good scenes are checked field by field, with their present flags and key
  * lines; the trap group provokes each kind of bad input and asserts the
  * status and the exact message.  The engine trap and reference trap groups
  * do the same for scenes that parse but that sim_engine_create() or
- * vfy_scene_references() refuse (SPEC §2: "a combination no scheme supports
- * gets a clear error naming the file, line and key"), with the message as
+ * vfy_scene_references() refuse (docs/scenes.md, "Keys together": a combination no scheme supports
+ * gets a clear error naming the file, line and key), with the message as
  * `gdsmc run` and `gdsmc reference` print it (vfy_scene_format_error).
  * GDSMC_SOURCE_DIR (set by CTest) locates verify/scenes/, whose files must
  * all load.
@@ -169,9 +169,9 @@ static void test_good_scene(void **state)
     assert_int_equal(s.nkeys, 32);
 }
 
-/* Paper B Ex 1 initial state (SPEC §4), hard spheres with the implied exponent. */
+/* Paper B Ex 1 initial state (docs/theory.md §12.1), hard spheres with the implied exponent. */
 /* The keys of the time-step scheme, the Gaussian thermostat's rescaling and
- * the steady-state observers (SPEC §5, §10), and their defaults. */
+ * the steady-state observers (docs/theory.md §10), and their defaults. */
 static void test_timestep_and_steady_keys(void **state)
 {
     (void)state;
@@ -330,7 +330,8 @@ static void test_format_error(void **state)
     assert_string_equal(msg, "t.ini: cannot allocate 3 GB");
 }
 
-/* Paper A Ex 3 (SPEC §3): k = gamma pi C0 (1 - alpha^2) = 3/4, T_inf = 2 beta/k = 8/3. */
+/* Paper A Ex 3 (docs/theory.md §11.1): k = gamma pi C0 (1 - alpha^2) = 3/4,
+ * T_inf = 2 beta/k = 8/3. */
 static void test_grw_ex3_file(void **state)
 {
     (void)state;
@@ -719,7 +720,7 @@ TRAP(trap_single_key_with_mixture,
      "keys ending in 1 and 2)")
 TRAP(trap_white_noise_negative, "[heating]\ntype = white-noise\nstrength = -0.5\n",
      "t.ini:3: heating.strength: -0.5 is negative (allowed strength >= 0 for type = white-noise)")
-/* Keys of the time-step scheme, the thermostats and [steady] (SPEC §5, §10). */
+/* Keys of the time-step scheme, the thermostats and [steady] (docs/scenes.md). */
 TRAP(trap_splitting_with_jump, "[scene]\nt_end = 2\nsplitting = strang\n",
      "t.ini:3: scene.splitting: only used with scheme = timestep (scheme is jump)")
 TRAP(trap_bad_splitting, "[scene]\nscheme = timestep\ndt = 0.1\nsplitting = verlet\n",

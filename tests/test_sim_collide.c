@@ -1,4 +1,4 @@
-/* The collision rules of SPEC §3 (paper A Eq. (3)) and §4 (paper B Eq. (2)),
+/* The collision rules of docs/theory.md §3.1 (paper A Eq. (3)) and §3.4 (paper B Eq. (2)),
  * and the background partner samplers of paper B's Algorithm 2. */
 #include "test_util.h"
 
@@ -13,7 +13,7 @@ static void random_vector(gsl_rng *r, double scale, double x[3])
 }
 
 /* Momentum v + w is conserved to round-off and the energy changes by exactly
- * -(1 - alpha^2)/4 (1 - mu) |g|^2, mu = (g.e)/|g| (SPEC §3). */
+ * -(1 - alpha^2)/4 (1 - mu) |g|^2, mu = (g.e)/|g| (docs/theory.md §3.1). */
 static void test_conservation_and_energy_loss(void **state)
 {
     (void)state;

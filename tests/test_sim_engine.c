@@ -13,7 +13,7 @@
  *   times), and for two particles, whose rate |g|/2 never changes,
  *   through the Poisson counts and beta-distributed times of the loop without
  *   a lazy flow;
- * - paper B's background (SPEC §4): collision counts against the exact rates
+ * - paper B's background (docs/theory.md §5): collision counts against the exact rates
  *   4 pi C1 rho_B (Maxwell) and E1(v) (hard spheres, Algorithm 2), the
  *   equilibrium with the background preserved, and for Maxwell kernels the
  *   exact finite-n expectations of u and T (reference/background.h). */
@@ -31,7 +31,7 @@
 
 #define ZMAX 4.5   /* max over output times of |mean - exact| / sigma */
 
-/* SPEC §3 Ex 3 at small n: Maxwell, alpha = 1/2, beta = 1, gamma = 4, C0 = 1/(4 pi). */
+/* Paper A Ex 3 at small n: Maxwell, alpha = 1/2, beta = 1, gamma = 4, C0 = 1/(4 pi). */
 static sim_scene heated_maxwell_scene(size_t n, size_t ensembles)
 {
     sim_scene s;
@@ -266,7 +266,7 @@ static double assert_collision_count(double count, double expected, size_t n, si
 
 /* Elastic hard spheres from a standard Maxwellian keep the product
  * Maxwellian (it is invariant), so the expected number of binary collisions
- * is 2 pi gamma C (n - 1) E|g| t per ensemble, E|g| = 4/sqrt(pi) (SPEC §3,
+ * is 2 pi gamma C (n - 1) E|g| t per ensemble, E|g| = 4/sqrt(pi) (docs/theory.md §2.2,
  * the rate 4 pi gamma C |g| / n per pair), in each engine shape:
  *  0: collisions only (the process's own batched loop, Poisson counts),
  *  1: with white-noise heating of strength 1e-12 (the lazy flow: one
@@ -378,7 +378,7 @@ static void test_two_particles_counted(void **state)
     sim_engine_free(e);
 }
 
-/* A scene with only a background (SPEC §4): grains of mass 1 at velocity v0
+/* A scene with only a background (docs/theory.md §5): grains of mass 1 at velocity v0
  * (temperature T0), background at rest with rho_B = C1 = 1. */
 static sim_scene background_scene(size_t n, size_t ensembles, sim_kernel_kind kernel,
                                   double m_B, double T_B, const double v0[3], double T0)
@@ -415,7 +415,7 @@ static ref_background_params background_params_of(const sim_scene *s)
 /* The number of accepted background collisions is Poisson with mean
  * n N t E1(v) when the grain velocity does not change: a background of
  * vanishing mass (m_B = 1e-9, alpha ~ 1e-9) with T_B/m_B = 1 (b = sqrt 2)
- * leaves v0 in place to 1e-7 over the run.  Hard spheres: E1(v) of SPEC §4 at
+ * leaves v0 in place to 1e-7 over the run.  Hard spheres: E1(v) of docs/theory.md §5.1 at
  * |v0 - u_B| = 1.5 and at v0 = u_B; Maxwell: 4 pi C1 rho_B. */
 static void test_background_rates(void **state)
 {
@@ -511,7 +511,7 @@ static double exact_T_mean(double t, void *ctx)
     return NAN;
 }
 
-/* SPEC §4 Ex 1 at n = 4: two-Maxwellian start, Maxwell kernels for both
+/* Paper B Ex 1 at n = 4: two-Maxwellian start, Maxwell kernels for both
  * collision kinds.  E u_n = u(t) and E T_n from the exact finite-n system. */
 static void test_background_maxwell_exact(void **state)
 {

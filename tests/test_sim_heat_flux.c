@@ -1,4 +1,4 @@
-/* Paper D's heat-flux force and its observers (SPEC §6, issue 15), and the
+/* Paper D's heat-flux force and its observers (docs/theory.md §7, §10.5, issue 15), and the
  * time-step collision stage of every kernel:
  * - the force step with its projection keeps the momentum at 0 and T at T0
  *   to round-off, on a non-Maxwellian system;

@@ -1,4 +1,4 @@
-/* Paper E's homogeneous shear flow and the EHS drag (SPEC §7, issue 16):
+/* Paper E's homogeneous shear flow and the EHS drag (docs/theory.md §6.1-§6.2, issue 16):
  * - a collisionless gas sheared for time t: the step is exact, so in every
  *   ensemble Pxy(t) = Pxy(0) - a t Pyy(0), Pxx(t) = Pxx(0) - 2 a t Pxy(0) +
  *   (a t)^2 Pyy(0), Pyy, Pzz unchanged (to round-off);

@@ -1,4 +1,4 @@
-/* The Lees-Edwards slab (sim/slab.h, paper E §IV A, SPEC §7, issue 17):
+/* The Lees-Edwards slab (sim/slab.h, paper E §IV A, docs/theory.md §6.3, issue 17):
  * - the wrap: a particle leaving through the top re-enters at the bottom with
  *   v_x - aL, through the bottom at the top with v_x + aL, k crossings in one
  *   step give k aL; v_y, v_z unchanged;

@@ -1,5 +1,5 @@
 /* The time-step scheme, the thermostats of paper C and the steady-state
- * observers (SPEC §5, §10), against exact results:
+ * observers (docs/theory.md §8.5, §10), against exact results:
  * - each thermostat's step on its own (effect level): white-noise variance,
  *   the Gaussian scaling, the keep-T rescaling and the non-Gaussian increment
  *   with its momentum correction, on hand-made particle systems;
@@ -35,7 +35,7 @@
 
 #define ZMAX 4.5   /* max over output times of |mean - exact| / sigma */
 
-/* Paper A Ex 5's gas (SPEC §3): hard spheres, alpha = 1/2, gamma = 4,
+/* Paper A Ex 5's gas (docs/theory.md §11.4): hard spheres, alpha = 1/2, gamma = 4,
  * C1 = 1/(4 pi), white noise beta = 1/8, in the time-step scheme. */
 static sim_scene ex5_scene(size_t n, size_t ensembles, double dt, sim_splitting split)
 {

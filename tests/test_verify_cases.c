@@ -71,7 +71,7 @@ static size_t count_failed_plain(const char *case_name, const char *const *wrong
     return count_quick_failed(case_name, NULL, 0, wrong, nwrong, passed);
 }
 
-/* Paper C (SPEC §5): the steady a2 of the white-noise thermostat against
+/* Paper C (docs/theory.md §13.3): the steady a2 of the white-noise thermostat against
  * (C.10).  Wrong solvers: the Gaussian thermostat in its place (a2 twice as
  * large), or alpha = 0.3 where the case asks for 0.5. */
 static void test_ms_a2_white_noise(void **state)
@@ -149,7 +149,7 @@ static void test_vro_grw_ex3_wrong_solver(void **state)
     assert_true(count_failed("vro-grw-ex3", alpha, 1) >= 2);
 }
 
-/* SPEC §10: the time-step scheme's difference from the jump scheme shrinks
+/* docs/theory.md §8.5: the time-step scheme's difference from the jump scheme shrinks
  * as h (Euler) and h^2 (Strang); a time-step solver of another gas (heating
  * 20% stronger than the jump run's) leaves an offset, and Strang's
  * convergence factor fails. */

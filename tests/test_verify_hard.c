@@ -213,7 +213,7 @@ static void test_check_ode(void **state)
     (void)state;
     vfy_report r;
     vfy_report_init(&r, NULL);
-    /* SPEC §4 Ex 2's steady state T* = 64/67, reached on the grid */
+    /* Paper B Ex 2's steady state T* = 64/67, reached on the grid */
     const double Ts = 64.0 / 67.0;
     double T[4] = {1.0, 0.97, 0.956, Ts}, Tx[4] = {1.0, 0.97, 0.956, Ts};
     double u[12] = {0, 0, 0, 0, 0.5, 0, 0, 0.9, 0, 0, 1, 0};

@@ -259,7 +259,7 @@ typedef struct bench_breakdown {
  * strength beta), also what the heating needs at the least: each candidate's
  * waiting time (one exponential) and i and j brought to it with their pending
  * increments (sqrt(2 beta dt) times three normal variates each, and their
- * stamps), the draws of paper A's algorithm (SPEC §3) and nothing else. */
+ * stamps), the draws of paper A's algorithm (docs/theory.md §8.3) and nothing else. */
 static sim_status run_floor_maxwell(const sim_scene *s, double collisions, int heated,
                                     bench_row *row, sim_error *err)
 {
@@ -270,7 +270,7 @@ static sim_status run_floor_maxwell(const sim_scene *s, double collisions, int h
         return status;
     const double alpha = s->collisions.restitution, beta2 = 2.0 * s->heating.strength;
     const double rate = 2.0 * M_PI * s->collisions.rate * s->collisions.constant
-                        * (double)(p.n - 1);   /* pi_hat of SPEC §3, lambda = 0 */
+                        * (double)(p.n - 1);   /* pi_hat of docs/theory.md §8.3, lambda = 0 */
     double *stamp = heated ? calloc(p.n, sizeof *stamp) : NULL;
     if (heated && stamp == NULL) {
         sim_particles_free(&p);

@@ -1,5 +1,5 @@
 /* gdsmc bench: throughput of the engine against a bare floor loop measured
- * in the same run (issue 4, SPEC §9).
+ * in the same run (issue 4, docs/bench.md).
  *
  * Cases, each on one core (one ensemble at a time) unless said otherwise:
  *   floor     the engine's hard-sphere kernel without its bookkeeping: the

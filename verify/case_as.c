@@ -1,6 +1,6 @@
 /* Paper E (Astillero and Santos 2005): uniform shear flow of inelastic hard
  * spheres (IHS) and of frictional elastic hard spheres (EHS), homogeneous, with
- * the BGK model beside them (SPEC §7, issue 16).
+ * the BGK model beside them (docs/theory.md §15, issue 16).
  *
  * Every row is one steady state of verify/scenes/as.ini at one restitution
  * coefficient alpha, model and initial shear rate a tau0: N independent

@@ -1,6 +1,6 @@
 /* Paper B (Bisi, Rjasanow, Spiga 2010): a granular gas in a host medium,
  * binary inelastic collisions and elastic collisions with a background in one
- * exact jump scheme (SPEC §4).
+ * exact jump scheme (docs/theory.md §5, §12).
  *
  * brs-ex1, brs-ex2 (Tables 1 and 2), brs-ex3: Maxwell kernels.  Rows n = 4,
  * 16, 64, ... with N = 16 n; Err = max over the output times of
@@ -30,7 +30,7 @@
 /* What every brs case reads of a result: T and u (the engine computes no more). */
 #define BRS_OBSERVES "T ux uy uz"
 
-/* brs-ex1, brs-ex2, brs-ex3 (SPEC §4 Ex 1-3): Maxwell kernels, rows n = 4,
+/* brs-ex1, brs-ex2, brs-ex3 (paper B Ex 1-3, docs/theory.md §12.1): Maxwell kernels, rows n = 4,
  * 16, 64, ... with N = 16 n. */
 static const char *const conv_needs[] = {"T_exact", "T_finite_n", "ux_exact", "uy_exact",
                                          "uz_exact", NULL};
@@ -119,7 +119,7 @@ static const char conv_notes[] =
                  {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy",             \
                   .refs = {"uy_exact"}, .panel_per_row = 1}},                               \
      .title = "{case}: paper B {paper} ({size} sizes)", .notes = conv_notes}
-/* SPEC §4 Ex 1 (paper B Table 1) and Ex 2 (Table 2): rows n = 4 ... 1024. */
+/* Paper B Ex 1 (its Table 1) and Ex 2 (Table 2): rows n = 4 ... 1024. */
 static const vfy_paper_column brs_table1[] = {
     VFY_PAPER_COLUMN("Err_paper", 3.49e-1, 8.80e-2, 1.99e-2, 5.51e-3, 1.08e-3),
     VFY_PAPER_COLUMN("CF_paper", NAN, 3.97, 4.42, 3.61, 5.10),
@@ -141,7 +141,7 @@ const vfy_case_desc vfy_brs_ex3 =
     BRS_CONVERGENCE("Maxwell kernels, relaxation", NULL, no_table_checks,
                     .must_fail = "background.constant=1.05 background.mass=1.05");
 
-/* brs-ex4, brs-ex5 (SPEC §4 Ex 4, 5): hard spheres.  Rows with n N fixed
+/* brs-ex4, brs-ex5 (paper B Ex 4, 5; docs/theory.md §12.3): hard spheres.  Rows with n N fixed
  * (2^21 at paper sizes, 2^14 at quick), so each row costs about the same;
  * each row runs in 32 independent batches (the variants, seeds scene
  * seed + 1000 (row + 1) + batch): the spread of the batches' time averages

@@ -1,9 +1,9 @@
-/* The accuracy-cost report (SPEC §10, "Work-precision: error against CPU time
- * across (n, N, dt); which n and N reach a given error fastest").
+/* The accuracy-cost report (docs/theory.md §1.4; work-precision: error against CPU time
+ * across (n, N, dt), and which n and N reach a given error fastest).
  *
  * cost-grw-ex3, cost-brs-ex2: the scenes of paper A Ex 3 (grw-ex3.ini) and
  * paper B Ex 2 (brs-ex2.ini), both Maxwell kernels, over a grid of n x N.
- * The error is the papers' (SPEC §1): Err = max over the output times t_m of
+ * The error is the papers' (docs/theory.md §1.4): Err = max over the output times t_m of
  * |F(t_m) - eta1(t_m)| / F(t_m), with paper A's uncentred T_raw against
  * (A.13) and paper B's centred T against (B.15).  With E xi^(n)(t) the exact
  * expectation of the n-particle estimator (reference/heated.h,
@@ -26,7 +26,7 @@
  *
  * cost-split-ex5: the hard-sphere gas of paper A Ex 5 (split-ex5.ini), the
  * time-averaged steady temperature T̄ (steady.h) with the exact jump scheme
- * over n x N and with the time-step scheme (SPEC §10) over h, Euler and
+ * over n x N and with the time-step scheme (docs/theory.md §8.5) over h, Euler and
  * Strang.  No exact solution: the reference T̄_inf comes from the jump rows,
  * T̄_jump(n) = T̄_inf + b/n (weighted least squares, its chi^2 judged; T̄_inf
  * is compared with the first-Sonine closure's steady state).  A row's error

@@ -1,4 +1,4 @@
-/* The accuracy-cost (work-precision) report, SPEC §10: error against CPU time
+/* The accuracy-cost (work-precision) report, docs/theory.md §1.4: error against CPU time
  * over a grid of particle numbers n, ensembles N and, for the time-step
  * scheme, steps h; which grid point reaches a target error most cheaply, and
  * which one a model fitted to the grid predicts beyond it.
@@ -33,7 +33,7 @@ size_t vfy_cost_cheapest(const double *err, const double *cost, size_t count, do
 int vfy_cost_lsq2(size_t count, const double *x1, const double *x2, const double *y,
                   const double *w, double c[2], double *chi2);
 
-/* The statistical part scales as 1/sqrt(N) (SPEC §1: c = lambda_p sqrt(Var/N)):
+/* The statistical part scales as 1/sqrt(N) (docs/theory.md §1.3: c = lambda_p sqrt(Var/N)):
  * for `count` particle numbers, conf1[i] at N1 ensembles and conf2[i] at
  * N2 > N1.  The pooled ratio R = exp(mean_i ln(conf1[i]/conf2[i])) /
  * sqrt(N2/N1) must lie within 1 ± ZMAX s, where s^2 = ((2 + kurtosis)/4)

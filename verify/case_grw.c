@@ -1,8 +1,8 @@
 /* Paper A (Gamba, Rjasanow, Wagner 2003): the uniformly heated granular gas
- * with the exact jump scheme (SPEC §3).
+ * with the exact jump scheme (docs/theory.md §8.3, §11).
  *
  * grw-ex3, grw-ex4: Tables 1 and 2.  Emax = max_m |T(t_m) - eta1(t_m)| / T(t_m)
- * with paper A's uncentred estimator T_raw (SPEC §1), against the closed form
+ * with paper A's uncentred estimator T_raw (docs/theory.md §1.2), against the closed form
  * (A.13); CF = Emax(previous row) / Emax.  Beyond the paper, each row's mean
  * is z-tested at every output time against the exact expectation of the
  * n-particle estimator (reference/heated.h), which separates the O(1/n) bias
@@ -10,7 +10,7 @@
  *
  * grw-ex5: hard spheres.  No exact solution: the DSMC temperature for each n,
  * its O(1/n) extrapolation to n = infinity (weighted least squares in 1/n at
- * every output time), and both closures of SPEC §3 Ex 5.
+ * every output time), and both closures of docs/theory.md §11.4.
  */
 #include <gsl/gsl_cdf.h>
 #include <math.h>
@@ -29,7 +29,7 @@
 
 
 /* grw-ex3, grw-ex4 (paper A Tables 1 and 2): the same description but for
- * the paper's numbers (SPEC §3 Ex 3, Ex 4). */
+ * the paper's numbers (paper A Ex 3, Ex 4; docs/theory.md §11.1). */
 static const char *const grw_needs[] = {"T_exact", "T_finite_n", "T_raw_finite_n", NULL};
 static const vfy_metric grw_metrics[] = {
     {"Emax", vfy_metric_max_rel_err, "T_raw", "T_exact", 0},
@@ -93,7 +93,7 @@ static const vfy_paper_column grw_table2[] = {
 const vfy_case_desc vfy_grw_ex3 = GRW_TABLE("Table 1", grw_table1, .must_fail = GRW_MUST_FAIL);
 const vfy_case_desc vfy_grw_ex4 = GRW_TABLE("Table 2", grw_table2, .must_fail = GRW_MUST_FAIL);
 
-/* grw-ex5 (SPEC §3 Ex 5): heated hard spheres; no exact solution, so the
+/* grw-ex5 (paper A Ex 5, docs/theory.md §11.4): heated hard spheres; no exact solution, so the
  * rows are extrapolated to n = infinity at every output time and compared
  * with both closures. */
 static const vfy_metric ex5_metrics[] = {
@@ -204,7 +204,7 @@ const vfy_case_desc vfy_grw_ex5 = {
              "{diff_sonine:%+.5f}. Largest chi^2 of the O(1/n) fit over the output times: "
              "{chi2_max:%.2f} ({rows} rows). Total wall time {wall_total:%.1f} s."};
 
-/* grw-ex6, grw-ex7, grw-ex8 (SPEC §3 Ex 6-8, paper A §4.3): the steady tail
+/* grw-ex6, grw-ex7, grw-ex8 (docs/theory.md §11.5, paper A §4.3): the steady tail
  * of the white-noise heated gas, alpha = 0.1, beta = 30, gamma = 16, C =
  * 1/(4 pi), for Maxwell molecules, hard spheres and VHS lambda = 1/2.  The
  * histogram is the steady observers' (steady.h): the reduced speed c = |C|/v0,

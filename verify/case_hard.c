@@ -42,7 +42,7 @@
  *     expectations; and hard spheres from T0 = 1e-8 and 1e8 to the steady
  *     state of the first-Sonine closure).
  *
- * The exact steady energy balance (SPEC §3: dT/dt = 2 beta - gamma (1 -
+ * The exact steady energy balance (docs/theory.md §11.3: dT/dt = 2 beta - gamma (1 -
  * alpha^2)/24 ∫∫ B1 |g|^2 f f, B1 = 4 pi C |g|).  For the n-particle jump
  * process with X = Σ|v_i - V|^2: white noise adds 6 beta (n - 1) to dE X/dt,
  * and an unordered pair collides at rate 4 pi gamma C |g|/n losing
@@ -263,7 +263,7 @@ static vfy_verdict check_rel(vfy_report *r, const char *name, double value, doub
                           100.0 * dev, 100.0 * rtol);
 }
 
-/* Collisional loss rate of T of hard spheres (unit mass), SPEC §3 Ex 5 with
+/* Collisional loss rate of T of hard spheres (unit mass), docs/theory.md §11.4 with
  * the first Sonine factor:
  *   gamma (1 - alpha^2)/24 4 pi C (32/sqrt(pi)) T^{3/2} (1 + 3 a2/16). */
 static double hs_loss(const sim_scene *s, double T, double a2)
@@ -743,7 +743,7 @@ static const vfy_metric tails_metrics[] = {
     HARD_CHECK(WHITE_LABEL, HARD_VIOLATIONS, NULL), HARD_CHECK(WHITE_LABEL, HARD_FINITE, NULL), \
         {.name = NULL}
 static const vfy_check_spec dissipation_checks[] = {WHITE_CHECKS, WHITE_TAIL_CHECKS};
-/* Paper A Ex 7, SPEC §3: the overpopulated tail exp(-A c^{3/2}) is fatter
+/* Paper A Ex 7, docs/theory.md §11.5: the overpopulated tail exp(-A c^{3/2}) is fatter
  * than the first Sonine approximation's Maxwellian times a polynomial, so
  * beyond c = 3 the population must reach at least the latter's (with the
  * reference's a2 of (C.10)), up to its half-width; a Maxwellian tail (0.37
@@ -911,7 +911,7 @@ static const char *const tiny_rows[] = {TINY_GAS("grw-ex3"), TINY_GAS("brs-ex2")
 static const char *const all_references[] = {NULL};   /* every row's, none required */
 #define TINY_LABEL "{case} {gas} n={n}"
 static const vfy_check_spec tiny_checks[] = {
-    /* the exact expectation of the n-particle T (SPEC §10) */
+    /* the exact expectation of the n-particle T (docs/theory.md §11.2) */
     {.name = TINY_LABEL " T vs exact finite-n expectation", .rule = vfy_rule_zscore,
      .value = "T", .expected = "T_finite_n", .from = 1, .tol = VFY_TOL_ZMAX, .out = "z_T",
      .guard = {only_maxwell, "T_finite_n", NULL, 0, NULL}},

@@ -5,8 +5,8 @@
  * exact steady relations) go through checks.h.  The invariant checks below
  * are pure functions over a run's summary, so that a test can hand each of
  * them a corrupted summary (a NaN, a majorant violation, a momentum drift, a
- * CVODE result that is garbage) and see it fail (SPEC §9: a check must be
- * able to fail).
+ * CVODE result that is garbage) and see it fail (a check must be
+ * able to fail, docs/verdicts.md).
  */
 #ifndef GDSMC_VFY_CASE_HARD_H
 #define GDSMC_VFY_CASE_HARD_H
@@ -72,7 +72,7 @@ double vfy_hard_energy_bound(const vfy_hard_summary *s, double collisions);
 /* "<label> no NaN or infinity": every inspected value finite. */
 vfy_verdict vfy_hard_check_finite(vfy_report *r, const char *label, const vfy_hard_summary *s);
 
-/* "<label> majorant violations": the count is 0 (SPEC §3: counted and
+/* "<label> majorant violations": the count is 0 (docs/theory.md §8.3: counted and
  * reported, 0 in the paper cases). */
 vfy_verdict vfy_hard_check_violations(vfy_report *r, const char *label,
                                       const vfy_hard_summary *s);

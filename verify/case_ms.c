@@ -1,5 +1,5 @@
 /* Paper C (Montanero and Santos 2000): steady states of inelastic hard
- * spheres under three thermostats, with the time-step scheme (SPEC §5).
+ * spheres under three thermostats, with the time-step scheme (docs/theory.md §8.5, §10).
  *
  * Every row is one steady-state run of scene verify/scenes/ms-<thermostat>.ini
  * at one restitution coefficient alpha: N independent ensembles of n
@@ -12,7 +12,7 @@
  * the first Sonine factor 1 + 3 a2/16 with the row's Sonine a2); the reduced
  * steady state does not depend on it (paper C §2), so this only shortens the
  * relaxation.  The Gaussian thermostat runs as the homogeneous cooling state
- * in scaled variables (keep_temperature, SPEC §2).
+ * in scaled variables (keep_temperature, docs/theory.md §4.3).
  *
  * Cases:
  *   ms-a2-white-noise, ms-a2-gaussian, ms-a2-non-gaussian: a2 against alpha
@@ -63,8 +63,8 @@
 /* ----------------------------------------------------- the row's scene */
 
 /* Collisional energy loss rate dT/dt at temperature T (grain mass 1):
- * gamma (1 - alpha^2)/24 4 pi C (32/sqrt(pi)) T^{3/2} (1 + 3 a2/16) (SPEC §3
- * Ex 5's closure with its first Sonine factor). */
+ * gamma (1 - alpha^2)/24 4 pi C (32/sqrt(pi)) T^{3/2} (1 + 3 a2/16) (docs/theory.md
+ * §11.4, the closure with its first Sonine factor). */
 static double ms_cooling(const sim_scene *s, double T, double a2)
 {
     const double alpha = s->collisions.restitution;

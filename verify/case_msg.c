@@ -1,6 +1,6 @@
 /* Paper D (Montanero, Santos and Garzó 2007): the modified thermal
  * conductivity kappa' and the first-order distribution of inelastic hard
- * spheres from the homogeneous heat-flux force (SPEC §6, issue 15).
+ * spheres from the homogeneous heat-flux force (docs/theory.md §7, §14, issue 15).
  *
  * Every row is one steady state of verify/scenes/msg.ini at one restitution
  * coefficient alpha and force strength eps* (time-step scheme, the force and

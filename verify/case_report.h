@@ -1,4 +1,4 @@
-/* Report pieces of the driver (SPEC §9): the provenance comment, the case's
+/* Report pieces of the driver (README.md, "What comes out"): the provenance comment, the case's
  * tables, the rows so far, result columns. */
 #ifndef GDSMC_VFY_CASE_REPORT_H
 #define GDSMC_VFY_CASE_REPORT_H

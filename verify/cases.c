@@ -33,10 +33,10 @@ extern const vfy_case_desc vfy_as_slab;
 extern const vfy_case_desc vfy_as_slab_vs_homogeneous;
 /* case_vro.c (issue 4: variance-reduced observation) */
 extern const vfy_case_desc vfy_vro_grw_ex3;
-/* case_split.c (SPEC §10) */
+/* case_split.c (docs/theory.md §8.5) */
 extern const vfy_case_desc vfy_split_ex5;
 extern const vfy_case_desc vfy_split_gaussian;
-/* case_cost.c (SPEC §10: accuracy against CPU cost) */
+/* case_cost.c (docs/theory.md §1.4: accuracy against CPU cost) */
 extern const vfy_case_desc vfy_cost_grw_ex3, vfy_cost_brs_ex2;
 extern const vfy_case_desc vfy_cost_split_ex5;
 /* case_hard.c (the hard suite, issue #5 item 1) */

@@ -1,4 +1,4 @@
-/* Verification cases and suites (SPEC §9).
+/* Verification cases and suites (docs/cases.md).
  *
  * A case runs solver against reference over a sequence of particle numbers,
  * writes reports/<case>.csv, reports/<case>.md and a figure, and records one

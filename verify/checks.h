@@ -1,4 +1,4 @@
-/* Verification checks and their verdicts (SPEC §9).
+/* Verification checks and their verdicts (docs/verdicts.md).
  *
  * Each check records one line, "PASS|FAIL|SKIP|DIFFERS  name: detail", in a
  * report; a report with any FAIL (counts[VFY_FAIL] > 0) makes `gdsmc verify`

@@ -1,4 +1,4 @@
-/* Verification cases as data, and the one driver that runs them (SPEC §9).
+/* Verification cases as data, and the one driver that runs them (docs/adding-a-case.md).
  *
  * A case description (vfy_case_desc) names its scene, the rows (a sweep over
  * scene keys), the references it needs, per-row metrics, checks with guards,
@@ -369,7 +369,7 @@ const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_r
 /* An adjust hook (vfy_adjust_fn): a row whose text "scheme" is "jump"
  * simulates the scene the references describe (no --solver-set) with the
  * exact jump scheme, the reference the time-step rows (the solver under
- * test) are measured against (SPEC §10). */
+ * test) are measured against (docs/theory.md §8.5). */
 sim_status vfy_adjust_jump_rows(const vfy_row *row, sim_scene *solver, char *msg,
                                 size_t msglen);
 

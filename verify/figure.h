@@ -1,4 +1,4 @@
-/* Figures with gnuplot (SPEC §9), when it is installed. */
+/* Figures with gnuplot (README.md, "What comes out"), when it is installed. */
 #ifndef GDSMC_VFY_FIGURE_H
 #define GDSMC_VFY_FIGURE_H
 
@@ -75,7 +75,7 @@ typedef struct vfy_xy_figure {
  * Returns 0 or -1 (errno). */
 int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f);
 
-/* Work-precision figures (SPEC §10): Err against CPU seconds. */
+/* Work-precision figures (docs/theory.md §1.4): Err against CPU seconds. */
 #define VFY_WP_TARGETS 3
 extern const double vfy_wp_targets[VFY_WP_TARGETS];   /* 1e-2, 1e-3, 1e-4 */
 

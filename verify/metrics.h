@@ -1,4 +1,4 @@
-/* Metrics of the verification cases (SPEC §9), as pure functions of arrays,
+/* Metrics of the verification cases (docs/theory.md §1.4), as pure functions of arrays,
  * and the adapters that let a case description name them (driver.h).
  *
  * Each pure function has a test in tests/test_driver.c that hands it a
@@ -58,7 +58,7 @@ double vfy_max_abs_diff(const double *a, const double *b, size_t count);
  * apart two independent estimates are, in units of their joint half-width. */
 double vfy_z_pair(double a, double sa, double b, double sb);
 
-/* The exact steady energy balance of a heated hard-sphere gas (docs/theory.md;
+/* The exact steady energy balance of a heated hard-sphere gas (docs/theory.md §11.3;
  * verify/case_hard.c derives it for the n-particle process): the collisional
  * loss of T, gamma pi C (1 - alpha^2) <|g|^3>/6 with <|g|^3> = 8 mu2 (2T)^(3/2)/(pi
  * (1 - alpha'^2)) from the result's steady mu2 (paper C Eq. 65, reduced with the
@@ -77,7 +77,7 @@ double vfy_energy_balance(const sim_scene *scene, const sim_scene *solver,
 size_t vfy_fit_tail(const double *c, const double *f, const double *ci, size_t bins, double b,
                     double c_lo, double lambda, double *A, double *A_sd, double *K);
 
-/* Paper A's tail exponent (SPEC §3 Ex 6-8, A §4.3): with f_k a histogram of
+/* Paper A's tail exponent (docs/theory.md §11.5, A §4.3): with f_k a histogram of
  * the speed in shells, r[k] the upper edge of shell k and k0 < k the anchor
  * shell, the weighted least-squares slope b of
  *   y_k = ln(ln f_k0 - ln f_k)  against  x_k = ln(r_k - r_k0),

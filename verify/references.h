@@ -1,4 +1,4 @@
-/* Every reference of the verification cases by name (SPEC §8, §9).
+/* Every reference of the verification cases by name (docs/theory.md §11-§16).
  *
  * A reference is a time series on a scene's output times (closed forms,
  * CVODE closures, exact finite-n expectations: computed together by

@@ -1,4 +1,4 @@
-/* Scene files (SPEC §2): INI text -> validated sim_scene, with inih.
+/* Scene files (docs/scenes.md): INI text -> validated sim_scene, with inih.
  *
  * Design.  One table, `keys`, describes every key: section, name, kind (text,
  * real, vector, count, word), the field's offset in sim_scene and its allowed
@@ -616,7 +616,7 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
                                  "not used with initial = two-maxwellians (allowed the keys "
                                  "ending in 1 and 2)");
 
-    /* SPEC §3: maxwell is lambda = 0, hard-spheres lambda = 1, vhs needs lambda. */
+    /* docs/theory.md §2.2: maxwell is lambda = 0, hard-spheres lambda = 1, vhs needs lambda. */
     sim_kernel_kind k = s->collisions.kernel;
     int has_exponent = is_set(s, "collisions.exponent");
     if (!has_exponent && k != SIM_KERNEL_VHS)
@@ -632,7 +632,7 @@ static sim_status check_scene(sim_scene *s, sim_error *err)
                              k == SIM_KERNEL_MAXWELL ? "maxwell" : "hard-spheres",
                              k == SIM_KERNEL_MAXWELL ? "0" : "1");
 
-    if (is_set(s, "collisions.rule")) {   /* SPEC §5: only the time-step stage chooses */
+    if (is_set(s, "collisions.rule")) {   /* docs/theory.md §8.5: only the time step chooses */
         const int slab = s->shear.present && s->shear.boundary == SIM_SHEAR_LEES_EDWARDS;
         if (s->collisions.rule == SIM_RULE_CONTACT && k != SIM_KERNEL_HARD_SPHERES)
             return sim_error_set(err, SIM_EINVAL, "collisions.rule",

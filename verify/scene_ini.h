@@ -1,4 +1,4 @@
-/* Scene files: INI text (parsed with inih) to a validated sim_scene (SPEC §2).
+/* Scene files: INI text (parsed with inih) to a validated sim_scene (docs/scenes.md).
  *
  * Every key is checked as it is read: unknown sections and keys, malformed or
  * out-of-range numbers (strtod with end pointer, errno and finiteness checks),

@@ -297,7 +297,7 @@ sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_erro
                 raw[m] = ref_heated_maxwell_T_raw_mean(&p, n, t[m]);
             }
         }
-    } else {   /* hard spheres: the two closures of SPEC §3 Ex 5 */
+    } else {   /* hard spheres: the two closures of docs/theory.md §11.4 */
         const struct { ref_heated_closure closure; const char *name; } closures[] = {
             {REF_HEATED_MAXWELLIAN_CLOSURE, "T_maxwell_closure"},
             {REF_HEATED_SONINE_CLOSURE, "T_sonine_closure"},

@@ -1,4 +1,4 @@
-/* The deterministic references that apply to a scene (SPEC §8, §9), on the
+/* The deterministic references that apply to a scene (docs/theory.md §11-§16), on the
  * scene's output-time grid.  One place decides which reference fits which
  * scene; `gdsmc reference` and the verify cases both use it.
  *
@@ -7,7 +7,7 @@
  *   maxwell kernel:      T_exact (A.13), and the exact expectations of the
  *                        n-particle estimators, T_finite_n and T_raw_finite_n
  *                        (reference/heated.h; i.i.d. initial state only)
- *   hard-spheres kernel: T_maxwell_closure, T_sonine_closure (SPEC §3 Ex 5)
+ *   hard-spheres kernel: T_maxwell_closure, T_sonine_closure (docs/theory.md §11.4)
  *
  * Paper B scenes (a background, binary collisions optional, no other effect,
  * i.i.d. initial state: Maxwellian, two Maxwellians or shell):

@@ -1,4 +1,4 @@
-/* Tables of results and their files (SPEC §9): CSV (a header row of column
+/* Tables of results and their files (README.md, "What comes out"): CSV (a header row of column
  * names, '#' comment lines before it, plain numbers: opens in a spreadsheet
  * and in gnuplot with `set datafile separator ','`) and Markdown.
  *

@@ -1,4 +1,4 @@
-/* Every tolerance of the verification cases, in one place (SPEC §9).
+/* Every tolerance of the verification cases, in one place (docs/verdicts.md).
  *
  * Each line says what the bound must separate: the effect a wrong solver
  * produces against the noise of a right one at quick and at paper sizes.
@@ -68,7 +68,7 @@
  * near c = 3.5).
  * The amplitude A of exp(-A c^b) at b = 1 + lambda/2, fitted over c >= 3 (as
  * paper C's tails, ms-tails), against the loss-diffusion balance
- * (docs/theory.md, "The heated tail") within 6%: the balance fixes the
+ * (docs/theory.md §11.5, "The heated tail") within 6%: the balance fixes the
  * exponential, not the prefactor, whose slow growth (a power of c, from the
  * gain term) the fit absorbs as a deficit that shrinks as the range moves
  * out.  At n = 1e7 the fit lies 4.8%, 1.0% and 2.7% below (Maxwell, hard
