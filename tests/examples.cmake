@@ -84,3 +84,34 @@ example_add_run(example_c_not_substituted 0
             ${EX_BIN}/nosubst.csv
     RESULT ${EX_BIN}/nosubst.csv
     HAS "\n# violations = 0\nt," LACKS "substituted")
+
+# The template adapters: their refusals, and their stand-in "solver" (which
+# never changes the particles) on a gas without effects, steady section
+# included.
+example_add_run(template_c_refuses_collisions 3
+    COMMAND $<TARGET_FILE:template_adapter> ${SCENES}/grw-ex3.ini ${EX_BIN}/r.csv
+    LAST "[collisions] not supported: this solver does not do binary collisions")
+example_add_run(template_python_refuses_collisions 3
+    COMMAND ${DEBIAN_PYTHON3} ${EX_PY}/template_adapter.py ${SCENES}/grw-ex3.ini ${EX_BIN}/r.csv
+    LAST "[collisions] not supported: this solver does not do binary collisions")
+example_add_run(template_c_refuses_unknown_key 3
+    COMMAND $<TARGET_FILE:template_adapter> ${EX_SCENES}/free-gas-unknown-key.ini ${EX_BIN}/r.csv
+    LAST "key particles.radius not supported")
+example_add_run(template_python_refuses_unknown_key 3
+    COMMAND ${DEBIAN_PYTHON3} ${EX_PY}/template_adapter.py ${EX_SCENES}/free-gas-unknown-key.ini
+            ${EX_BIN}/r.csv
+    LAST "key particles.radius not supported")
+set(EX_ROW "\nt,T,T_var,T_raw,T_raw_var,ux,ux_var,[^\n]*,a3,a3_var\n0,")
+example_add_run(template_c_free_gas 0
+    COMMAND $<TARGET_FILE:template_adapter> ${EX_SCENES}/free-gas.ini ${EX_BIN}/free-c.csv
+    RESULT ${EX_BIN}/free-c.csv
+    HAS "^# gdsmc-result 1\n" "\n# n = 50\n# ensembles = 3\n" "${EX_ROW}"
+        "\n# steady\nname,mean,var\nT,[^\n]*\na2,.*\nmu2,.*\nf_4,[^\n]*\n$"
+    LACKS "substituted")
+example_add_run(template_python_free_gas 0
+    COMMAND ${DEBIAN_PYTHON3} ${EX_PY}/template_adapter.py ${EX_SCENES}/free-gas.ini
+            ${EX_BIN}/free-py.csv
+    RESULT ${EX_BIN}/free-py.csv
+    HAS "^# gdsmc-result 1\n" "\n# n = 50\n# ensembles = 3\n" "${EX_ROW}"
+        "\n# steady\nname,mean,var\nT,[^\n]*\na2,.*\nmu2,.*\nf_4,[^\n]*\n$"
+    LACKS "substituted")
