@@ -467,8 +467,8 @@ static const char grid_columns[] =
     VFY_COST_COLUMNS;
 #define COST_GRID_NOTES(OBS, FINITE)                                                    \
     "{comment}; each row sets n and N.\n\nErr = max over the {outputs} output times of "   \
-    "|F(t) - eta1(t)|/F(t) for " OBS " (SPEC §1). With E xi^(n)(t) the exact expectation " \
-    "of the n-particle estimator (" FINITE ", SPEC §10), eta1 - F = (eta1 - E "        \
+    "|F(t) - eta1(t)|/F(t) for " OBS " (docs/theory.md §1.4). With E xi^(n)(t) the exact expectation " \
+    "of the n-particle estimator (" FINITE ", docs/theory.md §11.2), eta1 - F = (eta1 - E "        \
     "xi^(n)) + (E xi^(n) - F) at every output time: Err_sys = max |E xi^(n) - F|/F is the " \
     "systematic part, exact (no noise), O(1/n); Err_stat = max |eta1 - E xi^(n)|/F the "   \
     "statistical part as measured, O(1/sqrt(n N)); Conf = max c/F with c = 3.2 "           \
@@ -559,7 +559,7 @@ static double split_model(const double c[2], int scheme, double h)
     "ensembles. Reference: T̄_inf = {T_inf:%.6f} ± {T_inf_ci:%.6f} (99.9%), with b = "     \
     "{b:%.4f}, from the weighted least squares T̄_jump(n) = T̄_inf + b/n over the {nj} "     \
     "jump rows (chi^2 {chi2_jump:%.2f}); the first-Sonine closure's steady T is "          \
-    "{T_sonine:%.6f} (SPEC §3 Ex 5). Err = |T̄ - T̄_inf|/T̄_inf, and Err_hi = Err + "        \
+    "{T_sonine:%.6f} (docs/theory.md §11.4). Err = |T̄ - T̄_inf|/T̄_inf, and Err_hi = Err + "        \
     "sqrt(T_ci^2 + T̄_inf's half-width^2)/T̄_inf its 99.9% upper bound (the reference is "  \
     "measured too); its parts: Err_sys = |b/n|/T̄_inf (the O(1/n) bias), Err_split = |c1 " \
     "h^p + c2 h^(p+1)|/T̄_inf (the splitting error, fitted to the time-step rows: Euler p " \

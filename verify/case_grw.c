@@ -76,7 +76,7 @@ static const char grw_notes[] =
     "the centred T instead. CF = Emax(previous row)/Emax. V_inf = max_m |eta1 of V(t_m)|. "
     "noise = max_m c/T(t_m) with c = 3.2 sqrt(Var/N), the confidence half-width (the paper's "
     "Conf band is 2c wide). z_T_raw, z_T = max_m |eta1 - E xi^(n)|/sigma against the exact "
-    "expectation of the n-particle estimator (Maxwell molecules; SPEC §10). events = candidate "
+    "expectation of the n-particle estimator (Maxwell molecules; docs/theory.md §11.2). events = candidate "
     "collisions (all accepted for Maxwell molecules); cpu_s is process CPU time over all "
     "threads. Total wall time {wall_total:%.1f} s.";
 static const vfy_paper_column grw_table1[] = {
@@ -552,7 +552,7 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
 }
 
 #define TAILS_NOTES                                                                      \
-    "{comment}.\n\nPaper A §4.3 (SPEC §3 Ex 6-8): the steady state of the white-noise "      \
+    "{comment}.\n\nPaper A §4.3 (docs/theory.md §11.5): the steady state of the white-noise "      \
     "heated gas (alpha = 0.1, beta = 30, gamma = 16, C = 1/(4 pi)), exact jump scheme. The "  \
     "histogram f_k of the reduced speed c = |C|/v0 (v0 = sqrt(2T/m), the steady T) in K = "   \
     "128 shells to the paper's R over v0, averaged per ensemble over the steady output "      \

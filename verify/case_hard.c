@@ -811,7 +811,7 @@ const vfy_case_desc vfy_hard_tails = {
     .columns = tails_columns, .after_rows = tails_c_max,
     .title = HARD_TITLE("paper A Ex 7, growing majorant and overpopulated tail"),
     .notes = HARD_NOTES(
-        "Paper A Ex 7 (SPEC §3): hard spheres, alpha = 0.1, beta = 30, gamma = 16, C = 1/(4 "
+        "Paper A Ex 7 (docs/theory.md §11.5): hard spheres, alpha = 0.1, beta = 30, gamma = 16, C = 1/(4 "
         "pi), T0 = 1, heated to T about 3: the majorant U_max grows and the tail fills (f ~ "
         "exp(-A c^{{3/2})). " WHITE_NOTES " P_tail: the steady probability of c >= 3 (reduced "
         "speed) from the shells of the histogram (to c = {c_max:%g}), against the first "
@@ -943,7 +943,7 @@ const vfy_case_desc vfy_hard_tiny = {
         "Paper A Ex 3's heated Maxwell gas (grw-ex3), paper B Ex 2's Maxwell gas in a host "
         "medium (brs-ex2) and paper A Ex 5's heated hard spheres (grw-ex5), each at n = 2, 3, "
         "4 with 41 output times. z_T, z_T_raw: max |z| over the output times t > 0 of the "
-        "ensemble mean against the exact expectation of the n-particle estimator (SPEC §10); "
+        "ensemble mean against the exact expectation of the n-particle estimator (docs/theory.md §11.2); "
         "z_u: of u against paper B's exact u(t) = E u_n(t). z_V2: the bulk velocity of paper "
         "A's gases is exactly N(0, (T0 + 2 beta t)/n) per component (collisions conserve it, "
         "the heating adds independent Gaussian increments), whatever the kernel: (1/N) Σ_j "
@@ -1250,7 +1250,7 @@ const vfy_case_desc vfy_hard_extreme = {
         "restitution exactly 1 (k = 0: T = T0 + 2 beta t), rate gamma = 1e6 (t_end scaled to "
         "keep the events: T falls from 1 to 2 beta/k = 1.1e-5), T0 = 1e-8 and T0 = 1e8; z_T, "
         "z_T_raw: max |z| over the output times against the exact expectations of the "
-        "n-particle estimators (SPEC §10). Hard-sphere rows: paper A Ex 5's gas from T0 = "
+        "n-particle estimators (docs/theory.md §11.2). Hard-sphere rows: paper A Ex 5's gas from T0 = "
         "1e-8 and 1e8 on [0, 6]: T(t_end) against (1 - 1/n) times the first-Sonine closure "
         "(CVODE from the same T0), allowed T_end_ci + (0.002 + 2/n) T_end_ref; majorant "
         "violations 0. z_V2 (every row): the bulk velocity is exactly N(0, (T0 + 2 beta t)/n) "

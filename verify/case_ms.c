@@ -226,7 +226,7 @@ static const char a2_columns[] =
 
 #define A2_NOTES(CHECKS)                                                               \
     "{comment}; {sizes}.\n\nEach row is one steady state (time-step scheme; pairs accepted by " \
-    "|g|, equal in distribution to paper C's contact rule, SPEC §5; the thermostat "    \
+    "|g|, equal in distribution to paper C's contact rule, docs/theory.md §3.2; the thermostat "    \
     "applied lazily or as one global scaling). a2, a3 = time averages of the reduced cumulants; _ci = 3.2 x the standard " \
     "error over the N independent ensembles. Sonine estimates (paper C): C10, C32 white "  \
     "noise; C5, C40 Gaussian; C50, C76 non-Gaussian. mu2_ratio = (mu2 - mu2^(0))/mu2^(1), " \

@@ -468,7 +468,7 @@ const vfy_case_desc vfy_split_ex5 = {
              "Strang merges the half flights of adjacent "
              "steps (exact for white noise), so it costs what Euler costs. ns_per_collision = "
              "CPU time per accepted collision, everything included (the time-step rows accept "
-             "pairs by |g| as the jump scheme does, SPEC §5, and bring each particle a stage "
+             "pairs by |g| as the jump scheme does, docs/theory.md §8.5, and bring each particle a stage "
              "draws forward under the white noise, lazily; normals = standard normal variates "
              "drawn)." SPLIT_NOTES_COST};
 
@@ -488,6 +488,6 @@ const vfy_case_desc vfy_split_gaussian = {
              "candidates follow the rate as it grows, e^{zeta t}, exactly (docs/scenes.md). "
              "Strang merges the half flights of adjacent steps (scalings multiply), so it costs "
              "what Euler costs. ns_per_collision = CPU time per accepted collision, everything "
-             "included (pairs accepted by |g| in every row, SPEC §5; normals = the initial "
+             "included (pairs accepted by |g| in every row, docs/theory.md §8.5; normals = the initial "
              "states' standard normal variates, the same in every row, so the cost model has "
              "no flight term)." SPLIT_NOTES_COST};

@@ -96,15 +96,15 @@ static const vfy_case cases[] = {
     {"as-slab-vs-homogeneous", "as", "paper E Fig. 9: the slab from both initial states"
      " against the homogeneous run, IHS at alpha = 0.9, a tau0 = 4", 1,
      &vfy_as_slab_vs_homogeneous},
-    {"split-ex5", "split", "SPEC §10: splitting error of the time-step scheme vs the jump scheme,"
+    {"split-ex5", "split", "docs/theory.md §8.5: splitting error of the time-step scheme vs the jump scheme,"
      " Euler and Strang", 1, &vfy_split_ex5},
-    {"split-gaussian", "split", "SPEC §10: the same with the Gaussian thermostat, which the jump"
+    {"split-gaussian", "split", "docs/theory.md §8.5: the same with the Gaussian thermostat, which the jump"
      " scheme runs exactly: Euler and Strang converge to it", 1, &vfy_split_gaussian},
-    {"cost-grw-ex3", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
+    {"cost-grw-ex3", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU time over"
      " n x N, paper A Ex 3", 1, &vfy_cost_grw_ex3},
-    {"cost-brs-ex2", "cost", "SPEC §10: Err (systematic + statistical) against CPU time over"
+    {"cost-brs-ex2", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU time over"
      " n x N, paper B Ex 2", 1, &vfy_cost_brs_ex2},
-    {"cost-split-ex5", "cost", "SPEC §10: Err (systematic + splitting + statistical) against"
+    {"cost-split-ex5", "cost", "docs/theory.md §1.4: Err (systematic + splitting + statistical) against"
      " CPU time over n, N and h, paper A Ex 5", 1, &vfy_cost_split_ex5},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
      " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,

@@ -168,7 +168,7 @@ static const vfy_reference registry[] = {
     {"b2_elastic_exact", VFY_REF_VALUE, "b'_2 of the exact elastic solution", b2_elastic_at},
     {"b3_elastic_exact", VFY_REF_VALUE, "b'_3 of the exact elastic solution", b3_elastic_at},
     /* values of paper E's homogeneous shear scenes: the BGK model's steady state */
-    {"a_star_bgk", VFY_REF_VALUE, "paper E, BGK model: steady a* = a tau_eta (SPEC §7)",
+    {"a_star_bgk", VFY_REF_VALUE, "paper E, BGK model: steady a* = a tau_eta (docs/theory.md §15.2)",
      a_star_bgk_at},
     {"Pxy_reduced_bgk", VFY_REF_VALUE, "paper E, BGK model: steady -Pxy/p", Pxy_reduced_bgk_at},
     {"N1_bgk", VFY_REF_VALUE, "paper E, BGK model: steady (Pxx - Pyy)/p", N1_bgk_at},

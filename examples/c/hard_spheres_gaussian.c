@@ -1,6 +1,6 @@
 /* An independent solver behind gdsmc's solver protocol (docs/solver-protocol.md):
  * inelastic hard spheres with the Gaussian thermostat, by paper C's time-step
- * scheme (SPEC section 5), on gdsmc_protocol.h.
+ * scheme (docs/theory.md §8.5), on gdsmc_protocol.h.
  *
  *   hard_spheres_gaussian SCENE.ini RESULT.csv [--restitution-factor F]
  *                         [--declare-substitutions]
@@ -88,7 +88,7 @@ static void read_scene(gp_scene *s, params *p, gp_steady *st, double restitution
     gp_only_real(s, "collisions.exponent", 1.0);
     gp_only(s, "collisions.model", "ihs");
     if (strcmp(gp_only(s, "collisions.rule", "contact|relative-speed"), "contact") != 0)
-        gp_substitute(s, "collisions.rule");   /* equal in distribution (SPEC section 5) */
+        gp_substitute(s, "collisions.rule");   /* equal in distribution (docs/theory.md §3.2) */
     p->alpha = restitution_factor * gp_real(s, "collisions.restitution");
     p->rate_per_umax = 8.0 * M_PI * gp_real(s, "collisions.rate")
                        * gp_real(s, "collisions.constant") * gp_real(s, "collisions.beta")

@@ -48,7 +48,7 @@ import numpy as np
 
 PROTOCOL_VERSION = 1
 
-# The base observables of SPEC section 9, in the engine's column order.
+# The base observables of docs/theory.md §9.1, in the engine's column order.
 OBSERVABLES = ("T", "T_raw", "ux", "uy", "uz", "Pxx", "Pyy", "Pzz", "Pxy", "Pxz", "Pyz",
                "qx", "qy", "qz", "a2", "a3")
 

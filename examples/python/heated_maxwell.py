@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """An independent solver behind gdsmc's solver protocol (docs/solver-protocol.md).
 
-The exact jump process of paper A (SPEC section 3) for Maxwell pseudo-molecules
+The exact jump process of paper A (docs/theory.md §8.3) for Maxwell pseudo-molecules
 with white-noise heating, written from the paper with NumPy, all ensembles
 advanced together: a collision happens at total rate 2 pi gamma C (n - 1); it
 picks i, then j != i, both uniformly, brings the two to the collision time
 with their pending Brownian motion (variance 2 beta per unit time and
 component), and collides them with restitution alpha and e uniform on the
 sphere.  At each output time every particle is brought to it and the
-estimators of SPEC section 1 are formed: T (centred, weights 1/n), T_raw
+estimators of docs/theory.md §1.2 are formed: T (centred, weights 1/n), T_raw
 (uncentred) and the bulk velocity.
 
     python3 heated_maxwell.py SCENE.ini RESULT.csv [--halve-heating]
