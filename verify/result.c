@@ -53,6 +53,8 @@ int vfy_result_write(FILE *f, const char *solver, const sim_scene *scene,
         fputs("# steady\nname,mean,var\n", f);
         for (size_t k = 0; k < res->nsteady; k++) {
             char name[32];
+            if (!isfinite(res->steady_mean[k]))   /* not measured (mu2 without steady.pairs) */
+                continue;
             fprintf(f, "%s,%.17g,%.17g\n", sim_steady_name(scene, k, name, sizeof name),
                     res->steady_mean[k], sample_variance(res->steady_var[k], N));
         }

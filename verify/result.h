@@ -40,7 +40,8 @@ typedef struct vfy_result_info {
 
 /* Write res, a simulation by `solver` (free text, one line), as a
  * version 1 result file: every base observable at every output time, the
- * steady quantities when the scene has them, and the run's counts and CPU
+ * steady quantities the scene has and the run measured (a NaN, mu2 without
+ * steady.pairs, is left out), and the run's counts and CPU
  * seconds.  The engine's population variances become sample variances
  * (times N/(N - 1); 0 for N = 1).  Returns 0, or -1 when f reports an
  * error. */
