@@ -558,18 +558,18 @@ gdsmc_add_no_output_test(cli_solver_not_found 2
     ${SB}-not_found/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-not_found
     --solver "nosuch-solver {scene} {out}")
 gdsmc_add_no_output_test(cli_solver_exit_status 2
-    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 4 \\(--solver 'sh -c \"echo boom >&2 && exit 4\"'\\); the last lines of its output \\([^\n]*/\\.solver/[0-9a-f]+\\.err\\):\n    boom\n$"
+    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 4 \\(--solver 'sh -c \"echo boom >&2 && exit 4\" {scene} {out}'\\); the last lines of its output \\([^\n]*/\\.solver/[0-9a-f]+\\.err\\):\n    boom\n$"
     ${SB}-exit_status/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-exit_status
-    --solver "sh -c \"echo boom >&2 && exit 4\"")
+    --solver "sh -c \"echo boom >&2 && exit 4\" {scene} {out}")
 # Exit status 3 is a refusal only with its reason on standard error.
 gdsmc_add_no_output_test(cli_solver_refusal_without_reason 2
-    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 3, a refusal, but gave no reason as the last line of its standard error [^\n]*/\\.solver/[0-9a-f]+\\.err \\(--solver 'sh -c \"echo out && exit 3\"'\\)\n$"
+    "^gdsmc verify: grw-ex4 n=64: the solver exited with status 3, a refusal, but gave no reason as the last line of its standard error [^\n]*/\\.solver/[0-9a-f]+\\.err \\(--solver 'sh -c \"echo out && exit 3\" {scene} {out}'\\)\n$"
     ${SB}-refusal_without_reason/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet
-    --out ${SB}-refusal_without_reason --solver "sh -c \"echo out && exit 3\"")
+    --out ${SB}-refusal_without_reason --solver "sh -c \"echo out && exit 3\" {scene} {out}")
 gdsmc_add_no_output_test(cli_solver_timeout 2
-    "^gdsmc verify: grw-ex4 n=64: the solver took more than 0.5 s \\(--solver-timeout\\) and was killed \\(--solver 'sleep 30'\\)\n$"
+    "^gdsmc verify: grw-ex4 n=64: the solver took more than 0.5 s \\(--solver-timeout\\) and was killed \\(--solver 'sh -c \"sleep 30\" {scene} {out}'\\)\n$"
     ${SB}-timeout/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-timeout
-    --solver "sleep 30" --solver-timeout 0.5)
+    --solver "sh -c \"sleep 30\" {scene} {out}" --solver-timeout 0.5)
 gdsmc_add_no_output_test(cli_solver_no_result 2
     "^gdsmc verify: grw-ex4 n=64: the solver exited with status 0 but wrote no result [^\n]*/\\.solver/[0-9a-f]+\\.result \\(--solver 'true {scene} {out}'\\)\n$"
     ${SB}-no_result/grw-ex4.csv ARGS verify --suite quick --case grw-ex4 --quiet --out ${SB}-no_result
@@ -580,10 +580,19 @@ gdsmc_add_no_output_test(cli_solver_bad_result 2
     --solver "cp {scene} {out}")
 gdsmc_add_cli_exact(cli_x_verify_solver_timeout_bad 2
                     "gdsmc verify: --solver-timeout 'soon': allowed 0 < S <= 1e6 seconds (see gdsmc verify --help)"
-                    verify --case grw-ex4 --solver "true" --solver-timeout soon)
+                    verify --case grw-ex4 --solver "true {scene} {out}" --solver-timeout soon)
 gdsmc_add_cli_exact(cli_x_verify_solver_quote 2
                     "gdsmc verify: --solver 'sh -c 'echo': an unterminated single quote (see gdsmc verify --help)"
                     verify --case grw-ex4 --solver "sh -c 'echo")
+gdsmc_add_cli_exact(cli_x_verify_solver_no_out 2
+                    "gdsmc verify: --solver 'true {scene}': no {out}: the command must name where the result goes ({out}) (see gdsmc verify --help)"
+                    verify --case grw-ex4 --solver "true {scene}")
+gdsmc_add_cli_exact(cli_x_verify_solver_no_scene 2
+                    "gdsmc verify: --solver 'true {out}': no {scene}: the command must name where the scene file is ({scene}) (see gdsmc verify --help)"
+                    verify --case grw-ex4 --solver "true {out}")
+gdsmc_add_cli_exact(cli_x_verify_solver_unterminated 2
+                    "gdsmc verify: --solver 'true {scene} {out': an unterminated placeholder '{out' (write {out}) (see gdsmc verify --help)"
+                    verify --case grw-ex4 --solver "true {scene} {out")
 
 # A refusal is an answer (docs/solver-protocol.md): the whole quick suite
 # through a solver that refuses every scene runs to the end, every check that
@@ -595,7 +604,7 @@ add_test(NAME cli_solver_refuses_everything
                  -DOUT=${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all
                  -DREPORTS=${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all-reports
                  "-DSUMMARY=verify: [0-9]+ passed, 0 failed, [1-9][0-9]* skipped, [1-9][0-9]* rows refused by the solver"
-                 "-DARGS=--suite;quick;--out;${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all-reports;--solver;sh -c \"echo 'nothing here is implemented' >&2 && exit 3\""
+                 "-DARGS=--suite;quick;--out;${CMAKE_CURRENT_BINARY_DIR}/solver-refuses-all-reports;--solver;sh -c \"echo 'nothing here is implemented' >&2 && exit 3\" {scene} {out}"
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/run_junit.cmake)
 set_tests_properties(cli_solver_refuses_everything PROPERTIES TIMEOUT 300 LABELS regression
                      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})

@@ -106,10 +106,42 @@ uint64_t vfy_solver_identity(const char *command)
     return h;
 }
 
+/* Whether some word holds the placeholder ph ("{scene}"); -1 when a word
+ * holds its start without the closing brace ("{out" or "{out/x"). */
+static int has_placeholder(char *const *words, int n, const char *ph)
+{
+    int found = 0;
+    const size_t stem = strlen(ph) - 1;   /* without the '}' */
+    for (int k = 0; k < n; k++)
+        found |= strstr(words[k], ph) != NULL;
+    for (int k = 0; k < n; k++)
+        for (const char *p = words[k]; (p = strstr(p, "{")) != NULL; p++)
+            if (strncmp(p, ph, stem) == 0 && p[stem] != '}')
+                return -1;
+    return found;
+}
+
 int vfy_solver_command_ok(const char *command, char *msg, size_t msglen)
 {
     char *words[MAX_WORDS], buf[SPLIT_BYTES];
-    return vfy_solver_split(command, words, MAX_WORDS, buf, sizeof buf, msg, msglen) > 0;
+    const int n = vfy_solver_split(command, words, MAX_WORDS, buf, sizeof buf, msg, msglen);
+    if (n <= 0)
+        return 0;
+    static const char *const placeholders[] = {"{scene}", "{out}"};
+    for (size_t i = 0; i < 2; i++) {
+        const int has = has_placeholder(words, n, placeholders[i]);
+        if (has < 0) {
+            snprintf(msg, msglen, "an unterminated placeholder '%.*s' (write %s)",
+                     (int)strlen(placeholders[i]) - 1, placeholders[i], placeholders[i]);
+            return 0;
+        }
+        if (has == 0) {
+            snprintf(msg, msglen, "no %s: the command must name where %s", placeholders[i],
+                     i == 0 ? "the scene file is ({scene})" : "the result goes ({out})");
+            return 0;
+        }
+    }
+    return 1;
 }
 
 /* word with every {scene} and {out} replaced, in dst; -1 if it does not fit. */

@@ -40,8 +40,10 @@ typedef struct vfy_solver {
 int vfy_solver_split(const char *command, char **words, size_t max, char *buf, size_t bufsize,
                      char *msg, size_t msglen);
 
-/* Whether command splits into words within the limits vfy_solver_run uses;
- * if not, msg says why (before any work: the command line checks it). */
+/* Whether command splits into words within the limits vfy_solver_run uses
+ * and names both {scene} and {out}, each placeholder whole ("{out" is
+ * refused); if not, msg says why (before any work: the command line checks
+ * it). */
 int vfy_solver_command_ok(const char *command, char *msg, size_t msglen);
 
 /* The solver's identity for checkpoints: a hash of the command and of the
