@@ -618,6 +618,16 @@ gdsmc_add_cli_test(cli_solver_refuses_some 0
     --solver "sh tests/solvers/refuse_white_noise.sh $<TARGET_FILE:gdsmc> {scene} {out}")
 set_tests_properties(cli_solver_refuses_some PROPERTIES TIMEOUT 600 LABELS regression)
 
+# --dry-run: each row's scene as the solver would get it, and what the checks
+# read; nothing simulated, no report; not with what needs a simulation.
+gdsmc_add_cli_test(cli_verify_dry_run 0
+    "== grw-ex3 \\(quick sizes\\): 3 rows, the scenes in [^\n]*/dry-run/grw-ex3/\n   row 1: grw-ex3 n=64 -> [^\n]*/dry-run/grw-ex3/row-01\\.ini\n.*\n       value         T                      reported: an observable, at every output time\n       against       T_finite_n             a reference\n   the checks read directly: T_raw T \\("
+    verify --dry-run --suite quick --case grw-ex3 --out ${CMAKE_CURRENT_BINARY_DIR}/dry-run)
+set_tests_properties(cli_verify_dry_run PROPERTIES LABELS unit TIMEOUT 60)
+gdsmc_add_cli_exact(cli_x_verify_dry_run_resume 2
+                    "gdsmc verify: --dry-run simulates nothing: not with --seeds, --power, --must-fail, --resume or --junit (see gdsmc verify --help)"
+                    verify --dry-run --case grw-ex3 --resume)
+
 # An independent solver in another language (examples/python, NumPy): paper
 # A's Examples 3 and 4 at quick sizes pass through the solver protocol, and
 # the same program with a deliberate error (the heating halved) fails the

@@ -58,6 +58,9 @@ typedef struct vfy_options {
     size_t nperturbs;
     uint64_t seed_run;                 /* 0: every scene's own seed; k > 0: the seed
                                           vfy_derived_seed(seed, k) (--seeds) */
+    FILE *dry_run;                     /* if not NULL (--dry-run): no simulation; each
+                                          row's scene is written under out_dir/CASE/ and
+                                          what each check reads is listed here */
 } vfy_options;
 
 typedef struct vfy_case vfy_case;
@@ -91,7 +94,8 @@ int vfy_case_selected(const vfy_case *c, const char *suite, const char *case_nam
 /* Run every case of the suite, or only the cases named in case_name, a
  * comma-separated list (in suite order, at the suite's sizes; the default
  * suite for named cases is "paper").  Stops at the first case that
- * cannot run (returns its error).  Reports go to o->out_dir. */
+ * cannot run (returns its error).  Reports go to o->out_dir; with
+ * o->dry_run, the scenes and the listing, and r may be NULL. */
 sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
                    vfy_report *r, char *msg, size_t msglen);
 

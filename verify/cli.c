@@ -97,7 +97,7 @@ static const char usage_verify[] =
     "                    [--out DIR] [--scenes DIR] [--set S.K=V]... [--solver-set S.K=V]...\n"
     "                    [--solver 'COMMAND {scene} {out}'] [--solver-timeout S]\n"
     "                    [--junit FILE.xml] [--resume] [--list] [--perturb S.K=FACTOR]...\n"
-    "                    [--seeds K | --must-fail | --power]\n"
+    "                    [--seeds K | --must-fail | --power | --dry-run]\n"
     "\n"
     "Run solver against reference and write DIR/<case>.csv, DIR/<case>.md,\n"
     "DIR/<case>-curves.csv, a gnuplot figure DIR/<case>.png (when gnuplot is\n"
@@ -130,7 +130,9 @@ static const char usage_verify[] =
     "               runs COMMAND with {scene} and {out} replaced by the scene's and\n"
     "               the result's paths (no shell), and reads the result file\n"
     "               (docs/solver-protocol.md); a check on a quantity the solver\n"
-    "               does not report is a SKIP\n"
+    "               does not report is a SKIP; a scene it refuses (exit status 3,\n"
+    "               the reason as the last line of its standard error) makes\n"
+    "               that row's checks SKIPs, and the run goes on\n"
     "  --solver-timeout S  seconds one solver run may take (default 3600); then\n"
     "               it is killed and the case stops with an error\n"
     "  --junit FILE also write the verdicts as JUnit XML (a testsuite per case, a\n"
@@ -149,15 +151,13 @@ static const char usage_verify[] =
     "  --must-fail  each case under each error it declares it must catch:\n"
     "               CAUGHT or MISSED, exit 1 when one is missed\n"
     "  --power      the smallest error each case detects: DIR/power.md\n"
+    "  --dry-run    simulate nothing: write each row's scene as the solver would\n"
+    "               get it to DIR/CASE/row-NN.ini (DIR: --out, else\n"
+    "               reports/dry-run) and list what each check reads\n"
     "\n"
-    "Nothing is lost: every finished simulation is saved at once in\n"
-    "DIR/.checkpoint, and each case's CSV table is rewritten after each finished\n"
-    "row (files are written to FILE.tmp and renamed). Nothing runs twice: a row\n"
-    "that needs a simulation an earlier row of the same run finished (the same\n"
-    "scene, seed and sizes, e.g. ms-table1's rows in ms-a2-*) takes it from its\n"
-    "checkpoint, as --resume would, recorded times included. SIGINT or SIGTERM stops\n"
-    "the run after the ensemble in progress, with exit status 130; another\n"
-    "signal a second or more later stops it at once.\n";
+    "Every finished simulation is saved at once in DIR/.checkpoint, and one a\n"
+    "later row needs again is taken from there. SIGINT or SIGTERM stops the run\n"
+    "after the ensemble in progress, with exit status 130 (docs/running.md).\n";
 
 static const char usage_bench[] =
     "usage: gdsmc bench [--out FILE.csv] [--md FILE.md] [--max-n N] [--seconds S]\n"
@@ -244,7 +244,7 @@ typedef struct args {
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS], *perturbs[MAX_SETS];
     size_t nsets, nsolver_sets, nperturbs;
     const char *seeds;                       /* verify: --seeds K */
-    int quiet, list, resume, power, must_fail;
+    int quiet, list, resume, power, must_fail, dry_run;
 } args;
 
 /* Every option of every command: the commands that take it (words) and
@@ -275,6 +275,7 @@ static const option_spec options[] = {
     {"--seeds", "verify", OPT_VALUE, offsetof(args, seeds)},
     {"--power", "verify", OPT_FLAG, offsetof(args, power)},
     {"--must-fail", "verify", OPT_FLAG, offsetof(args, must_fail)},
+    {"--dry-run", "verify", OPT_FLAG, offsetof(args, dry_run)},
     {"--alpha", "sonine", OPT_VALUE, offsetof(args, alpha)},
     {"--d", "sonine", OPT_VALUE, offsetof(args, d)},
     {"--md", "bench", OPT_VALUE, offsetof(args, md)},
@@ -810,6 +811,9 @@ static int cmd_verify(int argc, char **argv)
     }
     if ((seeds > 0) + a.power + a.must_fail > 1)
         return bad_usage("verify", "%s", "--seeds, --power and --must-fail: one at a time");
+    if (a.dry_run && (seeds > 0 || a.power || a.must_fail || a.resume || a.junit))
+        return bad_usage("verify", "%s", "--dry-run simulates nothing: not with --seeds, "
+                         "--power, --must-fail, --resume or --junit");
     if ((seeds > 0 || a.power || a.must_fail) && (a.nperturbs > 0 || a.solver != NULL))
         return bad_usage("verify", "%s", "--seeds, --power and --must-fail measure the "
                          "built-in engine: not with --perturb or --solver");
@@ -863,6 +867,20 @@ static int cmd_verify(int argc, char **argv)
         return rc;
     if (seeds > 0 || a.power || a.must_fail)
         return verify_gate(&a, &o, seeds);
+    if (a.dry_run) {   /* the scenes and what the checks read, under OUT/dry-run */
+        char dry[1100];
+        snprintf(dry, sizeof dry, "%s/dry-run", o.out_dir);
+        o.out_dir = a.out ? a.out : dry;
+        o.dry_run = stdout;
+        char msg[1024] = "";
+        const sim_status status = vfy_run(a.suite, a.case_name, &o, NULL, msg, sizeof msg);
+        vfy_finished_free(&finished);
+        if (status != SIM_OK) {
+            fprintf(stderr, "gdsmc verify: %s\n", msg);
+            return EXIT_BAD_INPUT;
+        }
+        return EXIT_OK;
+    }
     vfy_report report;
     vfy_report_init(&report, stdout);
     char msg[1024] = "";

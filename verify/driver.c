@@ -1,6 +1,7 @@
 #include "driver.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1294,9 +1295,183 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     return status;
 }
 
+/* ------------------------------------------------------------ dry run */
+
+/* What a check operand `name` is, for the row's solver scene: a quantity
+ * the result file reports, or what the case makes from it (--dry-run). */
+static const char *operand_kind(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    const vfy_case_desc *d = run->d;
+    const size_t len = strcspn(name, "@");
+    char base[64];
+    snprintf(base, sizeof base, "%.*s", (int)(len < sizeof base ? len : sizeof base - 1), name);
+    if (sim_observable_find(&row->solver, base, strlen(base)) >= 0)
+        return "reported: an observable, at every output time";
+    if (sim_steady_find(&row->solver, base) >= 0)
+        return "reported: a steady quantity";
+    const size_t blen = strlen(base);
+    if (blen > 3 && strcmp(base + blen - 3, "_ci") == 0) {
+        base[blen - 3] = '\0';
+        if (sim_steady_find(&row->solver, base) >= 0)
+            return "reported: a steady quantity's variance (its half-width)";
+        base[blen - 3] = '_';
+    }
+    if (strcmp(base, "violations") == 0 || strcmp(base, "events") == 0)
+        return "reported: a count (optional)";
+    static const char *const engine_counts[] = {"collisions", "background", "normals"};
+    for (size_t k = 0; k < sizeof engine_counts / sizeof *engine_counts; k++)
+        if (strcmp(base, engine_counts[k]) == 0)
+            return "the built-in engine's count (not in the protocol: SKIP)";
+    static const char *const cost[] = {"N", "M", "cpu_s", "wall_s", "ns_per_event", "n",
+                                       "index"};
+    for (size_t k = 0; k < sizeof cost / sizeof *cost; k++)
+        if (strcmp(base, cost[k]) == 0)
+            return "the run's size or cost";
+    for (const vfy_paper_column *p = d->paper_columns; p && p->name; p++)
+        if (strcmp(p->name, base) == 0)
+            return "a paper's printed number";
+    for (const char *const *v = d->values; v && *v; v++)
+        if (strcmp(*v, base) == 0)
+            return "a reference value";
+    if (vfy_reference_find(base) != NULL)
+        return "a reference";
+    for (const vfy_metric *m = d->metrics; m && m->name; m++)
+        if (strcmp(m->name, base) == 0)
+            return "made by the case from the result";
+    return "made by the case from the result";
+}
+
+/* Add name (without "@VARIANT") to the list `reported` (" a b ", cap
+ * bytes) once, when the result file reports it. */
+static void note_reported(const vfy_case_run *run, const vfy_row *row, const char *name,
+                          char *reported, size_t cap)
+{
+    char word[72];
+    snprintf(word, sizeof word, " %.*s ", (int)strcspn(name, "@"), name);
+    const size_t used = strlen(reported);
+    if (strncmp(operand_kind(run, row, name), "reported", 8) != 0
+        || strstr(reported, word) != NULL || used + strlen(word) >= cap)
+        return;
+    snprintf(reported + used, cap - used, "%s", word + (used > 0));   /* one space between */
+}
+
+/* One check's operands and what each is; the reported ones noted. */
+static void dry_check(FILE *out, const vfy_case_run *run, const vfy_row *row,
+                      const vfy_check_spec *c, char *reported, size_t cap)
+{
+    fprintf(out, "     %s\n", c->name);
+    const char *const ops[] = {c->value, c->expected, c->plus, c->plus_quick};
+    static const char *const role[] = {"value", "against", "plus", "plus (quick)"};
+    for (size_t k = 0; k < sizeof ops / sizeof *ops; k++)
+        if (ops[k] != NULL) {
+            fprintf(out, "       %-13s %-22s %s\n", role[k], ops[k],
+                    operand_kind(run, row, ops[k]));
+            note_reported(run, row, ops[k], reported, cap);
+        }
+    for (const vfy_metric *m = run->d->metrics; m && m->name; m++) {
+        if (c->value == NULL || strcmp(m->name, c->value) != 0)
+            continue;
+        const char *const from[] = {m->a, m->b};   /* a metric's named operands */
+        for (size_t k = 0; k < 2; k++)
+            if (from[k] != NULL) {
+                fprintf(out, "       %-13s %-22s %s\n", "  made from", from[k],
+                        operand_kind(run, row, from[k]));
+                note_reported(run, row, from[k], reported, cap);
+            }
+    }
+}
+
+/* --dry-run: each row's scene (and each variant's) as the solver would get
+ * it, written to OUT/CASE/row-NN[@VARIANT].ini, and what each check reads;
+ * no simulation. */
+static sim_status dry_run_case(const vfy_case *c, const vfy_options *o, char *msg,
+                               size_t msglen)
+{
+    const vfy_case_desc *d = c->desc;
+    const vfy_sweep *s = o->size == VFY_PAPER ? &d->paper_rows : &d->quick_rows;
+    const size_t rows = vfy_sweep_rows(s);
+    vfy_case_run run = {.c = c, .d = d, .o = o};
+    vfy_row *row = calloc(1, sizeof *row);
+    char dir[1100], path[1200], label[160];
+    snprintf(dir, sizeof dir, "%s/%s", o->out_dir, c->name);
+    if (row == NULL || vfy_ensure_dir(dir) != 0) {
+        free(row);
+        snprintf(msg, msglen, "%s: cannot create: %s", dir, strerror(errno));
+        return SIM_EIO;
+    }
+    FILE *out = o->dry_run;
+    size_t nvariants = 0;
+    while (d->variants && d->variants[nvariants])
+        nvariants++;
+    fprintf(out, "== %s (%s sizes): %zu rows%s, the scenes in %s/\n", c->name,
+            o->size == VFY_QUICK ? "quick" : "paper", rows,
+            d->no_simulation ? " (references only: nothing to simulate)" : "", dir);
+    sim_status status = SIM_OK;
+    run.rows = row;
+    for (size_t i = 0; i < rows && status == SIM_OK && !d->no_simulation; i++) {
+        *row = (vfy_row){.index = i, .run = &run};
+        run.nrows = 1;
+        for (size_t k = 0; k < (nvariants ? nvariants : 1) && status == SIM_OK; k++) {
+            char variant[64] = "";
+            const char *colon = NULL;
+            if (nvariants > 0) {
+                snprintf(variant, sizeof variant, "%.*s", (int)strcspn(d->variants[k], ":"),
+                         d->variants[k]);
+                colon = strchr(d->variants[k], ':');
+            }
+            if ((status = row_scenes(&run, s, row, colon ? colon + 1 : NULL, msg, msglen))
+                != SIM_OK)
+                break;
+            vfy_values_set(&row->values, "index", (double)i);
+            vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
+            snprintf(path, sizeof path, "%s/row-%02zu%s%s.ini", dir, i + 1, variant[0] ? "@" : "",
+                     variant);
+            FILE *f = fopen(path, "w");
+            const int written = f != NULL && vfy_scene_write(f, &row->solver) == 0;
+            if (f == NULL || fclose(f) != 0 || !written) {
+                snprintf(msg, msglen, "%s: cannot write: %s", path, strerror(errno));
+                status = SIM_EIO;
+                break;
+            }
+            fprintf(out, "   row %zu%s%s: %s -> %s\n", i + 1, variant[0] ? " variant " : "",
+                    variant, vfy_expand(label, sizeof label, row_label_template(d), &run, row),
+                    path);
+        }
+        if (status == SIM_OK && i + 1 < rows)
+            vfy_values_free(&row->values);
+    }
+    char reported[1024] = "";
+    if (status == SIM_OK && d->checks && d->checks->name) {
+        fprintf(out, "   checks of every row (their operands, for the last row's scene):\n");
+        for (const vfy_check_spec *k = d->checks; k->name; k++)
+            dry_check(out, &run, row, k, reported, sizeof reported);
+    }
+    if (status == SIM_OK && d->case_checks && d->case_checks->name) {
+        fprintf(out, "   checks of the case (over its rows):\n");
+        for (const vfy_check_spec *k = d->case_checks; k->name; k++)
+            dry_check(out, &run, row, k, reported, sizeof reported);
+    }
+    if (status == SIM_OK && d->after_rows)
+        fprintf(out, "   and the case's own analysis after the rows (its checks read what the "
+                "rows' results report)\n");
+    const size_t rlen = strlen(reported);
+    if (rlen > 0 && reported[rlen - 1] == ' ')
+        reported[rlen - 1] = '\0';
+    if (status == SIM_OK && !d->no_simulation)
+        fprintf(out, "   the checks read directly: %s (a check whose quantity is not "
+                "reported is a SKIP; what the case makes itself comes from the observables "
+                "and steady quantities of docs/solver-protocol.md)\n",
+                reported[0] ? reported + 1 : "nothing the result reports by name");
+    vfy_values_free(&row->values);
+    free(row);
+    return status;
+}
+
 sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,
                              size_t msglen)
 {
+    if (o->dry_run != NULL)
+        return dry_run_case(c, o, msg, msglen);
     const vfy_case_desc *d = c->desc;
     const vfy_sweep *s = o->size == VFY_PAPER ? &d->paper_rows : &d->quick_rows;
     vfy_case_run run = {.c = c, .d = d, .o = o};
