@@ -628,6 +628,21 @@ gdsmc_add_cli_exact(cli_x_verify_dry_run_resume 2
                     "gdsmc verify: --dry-run simulates nothing: not with --seeds, --power, --must-fail, --resume or --junit (see gdsmc verify --help)"
                     verify --dry-run --case grw-ex3 --resume)
 
+# gdsmc check-result SCENE RESULT: a valid result (the engine's own) is
+# described, a malformed one refused with its file and line, exit 2.
+add_test(NAME cli_check_result_valid
+         COMMAND sh -c "\"$0\" run \"$1\" --set particles.n=8 --set particles.ensembles=4 --result check-result.txt --quiet && \"$0\" check-result \"$1\" check-result.txt --set particles.n=8 --set particles.ensembles=4"
+                 $<TARGET_FILE:gdsmc> ${PROJECT_SOURCE_DIR}/${S}/grw-ex3.ini
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(cli_check_result_valid PROPERTIES LABELS unit TIMEOUT 60
+    PASS_REGULAR_EXPRESSION "^check-result\\.txt: a valid version 1 result for [^\n]*grw-ex3\\.ini: 81 output times, 4 ensembles of 8 particles, 11 of 16 observables, 0 of 0 steady quantities, events, violations\nnot reported \\(checks on them are SKIPs\\): qx qy qz a2 a3\n$")
+gdsmc_add_cli_test(cli_check_result_malformed 2
+    "^gdsmc check-result: [^\n]*grw-ex3\\.ini:1: the first line must be '# gdsmc-result 1' \\(the protocol version\\), got '; Paper A, Example 3[^\n]*'\n$"
+    check-result ${S}/grw-ex3.ini ${S}/grw-ex3.ini)
+gdsmc_add_cli_exact(cli_x_check_result_no_result 2
+                    "gdsmc check-result: missing RESULT file (see gdsmc check-result --help)"
+                    check-result ${S}/grw-ex3.ini)
+
 # An independent solver in another language (examples/python, NumPy): paper
 # A's Examples 3 and 4 at quick sizes pass through the solver protocol, and
 # the same program with a deliberate error (the heating halved) fails the

@@ -43,6 +43,7 @@ static const char usage_main[] =
     "  sonine           Sonine-approximation values of papers C and D (a2, mu2, mu4, tails;\n"
     "                   kappa', kappa, mu, the exact elastic conductivity), CSV\n"
     "  bench            throughput of the engine against a bare floor loop, one core\n"
+    "  check-result SCENE RESULT  validate a solver's result file against its scene\n"
     "\n"
     "  gdsmc COMMAND --help   options of a command\n"
     "  gdsmc --version\n"
@@ -244,6 +245,7 @@ typedef struct args {
     const char *sets[MAX_SETS], *solver_sets[MAX_SETS], *perturbs[MAX_SETS];
     size_t nsets, nsolver_sets, nperturbs;
     const char *seeds;                       /* verify: --seeds K */
+    const char *checked;                     /* check-result: the RESULT file */
     int quiet, list, resume, power, must_fail, dry_run;
 } args;
 
@@ -258,7 +260,7 @@ typedef struct option_spec {
 
 static const option_spec options[] = {
     {"--out", "run reference verify sonine bench", OPT_VALUE, offsetof(args, out)},
-    {"--set", "run reference verify", OPT_SET, 0},
+    {"--set", "run reference verify check-result", OPT_SET, 0},
     {"--result", "run", OPT_VALUE, offsetof(args, result)},
     {"--steady", "run", OPT_VALUE, offsetof(args, steady)},
     {"--quiet", "run reference verify", OPT_FLAG, offsetof(args, quiet)},
@@ -343,8 +345,8 @@ static const option_spec *find_option(const char *cmd, const char *s)
 }
 
 /* Parse the options of a command (the table above); positional SCENE if
- * wants_scene.  Returns -1 when parsing succeeded, else the exit code
- * (help: 0). */
+ * wants_scene, and RESULT after it if wants_scene is 2.  Returns -1 when
+ * parsing succeeded, else the exit code (help: 0). */
 static int parse_args(const char *cmd, const char *usage, int wants_scene, int argc, char **argv,
                       args *a)
 {
@@ -360,6 +362,10 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
             return bad_usage(cmd, "unknown option '%s'", s);
         if (opt == NULL && wants_scene && a->scene == NULL) {
             a->scene = s;
+            continue;
+        }
+        if (opt == NULL && wants_scene > 1 && a->checked == NULL) {   /* check-result */
+            a->checked = s;
             continue;
         }
         if (opt == NULL)
@@ -387,6 +393,8 @@ static int parse_args(const char *cmd, const char *usage, int wants_scene, int a
     }
     if (wants_scene && a->scene == NULL && !a->list)
         return bad_usage(cmd, "%s", "missing SCENE file");
+    if (wants_scene > 1 && a->checked == NULL)
+        return bad_usage(cmd, "%s", "missing RESULT file");
     return -1;
 }
 
@@ -571,6 +579,56 @@ static int cmd_run(int argc, char **argv)
     print_summary(&a, &res);
     sim_ensemble_result_free(&res);
     return rc;
+}
+
+static const char usage_check_result[] =
+    "usage: gdsmc check-result SCENE RESULT [--set SECTION.KEY=VALUE]...\n"
+    "\n"
+    "Validate a solver's result file against the scene it was made for, as gdsmc\n"
+    "verify reads it (docs/solver-protocol.md), without judging it: the version\n"
+    "line, n and ensembles, the column header, one row per output time at the\n"
+    "scene's times, finite numbers and variances, the steady section. Prints what\n"
+    "the result reports and what it leaves out (their checks would be SKIPs).\n"
+    "\n"
+    "exit status: 0 a valid result, 2 not (the message names the file, line and\n"
+    "column, and what to fix).\n";
+
+/* gdsmc check-result SCENE RESULT: vfy_result_read, and a summary. */
+static int cmd_check_result(int argc, char **argv)
+{
+    args a;
+    int rc = parse_args("check-result", usage_check_result, 2, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    sim_scene scene;
+    if ((rc = load_scene("check-result", &a, &scene)) != EXIT_OK)
+        return rc;
+    sim_ensemble_result res;
+    vfy_result_info info;
+    char msg[1024];
+    if (vfy_result_read(a.checked, &scene, &res, &info, msg, sizeof msg) != SIM_OK) {
+        fprintf(stderr, "gdsmc check-result: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    char missing[2048] = "";
+    size_t nmissing = 0, used = 0;
+    for (size_t k = 0; k < res.observables; k++)
+        if (!info.reported[k] && used < sizeof missing) {
+            char name[SIM_OBS_NAME_LEN];
+            used += (size_t)snprintf(missing + used, sizeof missing - used, " %s",
+                                     sim_observable_name(&scene, k, name));
+            nmissing++;
+        }
+    printf("%s: a valid version %d result for %s: %zu output times, %zu ensembles of %zu "
+           "particles, %zu of %zu observables, %zu of %zu steady quantities%s%s%s\n",
+           a.checked, VFY_RESULT_VERSION, scene.file, res.outputs, res.ensembles, res.n,
+           res.observables - nmissing, res.observables, info.steady_reported, res.nsteady,
+           info.has_events ? ", events" : "", info.has_violations ? ", violations" : "",
+           info.solver[0] ? "" : " (no '# solver =' line)");
+    if (nmissing > 0)
+        printf("not reported (checks on them are SKIPs):%s\n", missing);
+    sim_ensemble_result_free(&res);
+    return EXIT_OK;
 }
 
 static int cmd_reference(int argc, char **argv)
@@ -942,7 +1000,9 @@ int gdsmc_main(int argc, char **argv)
         return cmd_sonine(argc - 2, argv + 2);
     if (strcmp(argv[1], "bench") == 0)
         return cmd_bench(argc - 2, argv + 2);
+    if (strcmp(argv[1], "check-result") == 0)
+        return cmd_check_result(argc - 2, argv + 2);
     fprintf(stderr, "gdsmc: unknown command '%s' (allowed run, reference, verify, sonine, "
-            "bench; see gdsmc --help)\n", argv[1]);
+            "bench, check-result; see gdsmc --help)\n", argv[1]);
     return EXIT_BAD_INPUT;
 }
