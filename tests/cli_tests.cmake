@@ -639,6 +639,13 @@ set_tests_properties(cli_check_result_valid PROPERTIES LABELS unit TIMEOUT 60
 gdsmc_add_cli_test(cli_check_result_malformed 2
     "^gdsmc check-result: [^\n]*grw-ex3\\.ini:1: the first line must be '# gdsmc-result 1' \\(the protocol version\\), got '; Paper A, Example 3[^\n]*'\n$"
     check-result ${S}/grw-ex3.ini ${S}/grw-ex3.ini)
+# '# substituted =' names algorithm keys only (docs/scenes.md)
+add_test(NAME cli_check_result_substituted
+         COMMAND sh -c "\"$0\" run \"$1\" --set particles.n=8 --set particles.ensembles=4 --result substituted.txt --quiet && sed -i '2a # substituted = scene.scheme, collisions.rule' substituted.txt && \"$0\" check-result \"$1\" substituted.txt --set particles.n=8 --set particles.ensembles=4 && sed -i 's/^# substituted = .*/# substituted = collisions.restitution/' substituted.txt && \"$0\" check-result \"$1\" substituted.txt --set particles.n=8 --set particles.ensembles=4"
+                 $<TARGET_FILE:gdsmc> ${PROJECT_SOURCE_DIR}/${S}/grw-ex3.ini
+         WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(cli_check_result_substituted PROPERTIES LABELS unit TIMEOUT 60 WILL_FAIL 0
+    PASS_REGULAR_EXPRESSION "violations; substituted scene\\.scheme, collisions\\.rule\n.*gdsmc check-result: substituted\\.txt:3: substituted = 'collisions\\.restitution': collisions\\.restitution is a physics key: a solver must honour it or refuse the scene \\(docs/scenes\\.md\\)\n")
 gdsmc_add_cli_exact(cli_x_check_result_no_result 2
                     "gdsmc check-result: missing RESULT file (see gdsmc check-result --help)"
                     check-result ${S}/grw-ex3.ini)

@@ -512,7 +512,8 @@ static sim_status simulate_external(const sim_scene *scene, const vfy_options *o
                    | SIM_MISSING_COLLISIONS;   /* the protocol does not carry them */
     snprintf(checkpoint_label, cap, "%s (solver: %s)", label,   /* which solver made it */
              info.solver[0] ? info.solver : "no solver line");
-    snprintf(o->solver->line, sizeof o->solver->line, "%s", info.solver);
+    snprintf(o->solver->line, sizeof o->solver->line, "%s%s%s", info.solver,
+             info.substituted[0] ? "; substituted " : "", info.substituted);
     return SIM_OK;
 }
 

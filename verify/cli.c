@@ -620,10 +620,11 @@ static int cmd_check_result(int argc, char **argv)
             nmissing++;
         }
     printf("%s: a valid version %d result for %s: %zu output times, %zu ensembles of %zu "
-           "particles, %zu of %zu observables, %zu of %zu steady quantities%s%s%s\n",
+           "particles, %zu of %zu observables, %zu of %zu steady quantities%s%s%s%s%s\n",
            a.checked, VFY_RESULT_VERSION, scene.file, res.outputs, res.ensembles, res.n,
            res.observables - nmissing, res.observables, info.steady_reported, res.nsteady,
            info.has_events ? ", events" : "", info.has_violations ? ", violations" : "",
+           info.substituted[0] ? "; substituted " : "", info.substituted,
            info.solver[0] ? "" : " (no '# solver =' line)");
     if (nmissing > 0)
         printf("not reported (checks on them are SKIPs):%s\n", missing);

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "observe.h"
+#include "scene_ini.h"
 #include "steady.h"
 
 /* The engine's population variance over N ensembles as the protocol's
@@ -181,6 +182,24 @@ static sim_status header_lines(reader *r, const sim_scene *scene, sim_ensemble_r
         value[vlen] = '\0';
         if (strcmp(key, "solver") == 0) {
             snprintf(info->solver, sizeof info->solver, "%s", value);
+            continue;
+        }
+        if (strcmp(key, "substituted") == 0) {   /* algorithm keys the solver replaced */
+            char list[sizeof value], *save = NULL;
+            snprintf(list, sizeof list, "%s", value);
+            info->substituted[0] = '\0';
+            for (char *w = strtok_r(list, ", \t", &save); w; w = strtok_r(NULL, ", \t", &save)) {
+                const int cls = vfy_scene_key_class(w);
+                if (cls != VFY_KEY_ALGORITHM)
+                    return fail(r, r->line, "substituted = '%s': %s %s", value, w,
+                                cls == VFY_KEY_PHYSICS
+                                    ? "is a physics key: a solver must honour it or refuse "
+                                      "the scene (docs/scenes.md)"
+                                    : "is not a scene key (SECTION.KEY, docs/scenes.md)");
+                const size_t used = strlen(info->substituted);
+                snprintf(info->substituted + used, sizeof info->substituted - used, "%s%s",
+                         used ? ", " : "", w);
+            }
             continue;
         }
         double x;

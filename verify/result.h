@@ -33,6 +33,8 @@
 /* What a result file reported beyond the required n and ensembles. */
 typedef struct vfy_result_info {
     char solver[256];                /* the "# solver = " line, or "" */
+    char substituted[256];           /* "# substituted = ": the algorithm keys (docs/scenes.md)
+                                        the solver replaced by its own, ", "-separated, or "" */
     int has_cpu, has_events, has_violations;
     unsigned char reported[SIM_OBS_MAX];  /* observable k had a column */
     size_t steady_reported;          /* steady quantities the file gave */

@@ -988,6 +988,31 @@ int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t 
     return 0;
 }
 
+/* The algorithm keys (docs/scenes.md, "Every key"): engine choices a solver
+ * may replace with its own algorithm; every other key is physics. */
+static const char *const algorithm_keys[] = {
+    "scene.title", "scene.scheme", "scene.dt", "scene.splitting",
+    "scene.step_follows_temperature", "scene.observation", "scene.seed", "collisions.rule",
+    "shear.pairs", "steady.pairs",
+};
+
+int vfy_scene_key_class(const char *key)
+{
+    for (size_t i = 0; i < sizeof algorithm_keys / sizeof *algorithm_keys; i++)
+        if (strcmp(key, algorithm_keys[i]) == 0)
+            return VFY_KEY_ALGORITHM;
+    const char *dot = strchr(key, '.');
+    char section[64];
+    if (dot == NULL || (size_t)(dot - key) >= sizeof section)
+        return VFY_KEY_UNKNOWN;
+    snprintf(section, sizeof section, "%.*s", (int)(dot - key), key);
+    const int sec = find_section(section);
+    for (size_t i = 0; i < NKEYS && sec >= 0; i++)
+        if (keys[i].section == sec && strcmp(keys[i].name, dot + 1) == 0)
+            return VFY_KEY_PHYSICS;
+    return VFY_KEY_UNKNOWN;
+}
+
 sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
                           size_t msglen)
 {

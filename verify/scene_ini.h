@@ -90,4 +90,11 @@ int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t 
 sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
                           size_t msglen);
 
+/* The class of scene key `key` ("section.key", docs/scenes.md): physics (a
+ * solver must honour it or refuse the scene), algorithm (an engine choice a
+ * solver may replace with its own, saying so in its result's
+ * "# substituted =" line), or unknown. */
+enum { VFY_KEY_UNKNOWN, VFY_KEY_PHYSICS, VFY_KEY_ALGORITHM };
+int vfy_scene_key_class(const char *key);
+
 #endif

@@ -31,7 +31,8 @@ typedef struct vfy_solver {
     const char *command;   /* "python3 mysolver.py {scene} {out}" */
     double timeout;        /* seconds a run may take (> 0), the child killed after it */
     const char *work_dir;  /* where the scene, result and log files go (created) */
-    char line[256];        /* the "# solver = " line of its latest result ("" before one) */
+    char line[540];        /* the "# solver = " line of its latest result ("" before one),
+                              and "; substituted KEYS" after it when it said so */
 } vfy_solver;
 
 /* Split command into at most max words (in buf, bufsize bytes; words[]
