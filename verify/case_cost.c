@@ -575,8 +575,8 @@ static double split_model(const double c[2], int scheme, double h)
     "reference's own half-width ({T_inf_rel_ci:%.1e} relative) bounds how small an Err "   \
     "this grid can resolve.\n\nCPU: kappa n N with kappa = {kappa_us:%.3g} us for the jump " \
     "rows; n N (a + g/h) with a = {a_us:%.3g} us and g = {g_us:%.3g} us for the time-step " \
-    "rows (pairs accepted by |g|, and the white noise brought lazily to the particles each " \
-    "stage draws); candidates per accepted collision: {cand_per_coll_jump:%.1f} (jump rows), "     \
+    "rows{at_engine: (pairs accepted by |g|, and the white noise brought lazily to the "    \
+    "particles each stage draws)}; candidates per accepted collision: {cand_per_coll_jump:%.1f} (jump rows), "     \
     "{cand_per_coll_ts:%.1f} (time-step rows). Total wall time {wall_total:%.1f} s."
 #define SPLIT_TARGET_NOTES                                                             \
     "grid: the cheapest measured row (least cpu_s) whose Err_hi <= target (reached with "  \

@@ -225,9 +225,10 @@ static const char a2_columns[] =
     "ns_per_candidate=ns_per_event:%.1f";
 
 #define A2_NOTES(CHECKS)                                                               \
-    "{comment}; {sizes}.\n\nEach row is one steady state (time-step scheme; pairs accepted by " \
-    "|g|, equal in distribution to paper C's contact rule, docs/theory.md §3.2; the thermostat "    \
-    "applied lazily or as one global scaling). a2, a3 = time averages of the reduced cumulants; _ci = 3.2 x the standard " \
+    "{comment}; {sizes}.\n\nEach row is one steady state ({at_engine:time-step scheme; pairs " \
+    "accepted by |g|, equal in distribution to paper C's contact rule, docs/theory.md §3.2; " \
+    "the thermostat applied lazily or as one global scaling}{at_solver:simulated by the "  \
+    "solver the first line names}). a2, a3 = time averages of the reduced cumulants; _ci = 3.2 x the standard " \
     "error over the N independent ensembles. Sonine estimates (paper C): C10, C32 white "  \
     "noise; C5, C40 Gaussian; C50, C76 non-Gaussian. mu2_ratio = (mu2 - mu2^(0))/mu2^(1), " \
     "mu4_ratio = (mu4 - mu4^(0))/mu4^(1) (both equal a2 where the first Sonine expansion " \

@@ -467,10 +467,10 @@ const vfy_case_desc vfy_split_ex5 = {
              "difference saturates at about -a2)" SPLIT_NOTES_DTMAX
              "Strang merges the half flights of adjacent "
              "steps (exact for white noise), so it costs what Euler costs. ns_per_collision = "
-             "CPU time per accepted collision, everything included (the time-step rows accept "
-             "pairs by |g| as the jump scheme does, docs/theory.md §8.5, and bring each particle a stage "
-             "draws forward under the white noise, lazily; normals = standard normal variates "
-             "drawn)." SPLIT_NOTES_COST};
+             "CPU time per accepted collision, everything included{at_engine: (the time-step "
+             "rows accept pairs by |g| as the jump scheme does, docs/theory.md §8.5, and bring "
+             "each particle a stage draws forward under the white noise, lazily; normals = "
+             "standard normal variates drawn)}." SPLIT_NOTES_COST};
 
 /* The Gaussian thermostat: the time-step rows keep the map global (a step
  * costs O(1) plus its collisions, engine.c stages_scaled) and collide at the
@@ -488,6 +488,6 @@ const vfy_case_desc vfy_split_gaussian = {
              "candidates follow the rate as it grows, e^{zeta t}, exactly (docs/scenes.md). "
              "Strang merges the half flights of adjacent steps (scalings multiply), so it costs "
              "what Euler costs. ns_per_collision = CPU time per accepted collision, everything "
-             "included (pairs accepted by |g| in every row, docs/theory.md §8.5; normals = the initial "
-             "states' standard normal variates, the same in every row, so the cost model has "
-             "no flight term)." SPLIT_NOTES_COST};
+             "included{at_engine: (pairs accepted by |g| in every row, docs/theory.md §8.5; "
+             "normals = the initial states' standard normal variates, the same in every row, so "
+             "the cost model has no flight term)}." SPLIT_NOTES_COST};

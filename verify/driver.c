@@ -234,9 +234,18 @@ const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_r
             continue;
         }
         int at_quick = strncmp(p + 1, "at_quick:", 9) == 0;
+        int at_engine = strncmp(p + 1, "at_engine:", 10) == 0;
         if (at_quick || strncmp(p + 1, "at_paper:", 9) == 0) {   /* text at one size */
             if (at_quick == (run->o->size == VFY_QUICK)) {
                 int w = snprintf(buf + used, len - used, "%.*s", (int)(close - p - 10), p + 10);
+                used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
+            }
+            p = close + 1;
+            continue;
+        }
+        if (at_engine || strncmp(p + 1, "at_solver:", 10) == 0) {   /* text for one solver */
+            if (at_engine != vfy_external(run->o)) {
+                int w = snprintf(buf + used, len - used, "%.*s", (int)(close - p - 11), p + 11);
                 used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
             }
             p = close + 1;

@@ -28,8 +28,11 @@
  * {comment} (the provenance line) are always there, and {label} and
  * {scene} (the stem of its scene file) in a row;
  * "{at_quick:TEXT}" is TEXT at quick sizes and nothing at paper sizes,
- * "{at_paper:TEXT}" the converse; a hook's case texts (vfy_run_set_text)
- * by name.  "{{" is a brace.
+ * "{at_paper:TEXT}" the converse; "{at_engine:TEXT}" is TEXT when the
+ * built-in engine simulated (how it did), "{at_solver:TEXT}" when an
+ * external solver did; a hook's case texts (vfy_run_set_text) by name;
+ * a value an external solver did not report prints "(not reported)".
+ * "{{" is a brace.
  */
 #ifndef GDSMC_VFY_DRIVER_H
 #define GDSMC_VFY_DRIVER_H
