@@ -628,6 +628,15 @@ gdsmc_add_cli_exact(cli_x_verify_dry_run_resume 2
                     "gdsmc verify: --dry-run simulates nothing: not with --seeds, --power, --must-fail, --resume or --junit (see gdsmc verify --help)"
                     verify --dry-run --case grw-ex3 --resume)
 
+# --suite protocol: the adapter mechanics in seconds; the engine passes, an
+# adapter that writes standard deviations for the sample variances fails.
+gdsmc_add_cli_test(cli_verify_protocol 0 "\nverify: 12 passed, 0 failed, 0 skipped\n"
+                   verify --suite protocol --out ${CMAKE_CURRENT_BINARY_DIR}/protocol)
+gdsmc_add_cli_test(cli_verify_protocol_std_not_var 1
+    "FAIL  protocol series T_raw variance at t = 0 vs the initial Maxwellian's: [^\n]*\n.*\nverify: [0-9]+ passed, [1-9][0-9]* failed"
+    verify --suite protocol --out ${CMAKE_CURRENT_BINARY_DIR}/protocol-std
+    --solver "sh tests/solvers/std_not_var.sh $<TARGET_FILE:gdsmc> {scene} {out}")
+
 # gdsmc check-result SCENE RESULT: a valid result (the engine's own) is
 # described, a malformed one refused with its file and line, exit 2.
 add_test(NAME cli_check_result_valid

@@ -25,6 +25,7 @@ extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gauss
     vfy_ms_table1, vfy_ms_tails;
 /* case_msg.c (paper D) */
 extern const vfy_case_desc vfy_msg_kappa, vfy_msg_sonine, vfy_msg_distribution;
+extern const vfy_case_desc vfy_protocol;
 /* case_as.c (paper E) */
 extern const vfy_case_desc vfy_as_steady;
 extern const vfy_case_desc vfy_as_transient;
@@ -96,16 +97,17 @@ static const vfy_case cases[] = {
     {"as-slab-vs-homogeneous", "as", "paper E Fig. 9: the slab from both initial states"
      " against the homogeneous run, IHS at alpha = 0.9, a tau0 = 4", 1,
      &vfy_as_slab_vs_homogeneous},
-    {"split-ex5", "split", "docs/theory.md §8.5: splitting error of the time-step scheme vs the jump scheme,"
-     " Euler and Strang", 1, &vfy_split_ex5},
-    {"split-gaussian", "split", "docs/theory.md §8.5: the same with the Gaussian thermostat, which the jump"
-     " scheme runs exactly: Euler and Strang converge to it", 1, &vfy_split_gaussian},
-    {"cost-grw-ex3", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU time over"
-     " n x N, paper A Ex 3", 1, &vfy_cost_grw_ex3},
-    {"cost-brs-ex2", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU time over"
-     " n x N, paper B Ex 2", 1, &vfy_cost_brs_ex2},
-    {"cost-split-ex5", "cost", "docs/theory.md §1.4: Err (systematic + splitting + statistical) against"
-     " CPU time over n, N and h, paper A Ex 5", 1, &vfy_cost_split_ex5},
+    {"split-ex5", "split", "docs/theory.md §8.5: splitting error of the time-step scheme vs the"
+     " jump scheme, Euler and Strang", 1, &vfy_split_ex5},
+    {"split-gaussian", "split", "docs/theory.md §8.5: the same with the Gaussian thermostat,"
+     " which the jump scheme runs exactly: Euler and Strang converge to it", 1,
+     &vfy_split_gaussian},
+    {"cost-grw-ex3", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU"
+     " time over n x N, paper A Ex 3", 1, &vfy_cost_grw_ex3},
+    {"cost-brs-ex2", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU"
+     " time over n x N, paper B Ex 2", 1, &vfy_cost_brs_ex2},
+    {"cost-split-ex5", "cost", "docs/theory.md §1.4: Err (systematic + splitting +"
+     " statistical) against CPU time over n, N and h, paper A Ex 5", 1, &vfy_cost_split_ex5},
     {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
      " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
      &vfy_hard_dissipation},
@@ -122,6 +124,8 @@ static const vfy_case cases[] = {
      " clear failure, never garbage", 1, &vfy_hard_stiff},
     {"hard-extreme", "hard", "restitution 1e-3 and 1, rate 1e6, T0 = 1e-8 and 1e8 against"
      " exact expectations and the Sonine closure", 1, &vfy_hard_extreme},
+    {"protocol", "protocol", "the solver protocol's mechanics in seconds: the time grid and"
+     " columns, the variance columns, the steady section", 0, &vfy_protocol},
 };
 
 size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
@@ -192,10 +196,11 @@ const char *vfy_paper_suites(char *buf, size_t len)
     return buf;
 }
 
+/* "paper" is every paper's case (not the protocol's conformance case). */
 static int in_suite(const vfy_case *c, const char *suite)
 {
-    return strcmp(suite, "paper") == 0 || (strcmp(suite, "quick") == 0 && c->quick)
-           || strcmp(suite, c->suite) == 0;
+    return (strcmp(suite, "paper") == 0 && strcmp(c->suite, "protocol") != 0)
+           || (strcmp(suite, "quick") == 0 && c->quick) || strcmp(suite, c->suite) == 0;
 }
 
 int vfy_case_selected(const vfy_case *c, const char *suite, const char *case_name)

@@ -878,8 +878,10 @@ static int cmd_verify(int argc, char **argv)
                          "built-in engine: not with --perturb or --solver");
     vfy_options o = {
         .size = a.suite && strcmp(a.suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
-        .out_dir = a.out ? a.out : a.suite && strcmp(a.suite, "quick") == 0 ? "reports"
-                                                                              : "reports/paper",
+        .out_dir = a.out                                             ? a.out
+                   : a.suite && strcmp(a.suite, "quick") == 0    ? "reports"
+                   : a.suite && strcmp(a.suite, "protocol") == 0 ? "reports/protocol"
+                                                                 : "reports/paper",
         .scene_dir = a.scenes ? a.scenes : GDSMC_SOURCE_DIR "/verify/scenes",
         .overrides = a.sets,
         .noverrides = a.nsets,

@@ -18,6 +18,15 @@
  * and 83.7 at n = 1024. */
 #define VFY_TOL_ZMAX 4.5
 
+/* The protocol conformance case (verify/case_protocol.c): steady T equals the
+ * time average of the T column over the steady window up to rounding (1e-9
+ * relative; the engine's differ by about 1e-16), and the speed histogram to
+ * c_max = 5 holds all but the speeds beyond five thermal speeds (below 1e-4
+ * of them even in an overpopulated tail; an unnormalised histogram, counts
+ * per shell, is off by orders of magnitude). */
+#define VFY_TOL_PROTOCOL_STEADY_RTOL 1e-9
+#define VFY_TOL_PROTOCOL_F_LO 0.9999
+
 /* The false-alarm rate one check may have over all its points (output
  * times, rows): a bound held at every point of a family of P points is the
  * (1 - VFY_TOL_FAMILY_P / P) quantile of its statistic (Bonferroni), so a

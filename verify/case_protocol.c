@@ -1,0 +1,163 @@
+/* protocol (gdsmc verify --suite protocol): a conformance case for the
+ * mechanics of a solver's adapter (docs/solver-protocol.md), in seconds, on
+ * paper A Example 3's gas at n = 8 (verify/scenes/protocol.ini):
+ *   - the time grid and the T and T_raw columns: z-tests against the exact
+ *     finite-n expectations (docs/theory.md §11.2) at every output time;
+ *   - the variance columns: at t = 0 the initial Maxwellian fixes the
+ *     variance of T, T_raw and ux over the ensembles exactly (below);
+ *   - the steady section: steady T is the time average of the T column over
+ *     t >= steady.from (§10.1), and the speed histogram integrates to the
+ *     fraction of speeds below c_max (§10.4).
+ * A wrong sample variance (the standard deviation, the variance of the sum, a
+ * population divisor at small N ...), a shifted grid, a steady window other
+ * than the scene's or an unnormalised histogram each fails a check here.
+ *
+ * At t = 0 the n velocities are i.i.d. Maxwellian at T0 (m = 1), so
+ *   T_raw = (T0/3n) chi^2_{3n},  T = (T0/3n) chi^2_{3(n-1)},  ux ~ N(0, T0/n):
+ * variances 2 T0^2/(3n), 2 T0^2 (n-1)/(3 n^2) and T0/n, excess kurtoses 4/n,
+ * 4/(n-1) and 0.  The sample variance s^2 of N such estimates has standard
+ * error sigma^2 sqrt(2/(N-1) + kurtosis/N). */
+#include <math.h>
+#include <string.h>
+
+#include "driver.h"
+#include "observe.h"
+#include "scene.h"
+#include "steady.h"
+#include "tolerances.h"
+
+enum { VAR_REPORTED, VAR_EXACT, VAR_ALLOWED };
+
+/* The sample variance at t = 0 of observable m->a, its exact value, or
+ * VFY_TOL_ZMAX standard errors of the sample variance (m->x: VAR_...). */
+static double initial_variance(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    const sim_scene *s = &row->solver;
+    const sim_ensemble_result *res = &row->res;
+    const double n = (double)s->particles.n, N = (double)res->ensembles;
+    const double T0 = s->particles.maxwellian.temperature / sim_scene_grain_mass(s);
+    const int k = sim_observable_find(s, m->a, strlen(m->a));
+    if (k < 0 || res->outputs == 0 || N < 2)
+        return NAN;
+    double exact, kurtosis;
+    if (strcmp(m->a, "T_raw") == 0)
+        exact = 2.0 * T0 * T0 / (3.0 * n), kurtosis = 4.0 / n;
+    else if (strcmp(m->a, "T") == 0)
+        exact = 2.0 * T0 * T0 * (n - 1.0) / (3.0 * n * n), kurtosis = 4.0 / (n - 1.0);
+    else
+        exact = T0 / n, kurtosis = 0.0;
+    switch ((int)m->x) {
+    case VAR_REPORTED:   /* the result's population variance, back to the sample's */
+        return res->var[(size_t)k] * N / (N - 1.0);
+    case VAR_EXACT:
+        return exact;
+    default:
+        return VFY_TOL_ZMAX * exact * sqrt(2.0 / (N - 1.0) + kurtosis / N);
+    }
+}
+
+/* |steady T - the time average of the T column over t >= steady.from|,
+ * relative to it. */
+static double steady_gap(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    const sim_scene *s = &row->solver;
+    const sim_ensemble_result *res = &row->res;
+    const long j = sim_steady_find(s, "T");
+    const int k = sim_observable_find(s, "T", 1);
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t t = 0; t < res->outputs && j >= 0 && k >= 0; t++)
+        if (res->t[t] >= s->steady.from * (1.0 - 1e-12)) {
+            sum += res->mean[t * res->observables + (size_t)k];
+            count++;
+        }
+    if (count == 0 || j < 0)
+        return NAN;
+    const double average = sum / (double)count;
+    return fabs(res->steady_mean[j] - average) / average;
+}
+
+/* The speed histogram's integral: sum_k f_k times its shell's volume. */
+static double histogram_integral(const vfy_case_run *run, const vfy_row *row,
+                                 const vfy_metric *m)
+{
+    (void)run;
+    (void)m;
+    const sim_scene *s = &row->solver;
+    if (s->steady.bins == 0 || row->res.nsteady < SIM_STEADY_BIN0 + s->steady.bins)
+        return NAN;
+    double integral = 0.0;
+    for (size_t k = 0; k < s->steady.bins; k++) {
+        const double lo = sim_steady_bin_lower(s, k), hi = sim_steady_bin_lower(s, k + 1);
+        integral += row->res.steady_mean[SIM_STEADY_BIN0 + k] * 4.0 * M_PI / 3.0
+                    * (hi * hi * hi - lo * lo * lo);
+    }
+    return integral;
+}
+
+#define VAR_METRICS(NAME)                                                              \
+    {NAME "_var0", initial_variance, NAME, NULL, VAR_REPORTED},                        \
+        {NAME "_var0_exact", initial_variance, NAME, NULL, VAR_EXACT},                 \
+        {NAME "_var0_allowed", initial_variance, NAME, NULL, VAR_ALLOWED}
+static const vfy_metric protocol_metrics[] = {
+    VAR_METRICS("T"), VAR_METRICS("T_raw"), VAR_METRICS("ux"),
+    {"steady_T_gap", steady_gap, NULL, NULL, 0},
+    {"f_integral", histogram_integral, NULL, NULL, 0},
+    {NULL, NULL, NULL, NULL, 0}};
+
+#define STEADY_ROW {vfy_guard_only_at_least, "steady", NULL, 1, NULL}
+#define VAR_CHECK(NAME)                                                                \
+    {.name = "{case} {label} " NAME " variance at t = 0 vs the initial Maxwellian's",           \
+     .rule = vfy_rule_absolute, .value = NAME "_var0", .expected = NAME "_var0_exact",  \
+     .plus = NAME "_var0_allowed"}
+static const vfy_check_spec protocol_checks[] = {
+    {.name = "{case} {label} T vs exact finite-n expectation", .rule = vfy_rule_zscore,
+     .value = "T",
+     .expected = "T_finite_n", .tol = VFY_TOL_ZMAX},
+    {.name = "{case} {label} T_raw vs exact finite-n expectation", .rule = vfy_rule_zscore,
+     .value = "T_raw", .expected = "T_raw_finite_n", .tol = VFY_TOL_ZMAX},
+    VAR_CHECK("T"), VAR_CHECK("T_raw"), VAR_CHECK("ux"),
+    {.name = "{case} {label} steady T = the T column's average over t >= steady.from",
+     .rule = vfy_rule_range, .value = "steady_T_gap", .lo = 0.0,
+     .hi = VFY_TOL_PROTOCOL_STEADY_RTOL, .guard = STEADY_ROW},
+    {.name = "{case} {label} speed histogram integrates to the fraction below c_max",
+     .rule = vfy_rule_range, .value = "f_integral", .lo = VFY_TOL_PROTOCOL_F_LO,
+     .hi = 1.0 + VFY_TOL_PROTOCOL_STEADY_RTOL, .guard = STEADY_ROW},
+    {.name = NULL}};
+
+/* The rows: the series alone, then with a steady section (a solver without
+ * one may refuse that row alone). */
+static const char *const protocol_rows[] = {
+    "series: $steady=0",
+    "steady: steady.from=1;steady.bins=16;steady.c_max=5;$steady=1",
+    NULL};
+
+static const char *const protocol_needs[] = {"T_finite_n", "T_raw_finite_n", NULL};
+
+const vfy_case_desc vfy_protocol = {
+    .paper = "protocol",
+    .needs = protocol_needs,
+    .needs_why = VFY_NEEDS_MAXWELL,
+    .label = "{case} {label}",
+    .paper_rows = {.rows = protocol_rows},
+    .quick_rows = {.rows = protocol_rows},
+    .metrics = protocol_metrics,
+    .checks = protocol_checks,
+    .columns = "row=label:%s n:%.0f N:%.0f T_var0:%.6f T_var0_exact:%.6f T_raw_var0:%.6f "
+               "T_raw_var0_exact:%.6f ux_var0:%.6f ux_var0_exact:%.6f steady_T_gap:%.2e "
+               "f_integral:%.8f cpu_s:%.2f wall_s:%.2f",
+    .must_fail = "heating.strength=1.5",
+    .title = "{case}: the solver protocol's conformance case",
+    .notes = "{comment}.\n\nThe mechanics of a solver's adapter (docs/solver-protocol.md), on "
+             "paper A Example 3's gas at n = {n}: T and T_raw against their exact finite-n "
+             "expectations at every output time (the grid and the columns); the sample "
+             "variances of T, T_raw and ux at t = 0 against the initial Maxwellian's exact "
+             "2 T0^2 (n - 1)/(3 n^2), 2 T0^2/(3n) and T0/n, within 4.5 standard errors of a "
+             "sample variance (the variance columns: NAME_var is the sample variance of the N "
+             "per-ensemble estimates); steady T against the time average of the T column over "
+             "t >= steady.from (the steady window), and the speed histogram's integral, the "
+             "fraction of reduced speeds below c_max (its normalisation, docs/theory.md "
+             "§10.4). Total wall time {wall_total:%.1f} s."};
