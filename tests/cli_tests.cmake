@@ -628,6 +628,17 @@ gdsmc_add_cli_exact(cli_x_verify_dry_run_resume 2
                     "gdsmc verify: --dry-run simulates nothing: not with --seeds, --power, --must-fail, --resume or --junit (see gdsmc verify --help)"
                     verify --dry-run --case grw-ex3 --resume)
 
+# A solver whose majorant is raised after each step declares the violations
+# its algorithm lets through; the violations check holds it to that bound.
+gdsmc_add_cli_test(cli_solver_violations_within 0
+    "PASS  ms-a2-gaussian alpha=0\\.20 majorant violations: 30 \\(allowed at most 40, declared by the solver's '# violations_allowed'\\)\n"
+    verify --suite quick --case ms-a2-gaussian --out ${CMAKE_CURRENT_BINARY_DIR}/solver-violations-40
+    --solver "sh tests/solvers/violations.sh $<TARGET_FILE:gdsmc> {scene} {out} 40")
+gdsmc_add_cli_test(cli_solver_violations_beyond 1
+    "FAIL  ms-a2-gaussian alpha=0\\.20 majorant violations: 30 \\(allowed at most 10, declared by the solver's '# violations_allowed'\\)\n"
+    verify --suite quick --case ms-a2-gaussian --out ${CMAKE_CURRENT_BINARY_DIR}/solver-violations-10
+    --solver "sh tests/solvers/violations.sh $<TARGET_FILE:gdsmc> {scene} {out} 10")
+
 # --suite protocol: the adapter mechanics in seconds; the engine passes, an
 # adapter that writes standard deviations for the sample variances fails.
 gdsmc_add_cli_test(cli_verify_protocol 0 "\nverify: 12 passed, 0 failed, 0 skipped\n"

@@ -311,7 +311,7 @@ static const vfy_difference ehs_T_difference = {
                 "(docs/differences.md)",
     .judged_by = AS_EHS_BGK_NAME("a*", "a_star")};
 static const vfy_check_spec checks[] = {
-    {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = AS_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     /* E §V: the steady state does not depend on the initial shear rate */
     {.name = AS_NAME "a* as at a tau0 = 4", .rule = vfy_rule_range, .value = "z_a_star_rate",
      .lo = 0.0, .hi = 1.0, .guard = SLOW},
@@ -707,7 +707,7 @@ static const vfy_difference eta_collapse_difference = {
                 "docs/differences.md)",
     .judged_by = ASX_ETA_EHS_BGK};
 static const vfy_check_spec transient_checks[] = {
-    {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = AS_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     /* the steady state the transient ends in, against the BGK model: as-steady's sanity
      * bound (10%), which a wrong restitution coefficient or drag fails */
     {.name = AS_NAME "steady a* within 10% of BGK ({a_star_bgk:%.4f})",
@@ -1282,7 +1282,7 @@ static vfy_guard_result asd_guard_resolved(const vfy_case_run *run, const vfy_ro
                "not resolved at these sizes: the difference {d_" NAME ":%+.2g}% lies "     \
                "within its half-width (margin {m_" NAME ":%+.2g}%)"}}
 static const vfy_check_spec distribution_checks[] = {
-    {.name = AS_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = AS_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     /* E §V B: the IHS steady shell ratios at alpha = 0.5, a tau0 = 4: R0..R2 read
      * to 0.02 (E's own R0 = 1.18 and R1 = 0.81 give 50.5% and 42.6%, not the 51%
      * and 42% it prints), R3 to its printed unit, the fractions to the percent,
@@ -1645,7 +1645,7 @@ static const vfy_metric slab_metrics[] = {
      .plus = Q "_ci_t", .guard = {vfy_guard_only_at_least, Q "_paper", NULL, 0.0, NULL}}
 #define ASL_EHS {vfy_guard_only_at_least, "is_ehs", NULL, 1.0, NULL}
 static const vfy_check_spec slab_checks[] = {
-    {.name = ASL_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = ASL_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     ASL_S("s_013", "0.13", 2), ASL_S("s_05", "0.5", 1), ASL_S("s_1", "1", 1),
     ASL_S("s_15", "1.5", 1), ASL_S("s_2", "2", 1),
     ASL_UNIFORM("u_x(y) slope / a", "ux_slope", NULL, 1.0),
@@ -1925,7 +1925,7 @@ static const vfy_metric vs_metrics[] = {
      .value = Q, .expected = PAPER, .tol = DIGITS, .plus = Q "_ci_t",                       \
      .guard = {vfy_guard_only_at_least, PAPER, NULL, 0.0, NULL}}
 static const vfy_check_spec vs_checks[] = {
-    {.name = ASV_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = ASV_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     /* the homogeneous steady state is E's (its slab's numbers, E §IV A), to the last
      * printed digit plus the half-width: the slab's agreement below is then with the
      * right state */

@@ -59,7 +59,7 @@ static const vfy_metric conv_metrics[] = {
         {.name = "{case} n={n} CF of Conf", .rule = vfy_rule_range, .value = "CF_Conf",  \
          .lo = VFY_TOL_BRS_CONF_CF_LO, .hi = VFY_TOL_BRS_CONF_CF_HI,                     \
          .guard = {vfy_guard_after_first, NULL, NULL, 0, NULL}},                          \
-        {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count,             \
+        {.name = "{case} n={n} majorant violations", .rule = vfy_rule_violations,          \
          .value = "violations"}
 #define BRS_PAPER_ERR                                                                    \
     {.name = "{case} n={n} Err vs paper {paper}", .rule = vfy_rule_relative, .value = "Err", \
@@ -189,7 +189,7 @@ static const vfy_metric steady_metrics[] = {
     {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
     {NULL, NULL, NULL, NULL, 0}};
 static const vfy_check_spec steady_checks[] = {
-    {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = "{case} n={n} majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     {.name = NULL}};
 static const char steady_columns[] =
     "n:%.0f N:%.0f T_star:%.5f T_star_ci:%.5f dev_uy_grad:%.4f fictitious_fraction:%.3f "

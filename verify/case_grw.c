@@ -104,7 +104,7 @@ static const vfy_metric ex5_metrics[] = {
     {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
     {NULL, NULL, NULL, NULL, 0}};
 static const vfy_check_spec ex5_checks[] = {
-    {.name = "{case} n={n} majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = "{case} n={n} majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     {.name = NULL}};
 static const char ex5_columns[] =
     "n:%.0f N:%.0f T_end:%.5f T_end_ci:%.5f dev_maxwell_closure:%.4f "
@@ -364,7 +364,7 @@ static const vfy_difference tails_b_difference = {
         {.name = "{case} fitted A (c >= 3) vs the loss-diffusion balance",             \
          .rule = vfy_rule_absolute, .value = "A_fit", .expected = "A_theory",          \
          .rtol = VFY_TOL_TAILS_A_RTOL, .guard = TAILS_JUDGED},                         \
-        {.name = "{case} majorant violations", .rule = vfy_rule_count, .value = "violations"}
+        {.name = "{case} majorant violations", .rule = vfy_rule_violations, .value = "violations"}
 /* The steady T against a closure's steady value REF (a value reference) within
  * RTOL, its model error, plus the Student's t half-width */
 #define TAILS_CLOSURE_CHECK(WHAT, REF, RTOL)                                            \

@@ -179,7 +179,7 @@ static const vfy_metric ng_metrics[] = {A2_METRICS, BALANCE_METRICS,
 
 #define INELASTIC {vfy_guard_only_at_most, "alpha", NULL, 1.0 - 1e-12, NULL}
 #define A2_CHECKS_COMMON                                                               \
-    {.name = "{case} alpha={alpha:%.2f} majorant violations", .rule = vfy_rule_count,   \
+    {.name = "{case} alpha={alpha:%.2f} majorant violations", .rule = vfy_rule_violations, \
      .value = "violations"},                                                           \
     {.name = "{case} alpha=1 a2 (elastic: 0)", .rule = vfy_rule_absolute, .value = "a2", \
      .plus = "a2_ci_t",                                                                \
@@ -344,7 +344,7 @@ static const vfy_difference table1_gaussian_08 = {
 #define T1_JUDGED {vfy_guard_only_unless, "unjudged", NULL, 0, NULL}
 #define T1_KNOWN {vfy_guard_only_at_least, "unjudged", NULL, 1.0, NULL}
 static const vfy_check_spec table1_checks[] = {
-    {.name = T1_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = T1_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     {.name = T1_DIRECT_VS_INDIRECT, .rule = vfy_rule_absolute,
      .value = "mu4", .expected = "mu4_indirect", .rtol = VFY_TOL_MS_MU4_GAP_RTOL,
      .plus_quick = "pair_ci_t"},
@@ -545,7 +545,7 @@ static const vfy_metric tails_metrics[] = {
     {vfy_guard_at_least, "fit_bins_c3", NULL, VFY_TOL_MS_TAIL_MIN_BINS,                \
      "fewer than 5 tail shells with a relative half-width below 0.5"}
 static const vfy_check_spec tails_checks[] = {
-    {.name = TAIL_NAME "majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = TAIL_NAME "majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     {.name = TAIL_NAME "A (Eq. {eq} with the simulated mu2) vs paper",
      .rule = vfy_rule_relative, .value = "A_theory", .expected = "A_paper",
      .tol = VFY_TOL_MS_TAIL_A_PAPER_RTOL},

@@ -181,7 +181,7 @@ static const vfy_metric distribution_metrics[] = {
 /* ------------------------------------------------------------- checks */
 
 #define MSG_NAME "{case} alpha={alpha:%.1f} eps*={eps_star:%g} "
-#define VIOLATIONS {.name = MSG_NAME "majorant violations", .rule = vfy_rule_count, \
+#define VIOLATIONS {.name = MSG_NAME "majorant violations", .rule = vfy_rule_violations, \
                     .value = "violations"}
 static const vfy_check_spec kappa_checks[] = {
     VIOLATIONS,

@@ -269,7 +269,7 @@ static const vfy_metric split_metrics[] = {
     {NULL, NULL, NULL, NULL, 0}};
 
 static const vfy_check_spec split_checks[] = {
-    {.name = "{case} {label} majorant violations", .rule = vfy_rule_count, .value = "violations"},
+    {.name = "{case} {label} majorant violations", .rule = vfy_rule_violations, .value = "violations"},
     {.name = "{case} {scheme} h={h_prev}->{h} CF of the T difference", .rule = cf_in_band,
      .value = "CF_T",
      .guard = {halving_clean, "dT_abs", "dT_ci", 0,

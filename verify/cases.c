@@ -519,6 +519,7 @@ static sim_status simulate_external(const sim_scene *scene, const vfy_options *o
              info.solver[0] ? info.solver : "no solver line");
     snprintf(o->solver->line, sizeof o->solver->line, "%s%s%s", info.solver,
              info.substituted[0] ? "; substituted " : "", info.substituted);
+    o->solver->violations_allowed = info.violations_allowed;
     return SIM_OK;
 }
 
@@ -531,6 +532,8 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
         if (o->progress)
             fprintf(o->progress, "   %s: taken from its checkpoint (%s)\n", label,
                     repeat ? "the same simulation ran earlier in this run" : "--resume");
+        if (o->solver != NULL)   /* a checkpoint keeps no declared bound: none, strictly */
+            o->solver->violations_allowed = 0.0;
         return SIM_OK;
     }
     memset(res, 0, sizeof *res);

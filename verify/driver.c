@@ -328,6 +328,17 @@ vfy_verdict vfy_rule_count(vfy_report *r, const char *name, vfy_case_run *run, v
                            (uint64_t)expected_of(run, row, c));
 }
 
+vfy_verdict vfy_rule_violations(vfy_report *r, const char *name, vfy_case_run *run,
+                                vfy_row *row, const vfy_check_spec *c)
+{
+    const double allowed = row ? lookup(run, row, "violations_allowed") : 0.0;
+    if (!(allowed > 0.0))   /* none declared: exactly zero, as the engine's */
+        return vfy_rule_count(r, name, run, row, c);
+    const double v = lookup(run, row, c->value);
+    return vfy_check_true(r, name, v <= allowed, "%.0f (allowed at most %.0f, declared by the "
+                          "solver's '# violations_allowed')", v, allowed);
+}
+
 /* Series value against series expected (pair: a second simulation, whose
  * half-widths join value's in quadrature). */
 static vfy_verdict zscore_rule(vfy_report *r, const char *name, vfy_row *row,
@@ -698,6 +709,11 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
         }
         if (status == SIM_OK)
             row_cost_values(row, res, suffix);
+        if (status == SIM_OK && k == 0)   /* a solver's declared bound (0: the engine's) */
+            vfy_values_set(&row->values, "violations_allowed",
+                           vfy_external(run->o) && run->o->solver
+                               ? run->o->solver->violations_allowed
+                               : 0.0);
     }
     return status;
 }

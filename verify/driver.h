@@ -387,6 +387,10 @@ vfy_rule_func vfy_rule_range;
 vfy_rule_func vfy_rule_absolute;
 /* value == expected (or x), integers (vfy_check_count). */
 vfy_rule_func vfy_rule_count;
+/* Majorant violations: value == 0 (vfy_rule_count), or at most the bound an
+ * external solver declared in its result ("# violations_allowed = K",
+ * docs/solver-protocol.md), the row's value violations_allowed. */
+vfy_rule_func vfy_rule_violations;
 /* Series value against series expected from output `from` on: max |z| <=
  * tol (vfy_check_zscore); value `out` becomes the largest max |z| of the
  * checks that name it on this row. */

@@ -205,7 +205,8 @@ static sim_status header_lines(reader *r, const sim_scene *scene, sim_ensemble_r
         double x;
         int known = strcmp(key, "n") == 0 || strcmp(key, "ensembles") == 0
                     || strcmp(key, "cpu_seconds") == 0 || strcmp(key, "events") == 0
-                    || strcmp(key, "violations") == 0;
+                    || strcmp(key, "violations") == 0
+                    || strcmp(key, "violations_allowed") == 0;
         if (!known)
             continue;   /* a comment of the solver's */
         const char *why = number(value, &x);
@@ -231,6 +232,8 @@ static sim_status header_lines(reader *r, const sim_scene *scene, sim_ensemble_r
         } else if (strcmp(key, "events") == 0) {
             res->counts.candidates = (uint64_t)x;
             info->has_events = 1;
+        } else if (strcmp(key, "violations_allowed") == 0) {
+            info->violations_allowed = x;
         } else {
             res->counts.violations = (uint64_t)x;
             info->has_violations = 1;

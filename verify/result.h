@@ -10,6 +10,7 @@
  *   # cpu_seconds = 12.3          (optional)
  *   # events = 10079770           (optional)
  *   # violations = 0              (optional)
+ *   # violations_allowed = 40     (optional: the solver's declared bound)
  *   t,T,T_var,T_raw,T_raw_var,...
  *   one row per output time
  *   # steady                      (scenes with [steady] only)
@@ -36,6 +37,9 @@ typedef struct vfy_result_info {
     char substituted[256];           /* "# substituted = ": the algorithm keys (docs/scenes.md)
                                         the solver replaced by its own, ", "-separated, or "" */
     int has_cpu, has_events, has_violations;
+    double violations_allowed;       /* "# violations_allowed = K": the most majorant
+                                        violations the solver's algorithm declares it lets
+                                        through (a bound raised after each step), else 0 */
     unsigned char reported[SIM_OBS_MAX];  /* observable k had a column */
     size_t steady_reported;          /* steady quantities the file gave */
 } vfy_result_info;

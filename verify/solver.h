@@ -33,6 +33,7 @@ typedef struct vfy_solver {
     const char *work_dir;  /* where the scene, result and log files go (created) */
     char line[540];        /* the "# solver = " line of its latest result ("" before one),
                               and "; substituted KEYS" after it when it said so */
+    double violations_allowed;  /* its latest result's declared bound (0: none) */
 } vfy_solver;
 
 /* Split command into at most max words (in buf, bufsize bytes; words[]
