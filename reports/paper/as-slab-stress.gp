@@ -1,8 +1,8 @@
-# gdsmc 0.2.0 verify: scene verify/scenes/as-slab.ini, seed 20050502, n = 10000, N = 6 ensembles, 1401 outputs on [0, 14]
-# paper E Fig. 4: T/T0 and the reduced stresses against s (EHS: s'/beta): gnuplot reports/paper/as-slab-stress.gp
+# gdsmc 0.3.0 verify: scene verify/scenes/as-slab.ini, seed 20050502, n = 10000, N = 6 ensembles, 1401 outputs on [0, 14]
+# paper E Fig. 4: T/T0 and the reduced stresses against s (EHS: s'/beta): gnuplot /tmp/paper-run/out/as-slab-stress.gp
 set terminal pngcairo size 1000,1050 font ',10'
 set termoption noenhanced
-set output 'reports/paper/as-slab-stress.png'
+set output '/tmp/paper-run/out/as-slab-stress.png'
 set datafile separator ','
 set datafile missing ''
 set multiplot layout 3,1 title 'paper E Fig. 4: T/T0 and the reduced stresses against s (EHS: s''/beta)'
@@ -11,11 +11,11 @@ set key outside right top
 set grid
 set xlabel 's'
 set ylabel 'T/T0'
-plot 'reports/paper/as-slab-stress-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc 1 title 'ihs (3.5)', 'reports/paper/as-slab-stress-curves.csv' index 1 using 1:2 with lines lw 1.5 dt 1 lc 2 title 'ehs (3.5)', 'reports/paper/as-slab-stress-curves.csv' index 2 using 1:2 with lines lw 1.5 dt 1 lc 3 title 'ihs (3.6)', 'reports/paper/as-slab-stress-curves.csv' index 3 using 1:2 with lines lw 1.5 dt 1 lc 4 title 'ehs (3.6)'
+plot '/tmp/paper-run/out/as-slab-stress-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc 1 title 'ihs (3.5)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 1 using 1:2 with lines lw 1.5 dt 1 lc 2 title 'ehs (3.5)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 2 using 1:2 with lines lw 1.5 dt 1 lc 3 title 'ihs (3.6)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 3 using 1:2 with lines lw 1.5 dt 1 lc 4 title 'ehs (3.6)'
 set xlabel 's'
 set ylabel '-Pxy/nT'
-plot 'reports/paper/as-slab-stress-curves.csv' index 0 using 1:4 with lines lw 1.5 dt 1 lc 1 title 'ihs (3.5)', 'reports/paper/as-slab-stress-curves.csv' index 1 using 1:4 with lines lw 1.5 dt 1 lc 2 title 'ehs (3.5)', 'reports/paper/as-slab-stress-curves.csv' index 2 using 1:4 with lines lw 1.5 dt 1 lc 3 title 'ihs (3.6)', 'reports/paper/as-slab-stress-curves.csv' index 3 using 1:4 with lines lw 1.5 dt 1 lc 4 title 'ehs (3.6)'
+plot '/tmp/paper-run/out/as-slab-stress-curves.csv' index 0 using 1:4 with lines lw 1.5 dt 1 lc 1 title 'ihs (3.5)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 1 using 1:4 with lines lw 1.5 dt 1 lc 2 title 'ehs (3.5)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 2 using 1:4 with lines lw 1.5 dt 1 lc 3 title 'ihs (3.6)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 3 using 1:4 with lines lw 1.5 dt 1 lc 4 title 'ehs (3.6)'
 set xlabel 's'
 set ylabel '(Pxx - Pyy)/nT'
-plot 'reports/paper/as-slab-stress-curves.csv' index 0 using 1:6 with lines lw 1.5 dt 1 lc 1 title 'ihs (3.5)', 'reports/paper/as-slab-stress-curves.csv' index 1 using 1:6 with lines lw 1.5 dt 1 lc 2 title 'ehs (3.5)', 'reports/paper/as-slab-stress-curves.csv' index 2 using 1:6 with lines lw 1.5 dt 1 lc 3 title 'ihs (3.6)', 'reports/paper/as-slab-stress-curves.csv' index 3 using 1:6 with lines lw 1.5 dt 1 lc 4 title 'ehs (3.6)'
+plot '/tmp/paper-run/out/as-slab-stress-curves.csv' index 0 using 1:6 with lines lw 1.5 dt 1 lc 1 title 'ihs (3.5)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 1 using 1:6 with lines lw 1.5 dt 1 lc 2 title 'ehs (3.5)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 2 using 1:6 with lines lw 1.5 dt 1 lc 3 title 'ihs (3.6)', '/tmp/paper-run/out/as-slab-stress-curves.csv' index 3 using 1:6 with lines lw 1.5 dt 1 lc 4 title 'ehs (3.6)'
 unset multiplot

@@ -1,8 +1,8 @@
-# gdsmc 0.2.0 verify: scene verify/scenes/brs-ex2.ini, seed 20100402, n = 4, 16, 64, 256, 1024 (by row), N = 64, 256, 1024, 4096, 16384 ensembles (by row), 513 outputs on [0, 1]
-# brs-ex2: paper B Table 2 (paper sizes): gnuplot reports/paper/brs-ex2-uy.gp
+# gdsmc 0.3.0 verify: scene verify/scenes/brs-ex2.ini, seed 20100402, n = 4, 16, 64, 256, 1024 (by row), N = 64, 256, 1024, 4096, 16384 ensembles (by row), 513 outputs on [0, 1]
+# brs-ex2: paper B Table 2 (paper sizes): gnuplot /tmp/paper-run/out/brs-ex2-uy.gp
 set terminal pngcairo size 1200,900 font ',10'
 set termoption noenhanced
-set output 'reports/paper/brs-ex2-uy.png'
+set output '/tmp/paper-run/out/brs-ex2-uy.png'
 set datafile separator ','
 set xrange [0:*]
 set xlabel 't'
@@ -10,11 +10,11 @@ set ylabel 'uy'
 set key top right
 set multiplot layout 2,2 title 'brs-ex2: paper B Table 2 (paper sizes)'
 set title 'n = 4'
-plot 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:($3-$4):($3+$4) with filledcurves fs transparent solid 0.25 lc 1 title 'n = 4: mean ± c'
+plot '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:($3-$4):($3+$4) with filledcurves fs transparent solid 0.25 lc 1 title 'n = 4: mean ± c'
 set title 'n = 16'
-plot 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:($5-$6):($5+$6) with filledcurves fs transparent solid 0.25 lc 2 title 'n = 16: mean ± c'
+plot '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:($5-$6):($5+$6) with filledcurves fs transparent solid 0.25 lc 2 title 'n = 16: mean ± c'
 set title 'n = 64'
-plot 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:($7-$8):($7+$8) with filledcurves fs transparent solid 0.25 lc 3 title 'n = 64: mean ± c'
+plot '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:($7-$8):($7+$8) with filledcurves fs transparent solid 0.25 lc 3 title 'n = 64: mean ± c'
 set title 'n = 256'
-plot 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', 'reports/paper/brs-ex2-uy-curves.csv' skip 1 using 1:($9-$10):($9+$10) with filledcurves fs transparent solid 0.25 lc 4 title 'n = 256: mean ± c'
+plot '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:2 with lines dt 2 lw 2 title 'uy_exact', '/tmp/paper-run/out/brs-ex2-uy-curves.csv' skip 1 using 1:($9-$10):($9+$10) with filledcurves fs transparent solid 0.25 lc 4 title 'n = 256: mean ± c'
 unset multiplot
