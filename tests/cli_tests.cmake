@@ -217,7 +217,7 @@ gdsmc_add_cli_test(cli_x_no_command 2
                    "^usage: gdsmc COMMAND \\[OPTIONS\\].*exit status: 0 success, 1 a verification check failed, 2 bad input or error\\.[^!-~]*$"
                    "")
 gdsmc_add_cli_exact(cli_x_unknown_command 2
-                    "gdsmc: unknown command 'frobnicate' (allowed run, reference, verify, sonine, bench; see gdsmc --help)"
+                    "gdsmc: unknown command 'frobnicate' (allowed run, reference, verify, sonine, bench, check-result; see gdsmc --help)"
                     frobnicate)
 gdsmc_add_cli_exact(cli_x_run_unknown_option 2
                     "gdsmc run: unknown option '--fast' (see gdsmc run --help)"

@@ -416,7 +416,7 @@ static void test_all_scene_files(void **state)
         "brs-ex1", "brs-ex2", "brs-ex3", "brs-ex4", "brs-ex5", "grw-ex3", "grw-ex4",
         "grw-ex5", "grw-ex6", "grw-ex7", "grw-ex8", "hard-dissipation", "hard-extreme", "hard-long-run", "hard-nongaussian",
         "hard-stiff", "hard-tails", "ms-gaussian", "ms-non-gaussian", "ms-white-noise",
-        "as", "as-slab", "msg", "split-ex5", "split-gaussian"};
+        "as", "as-slab", "msg", "split-ex5", "split-gaussian", "protocol"};
     const size_t nshipped = sizeof shipped / sizeof *shipped;
     char dir[1024], path[2048], msg[1024];
     snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
@@ -490,7 +490,7 @@ static void test_write_shipped_scenes(void **state)
         count++;
     }
     closedir(d);
-    assert_int_equal(count, 25);
+    assert_int_equal(count, 26);
 }
 
 /* Random valid scenes: random values for random keys (awkward decimals,

@@ -114,7 +114,8 @@ static const char usage_verify[] =
     "  --suite S    quick (CI sizes, minutes), paper (every case at the paper's\n"
     "               sizes, the default), or a paper's own suite at the paper's\n"
     "               sizes: grw (paper A), brs (paper B), ..., hard (cases chosen\n"
-    "               to break a careless solver) (--list shows all)\n"
+    "               to break a careless solver) (--list shows all); protocol: a\n"
+    "               solver adapter's mechanics in seconds (reports/protocol)\n"
     "  --case NAME[,NAME...]  only these cases, in suite order (at the suite's\n"
     "               sizes); --list shows them\n"
     "  --out DIR    where reports go (default: reports for the quick suite,\n"
@@ -138,11 +139,9 @@ static const char usage_verify[] =
     "               it is killed and the case stops with an error\n"
     "  --junit FILE also write the verdicts as JUnit XML (a testsuite per case, a\n"
     "               testcase per check), as CI systems read it\n"
-    "  --resume     take every simulation already finished by an earlier run with\n"
-    "               the same options and the same gdsmc build from DIR/.checkpoint\n"
-    "               instead of running it again; the tables come out byte-identical\n"
-    "               to an uninterrupted run's (the recorded CPU and wall times\n"
-    "               included)\n"
+    "  --resume     take the simulations an earlier run with the same options and\n"
+    "               build finished from DIR/.checkpoint: the tables come out\n"
+    "               byte-identical to an uninterrupted run's\n"
     "  --list       list the cases and suites\n"
     "  --perturb S.K=FACTOR  multiply the simulated scene's value of number key\n"
     "               S.K by FACTOR: a relative error, as a bug makes one\n"
@@ -829,7 +828,8 @@ static int cmd_verify(int argc, char **argv)
         return rc;
     if (a.list) {
         char suites[128];
-        printf("suites: quick (CI sizes), paper (all cases, paper sizes), and per paper: %s\n"
+        printf("suites: quick (CI sizes), paper (every paper's case, paper sizes), and per "
+               "paper (and protocol): %s\n"
                "cases:\n", vfy_paper_suites(suites, sizeof suites));
         int width = 0;
         for (size_t i = 0; i < vfy_case_count(); i++)
