@@ -838,11 +838,10 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
         if (gone != NULL) {
             if (no != NULL)
                 snprintf(why, sizeof why, "%s: %s", gone, refused);
+            else if (reported_quantity(row, gone))
+                snprintf(why, sizeof why, "%s not reported by the solver", gone);
             else
-                snprintf(why, sizeof why,
-                         reported_quantity(row, gone) ? "%s not reported by the solver"
-                                                      : "%s needs quantities the solver did not report",
-                         gone);
+                snprintf(why, sizeof why, "%s needs quantities the solver did not report", gone);
             vfy_skip(r, name, why);
             continue;
         }
@@ -1360,10 +1359,7 @@ static const char *operand_kind(const vfy_case_run *run, const vfy_row *row, con
             return "a reference value";
     if (vfy_reference_find(base) != NULL)
         return "a reference";
-    for (const vfy_metric *m = d->metrics; m && m->name; m++)
-        if (strcmp(m->name, base) == 0)
-            return "made by the case from the result";
-    return "made by the case from the result";
+    return "made by the case from the result";   /* a metric, a hook's value */
 }
 
 /* Add name (without "@VARIANT") to the list `reported` (" a b ", cap

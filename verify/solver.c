@@ -115,7 +115,7 @@ static int has_placeholder(char *const *words, int n, const char *ph)
     for (int k = 0; k < n; k++)
         found |= strstr(words[k], ph) != NULL;
     for (int k = 0; k < n; k++)
-        for (const char *p = words[k]; (p = strstr(p, "{")) != NULL; p++)
+        for (const char *p = words[k]; (p = strchr(p, '{')) != NULL; p++)
             if (strncmp(p, ph, stem) == 0 && p[stem] != '}')
                 return -1;
     return found;
