@@ -74,13 +74,18 @@ static const char *const distribution_quick_rows[] = {
 
 /* ------------------------------------------------------------- metrics */
 
-/* Value a per unit of the case's force: a eps_solver/eps_case (x = 1: its
- * absolute value, for a half-width). */
+/* Value a, reduced by the simulated eps* = lambda0 eps (docs/theory.md
+ * §10.5), per unit of the case's: a eps*_solver/eps*_case (x = 1: its
+ * absolute value, for a half-width).  A solver's force or collision rate off
+ * (lambda0 = 1/(sqrt 2 pi n sigma^2), n sigma^2 = 4 gamma C) shows here, not
+ * cancelled by its own reduction. */
 static double msg_per_case_force(const vfy_case_run *run, const vfy_row *row,
                                  const vfy_metric *m)
 {
     (void)run;
-    const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength;
+    const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength
+                     * (sim_scene_mean_free_path(&row->solver)
+                        / sim_scene_mean_free_path(&row->scene));
     return vfy_values_get(&row->values, m->a) * (m->x == 1.0 ? fabs(f) : f);
 }
 
