@@ -516,8 +516,9 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
     }
     if (status == SIM_OK && e->nflows == 1 && e->flows[0].type->step_reads_sums)
         e->stage_sums = 1;
-    if (status == SIM_OK && !timestep && e->nflows > 0 && !e->lazy_flow && !e->linear
-        && e->nevents > 0)
+    /* with no event process either: a flow that is neither lazy nor global would
+     * never be applied (a Gaussian thermostat alone left T unchanged) */
+    if (status == SIM_OK && !timestep && e->nflows > 0 && !e->lazy_flow && !e->linear)
         status = sim_error_set(err, SIM_EUNSUPPORTED,
                                scene->heating.present ? "heating.type" : "scene.scheme",
                                "the jump scheme applies a flow only lazily (white noise, or "

@@ -940,6 +940,12 @@ ENGINE_TRAP(engine_gaussian_background,
             "t.ini:2: heating.type: the jump scheme applies a flow only lazily (white noise, or "
             "[shear] alone) or as one global map with binary collisions (gaussian, without "
             "[background])")
+/* ... and not alone: without an event process nothing would apply it (it
+ * was accepted and T stayed at T0) */
+ENGINE_TRAP(engine_gaussian_alone, "[heating]\ntype = gaussian\nstrength = 0.5\n",
+            "t.ini:2: heating.type: the jump scheme applies a flow only lazily (white noise, or "
+            "[shear] alone) or as one global map with binary collisions (gaussian, without "
+            "[background])")
 ENGINE_TRAP(engine_non_gaussian_jump, "[heating]\ntype = non-gaussian\nstrength = 0.5\n",
             "t.ini:2: heating.type: non-gaussian heating needs scene.scheme = timestep "
             JUMP_HEATING)
@@ -1217,6 +1223,7 @@ int main(void)
         cmocka_unit_test(engine_ehs),
                         cmocka_unit_test(engine_gaussian_background),
         cmocka_unit_test(engine_keep_temperature_background),
+        cmocka_unit_test(engine_gaussian_alone),
         cmocka_unit_test(engine_non_gaussian_jump),
         cmocka_unit_test(engine_too_many_steps),
     };
