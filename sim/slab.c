@@ -209,6 +209,10 @@ sim_status sim_slab_params_create(const sim_scene *scene, sim_slab_params **para
         return sim_error_set(err, SIM_EUNSUPPORTED, "shear.boundary",
                              "lees-edwards takes collisions and their drag only (no [heating], "
                              "[background] or [heat-flux])");
+    if (scene->splitting == SIM_SPLIT_STRANG)   /* it was accepted and not applied */
+        return sim_error_set(err, SIM_EUNSUPPORTED, "scene.splitting",
+                             "lees-edwards steps in one order, streaming then collisions "
+                             "(docs/theory.md §6.3): strang is not implemented");
     sim_slab_params *p = calloc(1, sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");

@@ -906,6 +906,11 @@ ENGINE_TRAP(engine_shear_ehs_heated,
 ENGINE_TRAP(engine_lees_edwards, "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
             "t.ini:3: shear.boundary: lees-edwards needs scheme = timestep (the jump scheme "
             "keeps no positions)")
+ENGINE_TRAP(engine_lees_edwards_strang,
+            "[scene]\nscheme = timestep\ndt = 0.01\nsplitting = strang\n[collisions]\n"
+            "kernel = hard-spheres\n[shear]\nrate = 1.5\nboundary = lees-edwards\n",
+            "t.ini:4: scene.splitting: lees-edwards steps in one order, streaming then "
+            "collisions (docs/theory.md §6.3): strang is not implemented")
 ENGINE_TRAP(engine_lees_edwards_maxwell,
             "[scene]\nscheme = timestep\ndt = 0.01\n[collisions]\nkernel = maxwell\n"
             "[shear]\nrate = 1.5\nboundary = lees-edwards\n",
@@ -1224,6 +1229,7 @@ int main(void)
                         cmocka_unit_test(engine_gaussian_background),
         cmocka_unit_test(engine_keep_temperature_background),
         cmocka_unit_test(engine_gaussian_alone),
+        cmocka_unit_test(engine_lees_edwards_strang),
         cmocka_unit_test(engine_non_gaussian_jump),
         cmocka_unit_test(engine_too_many_steps),
     };
