@@ -167,22 +167,35 @@ static int substitute(const char *word, const char *scene, const char *out, char
     return 0;
 }
 
+/* The last bytes of the file at path (at most cap - 1) in text,
+ * NUL-terminated, trailing white space removed; *cut whether the file held
+ * more.  Returns their length (0 when the file cannot be read). */
+static size_t read_tail(const char *path, char *text, size_t cap, int *cut)
+{
+    text[0] = '\0';
+    *cut = 0;
+    FILE *f = fopen(path, "rb");
+    if (f == NULL)
+        return 0;
+    fseek(f, 0, SEEK_END);
+    const long size = ftell(f), want = (long)cap - 1;
+    *cut = size > want;
+    fseek(f, *cut ? size - want : 0, SEEK_SET);
+    size_t len = fread(text, 1, (size_t)want, f);
+    fclose(f);
+    text[len] = '\0';
+    while (len > 0 && strchr(" \t\r\n", text[len - 1]) != NULL)
+        text[--len] = '\0';
+    return len;
+}
+
 /* The last lines of the log (at most about 600 characters), indented. */
 static void log_tail(const char *path, char *buf, size_t cap)
 {
-    buf[0] = '\0';
-    FILE *f = fopen(path, "rb");
-    if (f == NULL)
-        return;
     char text[601];
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fseek(f, size > 600 ? size - 600 : 0, SEEK_SET);
-    size_t len = fread(text, 1, 600, f);
-    fclose(f);
-    text[len] = '\0';
-    while (len > 0 && (text[len - 1] == '\n' || text[len - 1] == ' '))
-        text[--len] = '\0';
+    int cut;
+    const size_t len = read_tail(path, text, sizeof text, &cut);
+    buf[0] = '\0';
     const char *start = text;
     int lines = 0;
     for (size_t i = len; i-- > 0;)
@@ -190,7 +203,7 @@ static void log_tail(const char *path, char *buf, size_t cap)
             start = text + i + 1;
             break;
         }
-    if (size > 600 && start == text) {   /* a cut first line */
+    if (cut && start == text) {   /* a cut first line */
         const char *nl = strchr(text, '\n');
         start = nl ? nl + 1 : text;
     }
@@ -208,19 +221,9 @@ static void log_tail(const char *path, char *buf, size_t cap)
  * trailing white space removed) in buf; "" when there is none. */
 static void last_line(const char *path, char *buf, size_t cap)
 {
-    buf[0] = '\0';
-    FILE *f = fopen(path, "rb");
-    if (f == NULL)
-        return;
     char text[1025];
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fseek(f, size > 1024 ? size - 1024 : 0, SEEK_SET);
-    size_t len = fread(text, 1, 1024, f);
-    fclose(f);
-    text[len] = '\0';
-    while (len > 0 && strchr(" \t\r\n", text[len - 1]) != NULL)
-        text[--len] = '\0';
+    int cut;
+    read_tail(path, text, sizeof text, &cut);
     const char *nl = strrchr(text, '\n'), *line = nl ? nl + 1 : text;
     const size_t n = strlen(line) < cap - 1 ? strlen(line) : cap - 1;
     memcpy(buf, line, n);
