@@ -95,6 +95,18 @@ size_t vfy_variant_count(const vfy_case_desc *d)
     return count ? count : 1;
 }
 
+/* Variant k of d ("NAME: SET;SET"): its name into name ("" for a case
+ * without variants); returns its settings, or NULL. */
+static const char *variant_parts(const vfy_case_desc *d, size_t k, char *name, size_t len)
+{
+    name[0] = '\0';
+    if (d->variants == NULL || d->variants[0] == NULL)
+        return NULL;
+    const char *text = d->variants[k], *colon = strchr(text, ':');
+    snprintf(name, len, "%.*s", (int)strcspn(text, ":"), text);
+    return colon ? colon + 1 : NULL;
+}
+
 /* "NAME@*": the mean over the variants of observable NAME. */
 static int variants_mean(const vfy_row *row, const char *name, size_t len, double *mean,
                          double *ci)
@@ -677,23 +689,19 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
                                size_t msglen)
 {
     const vfy_case_desc *d = run->d;
-    size_t nvariants = 0;
-    while (d->variants && d->variants[nvariants])
-        nvariants++;
+    const size_t nvariants = vfy_variant_count(d);
     if (nvariants > 1 && (row->more = calloc(nvariants - 1, sizeof *row->more)) == NULL) {
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
     sim_status status = SIM_OK;
-    for (size_t k = 0; k < (nvariants ? nvariants : 1) && status == SIM_OK; k++) {
-        char variant[64] = "", suffix[68] = "", label[160];
-        if (nvariants > 0) {
-            const char *text = d->variants[k], *colon = strchr(text, ':');
-            snprintf(variant, sizeof variant, "%.*s", (int)strcspn(text, ":"), text);
+    for (size_t k = 0; k < nvariants && status == SIM_OK; k++) {
+        char variant[64], suffix[68] = "", label[160];
+        const char *sets = variant_parts(d, k, variant, sizeof variant);
+        if (variant[0]) {
             if (k > 0)
                 snprintf(suffix, sizeof suffix, "@%s", variant);
-            if ((status = row_scenes(run, s, row, colon ? colon + 1 : NULL, msg, msglen))
-                != SIM_OK)
+            if ((status = row_scenes(run, s, row, sets, msg, msglen)) != SIM_OK)
                 break;
         }
         vfy_expand(label, sizeof label, row_label_template(d), run, row);
@@ -1421,9 +1429,7 @@ static sim_status dry_run_case(const vfy_case *c, const vfy_options *o, char *ms
         return SIM_EIO;
     }
     FILE *out = o->dry_run;
-    size_t nvariants = 0;
-    while (d->variants && d->variants[nvariants])
-        nvariants++;
+    const size_t nvariants = vfy_variant_count(d);
     fprintf(out, "== %s (%s sizes): %zu rows%s, the scenes in %s/\n", c->name,
             o->size == VFY_QUICK ? "quick" : "paper", rows,
             d->no_simulation ? " (references only: nothing to simulate)" : "", dir);
@@ -1432,16 +1438,10 @@ static sim_status dry_run_case(const vfy_case *c, const vfy_options *o, char *ms
     for (size_t i = 0; i < rows && status == SIM_OK && !d->no_simulation; i++) {
         *row = (vfy_row){.index = i, .run = &run};
         run.nrows = 1;
-        for (size_t k = 0; k < (nvariants ? nvariants : 1) && status == SIM_OK; k++) {
-            char variant[64] = "";
-            const char *colon = NULL;
-            if (nvariants > 0) {
-                snprintf(variant, sizeof variant, "%.*s", (int)strcspn(d->variants[k], ":"),
-                         d->variants[k]);
-                colon = strchr(d->variants[k], ':');
-            }
-            if ((status = row_scenes(&run, s, row, colon ? colon + 1 : NULL, msg, msglen))
-                != SIM_OK)
+        for (size_t k = 0; k < nvariants && status == SIM_OK; k++) {
+            char variant[64];
+            const char *sets = variant_parts(d, k, variant, sizeof variant);
+            if ((status = row_scenes(&run, s, row, sets, msg, msglen)) != SIM_OK)
                 break;
             vfy_values_set(&row->values, "index", (double)i);
             vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
