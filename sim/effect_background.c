@@ -57,12 +57,12 @@ typedef struct background_state {
     double rate;
 } background_state;
 
-static int background_needs_bound(const sim_effect *e)
+static int background_needs_bound(const sim_event *e)
 {
     return ((const background_params *)e->params)->hard_spheres;
 }
 
-static int background_centre(const sim_effect *e, double centre[3])
+static int background_centre(const sim_event *e, double centre[3])
 {
     const background_params *p = e->params;
     if (!p->hard_spheres)
@@ -83,13 +83,13 @@ static inline double follow_bound(const background_params *p, background_state *
     return s->rate;
 }
 
-static double background_rate(const sim_effect *e, const sim_run *run, void *vstate)
+static double background_rate(const sim_event *e, const sim_run *run, void *vstate)
 {
     const background_params *p = e->params;
     return p->hard_spheres ? follow_bound(p, vstate, run) : p->rate_maxwell;
 }
 
-static double background_reset(const sim_effect *e, sim_run *run, void *vstate, double horizon)
+static double background_reset(const sim_event *e, sim_run *run, void *vstate, double horizon)
 {
     (void)horizon;   /* the engine has added the flow's reach to the bound */
     const background_params *p = e->params;
@@ -105,7 +105,7 @@ static double background_reset(const sim_effect *e, sim_run *run, void *vstate, 
 /* One candidate background collision at time t; hard_spheres, lazy_flow and
  * bounded are compile-time constants in each instance below. */
 static inline __attribute__((always_inline)) double
-fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t, const int hard_spheres,
+fire_candidate(const sim_event *e, sim_run *run, void *vstate, double t, const int hard_spheres,
                const int lazy_flow, const int bounded, const int sums)
 {
     const background_params *p = e->params;
@@ -162,7 +162,7 @@ fire_candidate(const sim_effect *e, sim_run *run, void *vstate, double t, const 
 }
 
 #define FIRE_INSTANCE(name, hard_spheres, lazy, bounded, sums)                               \
-    static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
+    static double name(const sim_event *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
         return fire_candidate(e, run, state, t, hard_spheres, lazy, bounded, sums);          \
     }
@@ -181,7 +181,7 @@ FIRE_INSTANCE(fire_hard_spheres_sums, 1, 0, 1, 1)
 FIRE_INSTANCE(fire_hard_spheres_flow_sums, 1, 1, 1, 1)
 
 /* The instance for the engine's shape, [sums][bounded][lazy_flow]. */
-static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int bounded,
+static sim_event_fire_fn select_instance(const sim_event *e, int lazy_flow, int bounded,
                                          int sums)
 {
     static const sim_event_fire_fn maxwell[2][2][2] = {
@@ -196,18 +196,22 @@ static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int
     return p->hard_spheres ? hard_spheres[k][l] : maxwell[k][b][l];
 }
 
-static sim_event_fire_fn background_select_fire(const sim_effect *e, int lazy_flow, int bounded)
+static sim_event_fire_fn background_select_fire(const sim_event *e, int lazy_flow, int bounded)
 {
     return select_instance(e, lazy_flow, bounded, 0);
 }
 
-static sim_event_fire_fn background_select_fire_sums(const sim_effect *e, int lazy_flow,
+static sim_event_fire_fn background_select_fire_sums(const sim_event *e, int lazy_flow,
                                                      int bounded)
 {
     return select_instance(e, lazy_flow, bounded, 1);
 }
 
-static const sim_effect_type background_type = {
+static const sim_event_fast background_fast = {
+    .select_fire_sums = background_select_fire_sums,
+};
+
+static const sim_event_type background_type = {
     .name = "background",
     .state_size = sizeof(background_state),
     .needs_bound = background_needs_bound,
@@ -215,10 +219,10 @@ static const sim_effect_type background_type = {
     .reset = background_reset,
     .rate = background_rate,
     .select_fire = background_select_fire,
-    .select_fire_sums = background_select_fire_sums,
+    .fast = &background_fast,
 };
 
-sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim_error *err)
+sim_status sim_effect_background(const sim_scene *scene, sim_event *effect, sim_error *err)
 {
     const double grain_mass = sim_scene_grain_mass(scene);
     if (scene->background.kernel != SIM_KERNEL_MAXWELL
@@ -240,6 +244,6 @@ sim_status sim_effect_background(const sim_scene *scene, sim_effect *effect, sim
     p->rate_maxwell = 4.0 * M_PI * c1_rho_n;
     p->rate_a = 4.0 * M_PI * c1_rho_n;
     p->rate_b = 8.0 * sqrt(M_PI) * p->b * c1_rho_n;
-    *effect = (sim_effect){.type = &background_type, .params = p};
+    *effect = (sim_event){.type = &background_type, .params = p};
     return SIM_OK;
 }

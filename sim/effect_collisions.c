@@ -86,6 +86,12 @@ typedef struct collisions_params {
                            U_max, 1 / (8 pi gamma C (n - 1)) by the contact rule and
                            1 / (2 pi gamma C (n - 1)) by |g| (collisions.rule) */
     int contact;        /* ... the contact rule (paper C), else |g| (paper A) */
+    /* The Lees-Edwards slab (collisions_layer): a layer's candidate rate per
+     * ordered pair and unit of w_I = 2 R_I, 2 pi gamma C beta M/N, and its
+     * ordered pairs N_I (N_I - pair_offset) (pair_offset 0: paper E's N_I^2,
+     * shear.candidates = paper) */
+    double layer_kappa;
+    size_t pair_offset;
 } collisions_params;
 
 typedef struct collisions_state {
@@ -119,12 +125,12 @@ static inline double follow_bound(const collisions_params *p, collisions_state *
     return s->rate;
 }
 
-static int collisions_needs_bound(const sim_effect *e)
+static int collisions_needs_bound(const sim_event *e)
 {
     return ((const collisions_params *)e->params)->lambda != 0.0;
 }
 
-static double collisions_rate(const sim_effect *e, const sim_run *run, void *vstate)
+static double collisions_rate(const sim_event *e, const sim_run *run, void *vstate)
 {
     const collisions_params *p = e->params;
     if (p->lambda == 0.0)
@@ -132,12 +138,12 @@ static double collisions_rate(const sim_effect *e, const sim_run *run, void *vst
     return follow_bound(p, vstate, run);
 }
 
-static double collisions_reset(const sim_effect *e, sim_run *run, void *vstate, double horizon)
+static double collisions_reset(const sim_event *e, sim_run *run, void *vstate, double horizon)
 {
     /* the engine has added the flow's reach to the bound; velocities this
      * process changes get the same margin (cover_moving) */
     collisions_state *s = vstate;
-    const sim_effect *flow = run->flow;
+    const sim_flow *flow = run->flow;
     s->margin = flow ? flow->type->reach(flow, horizon) : 0.0;
     s->margin_vy = flow && flow->type->reach_vy ? flow->type->reach_vy(flow, horizon) : 0.0;
     if (!s->started) {   /* the first reset of a run, after the initial state */
@@ -220,7 +226,7 @@ static inline double bounded_distance(const collisions_params *p, collisions_sta
 /* One candidate hard-sphere collision at time t (paper A Algorithm, steps
  * 2.3-2.10, with the two-stage acceptance of the header comment). */
 static inline __attribute__((always_inline)) double
-fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate, double t,
+fire_hard_spheres_at(const sim_event *e, sim_run *run, void *vstate, double t,
                      const int lazy_flow, const int sums)
 {
     const collisions_params *p = e->params;
@@ -265,7 +271,7 @@ fire_hard_spheres_at(const sim_effect *e, sim_run *run, void *vstate, double t,
  * lazy_flow and bounded are constants in each instance below (bounded is
  * implied by kernel == KERNEL_VHS). */
 static inline __attribute__((always_inline)) double
-fire_uniform_pair(const sim_effect *e, sim_run *run, void *vstate, double t,
+fire_uniform_pair(const sim_event *e, sim_run *run, void *vstate, double t,
                   const enum kernel_case kernel, const int lazy_flow, const int bounded,
                   const int sums)
 {
@@ -310,7 +316,7 @@ fire_uniform_pair(const sim_effect *e, sim_run *run, void *vstate, double t,
 }
 
 #define FIRE_INSTANCE(name, kernel, lazy, bounded, sums)                                     \
-    static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
+    static double name(const sim_event *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
         return fire_uniform_pair(e, run, state, t, kernel, lazy, bounded, sums);             \
     }
@@ -329,7 +335,7 @@ FIRE_INSTANCE(fire_vhs_sums, KERNEL_VHS, 0, 1, 1)
 FIRE_INSTANCE(fire_vhs_flow_sums, KERNEL_VHS, 1, 1, 1)
 
 #define FIRE_HS_INSTANCE(name, lazy, sums)                                                  \
-    static double name(const sim_effect *e, sim_run *run, void *state, double t)           \
+    static double name(const sim_event *e, sim_run *run, void *state, double t)           \
     {                                                                                        \
         return fire_hard_spheres_at(e, run, state, t, lazy, sums);                           \
     }
@@ -343,7 +349,7 @@ FIRE_HS_INSTANCE(fire_hard_spheres_flow_current_sums, 1, 1)
  * keep-temperature rescaling; with white noise their jump scheme passes over
  * the particles at every output time for the bound anyway): NULL with one,
  * and the engine then observes conditionally from the particles. */
-static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int bounded,
+static sim_event_fire_fn select_instance(const sim_event *e, int lazy_flow, int bounded,
                                          int sums)
 {
     static const sim_event_fire_fn maxwell[2][2][2] = {
@@ -360,12 +366,12 @@ static sim_event_fire_fn select_instance(const sim_effect *e, int lazy_flow, int
                                                                  : vhs[k][l];
 }
 
-static sim_event_fire_fn collisions_select_fire(const sim_effect *e, int lazy_flow, int bounded)
+static sim_event_fire_fn collisions_select_fire(const sim_event *e, int lazy_flow, int bounded)
 {
     return select_instance(e, lazy_flow, bounded, 0);
 }
 
-static sim_event_fire_fn collisions_select_fire_sums(const sim_effect *e, int lazy_flow,
+static sim_event_fire_fn collisions_select_fire_sums(const sim_event *e, int lazy_flow,
                                                      int bounded)
 {
     return select_instance(e, lazy_flow, bounded, 1);
@@ -373,7 +379,7 @@ static sim_event_fire_fn collisions_select_fire_sums(const sim_effect *e, int la
 
 /* Sums at the candidates' time under a deterministic lazy flow (effect.h):
  * hard spheres only (paper E's sheared EHS gas), NULL otherwise. */
-static sim_event_fire_fn collisions_select_fire_current_sums(const sim_effect *e)
+static sim_event_fire_fn collisions_select_fire_current_sums(const sim_event *e)
 {
     const collisions_params *p = e->params;
     return p->lambda == 1.0 ? fire_hard_spheres_flow_current_sums : NULL;
@@ -491,7 +497,7 @@ batched_hard_spheres(const collisions_params *p, collisions_state *s, sim_run *r
 
 /* The jump scheme's fast path (effect.h: the only event process, no lazy
  * flow): stops after a collision that grows the bound. */
-static uint64_t fire_many_hard_spheres(const sim_effect *e, sim_run *run, void *vstate,
+static uint64_t fire_many_hard_spheres(const sim_event *e, sim_run *run, void *vstate,
                                        uint64_t max, double *rate)
 {
     const collisions_params *p = e->params;
@@ -504,7 +510,7 @@ static uint64_t fire_many_hard_spheres(const sim_effect *e, sim_run *run, void *
 
 /* The fast path for Maxwell molecules: every candidate collides and the rate
  * never changes. */
-static uint64_t fire_many_maxwell(const sim_effect *e, sim_run *run, void *vstate, uint64_t max,
+static uint64_t fire_many_maxwell(const sim_event *e, sim_run *run, void *vstate, uint64_t max,
                                   double *rate)
 {
     const collisions_params *p = e->params;
@@ -528,7 +534,7 @@ static uint64_t fire_many_maxwell(const sim_effect *e, sim_run *run, void *vstat
     return max;
 }
 
-static sim_event_fire_many_fn collisions_select_fire_many(const sim_effect *e)
+static sim_event_fire_many_fn collisions_select_fire_many(const sim_event *e)
 {
     const collisions_params *p = e->params;
     return p->lambda == 0.0 ? fire_many_maxwell
@@ -542,7 +548,7 @@ static sim_event_fire_many_fn collisions_select_fire_many(const sim_effect *e)
  * collision grows the bound, the stage time left is spent at the new U_max.
  * contact and sums (keep run->sums current) are constants in each instance. */
 static inline __attribute__((always_inline)) void
-stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h, const int contact,
+stage_hard_spheres(const sim_event *e, sim_run *run, void *vstate, double h, const int contact,
                    const int sums)
 {
     const collisions_params *p = e->params;
@@ -568,7 +574,7 @@ stage_hard_spheres(const sim_effect *e, sim_run *run, void *vstate, double h, co
 }
 
 #define STAGE_HS_INSTANCE(name, contact, sums)                                      \
-    static void name(const sim_effect *e, sim_run *run, void *state, double h)      \
+    static void name(const sim_event *e, sim_run *run, void *state, double h)      \
     {                                                                               \
         stage_hard_spheres(e, run, state, h, contact, sums);                        \
     }
@@ -581,7 +587,7 @@ STAGE_HS_INSTANCE(stage_hs_speed_sums, 0, 1)
  * (NULL): the engine's stage fires their jump-scheme candidates (paper A's
  * rule: a uniform pair, accepted with (|g|/U_max)^lambda, e uniform) at the
  * majorant rate for the stage time (engine.c, stage_fired). */
-static sim_event_stage_fn collisions_select_stage(const sim_effect *e, int sums)
+static sim_event_stage_fn collisions_select_stage(const sim_event *e, int sums)
 {
     const collisions_params *p = e->params;
     if (p->lambda != 1.0)
@@ -591,20 +597,90 @@ static sim_event_stage_fn collisions_select_stage(const sim_effect *e, int sums)
     return sums ? stage_hs_speed_sums : stage_hs_speed;
 }
 
-static const sim_effect_type collisions_type = {
+/* With a lazy flow the engine fires the jump scheme's candidates in the
+ * stages: the same algorithm but for the contact rule of hard spheres, which
+ * only the batched stage draws. */
+static int collisions_fires_candidates(const sim_event *e)
+{
+    const collisions_params *p = e->params;
+    return !(p->lambda == 1.0 && p->contact);
+}
+
+/* The Lees-Edwards slab's layer of count particles from lo (docs/theory.md
+ * §6.3, scheme_slab.c): candidates at kappa P_I w_I, P_I the layer's ordered
+ * pairs and w_I = 2 R_I, by exponential waiting times, so that the number in
+ * a step is exact in distribution whatever the layer held in the steps
+ * before (a remainder carried between steps, Bird's, biases the rate by
+ * O(1/N_I) when N_I changes from step to step: +10% at N_I = 10,
+ * tests/test_sim_slab.c).  A candidate is a uniform ordered pair, accepted
+ * with |g|/w_I, and collides by paper A's rule with e uniform (equal in
+ * distribution to the contact rule, docs/theory.md §3.2).  When a collision
+ * grows R_I, the rest of the step runs at the new rate (memoryless). */
+static void collisions_layer(const sim_event *e, sim_run *run, size_t lo, size_t count,
+                             const double u[3], double *radius, double h)
+{
+    const collisions_params *p = e->params;
+    gsl_rng *rng = run->rng;
+    double R = *radius;
+    const double pairs = (double)count * (double)(count - p->pair_offset);
+    double rate = p->layer_kappa * pairs * 2.0 * R;
+    for (double t = sim_rng_exponential(rng, rate); t < h; t += sim_rng_exponential(rng, rate)) {
+        run->counts.candidates++;
+        size_t i, j;
+        sim_pick_pair_in(rng, lo, count, &i, &j);
+        double *vi = run->p.v[i], *vj = run->p.v[j];
+        const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+        const double gnorm = sim_norm3(g);
+        if (!(sim_rng_uniform(rng) * 2.0 * R < gnorm))
+            continue;
+        double unit[3];
+        sim_rng_unit_sphere(rng, unit);
+        sim_collide_inelastic(vi, vj, p->alpha, gnorm, unit);
+        run->counts.collisions++;
+        /* the layer's bound covers both new velocities */
+        const double di[3] = {vi[0] - u[0], vi[1] - u[1], vi[2] - u[2]};
+        const double dj[3] = {vj[0] - u[0], vj[1] - u[1], vj[2] - u[2]};
+        const double a = fmax(sim_norm3(di), sim_norm3(dj));
+        if (a > R) {
+            R = a;
+            rate = p->layer_kappa * pairs * 2.0 * R;
+        }
+    }
+    *radius = R;
+}
+
+/* Covariant under a linear map of the velocities: the rate as |g|^lambda. */
+static double collisions_rate_exponent(const sim_event *e)
+{
+    const collisions_params *p = e->params;
+    return p->lambda;
+}
+
+static const sim_event_fast collisions_fast = {
+    .select_fire_sums = collisions_select_fire_sums,
+    .select_fire_current_sums = collisions_select_fire_current_sums,
+    .select_fire_many = collisions_select_fire_many,
+};
+
+static const sim_event_stages collisions_stages = {
+    .select = collisions_select_stage,
+    .fires_candidates = collisions_fires_candidates,
+    .layer = collisions_layer,
+};
+
+static const sim_event_type collisions_type = {
     .name = "collisions",
     .state_size = sizeof(collisions_state),
     .needs_bound = collisions_needs_bound,
     .reset = collisions_reset,
     .rate = collisions_rate,
     .select_fire = collisions_select_fire,
-    .select_fire_sums = collisions_select_fire_sums,
-    .select_fire_current_sums = collisions_select_fire_current_sums,
-    .select_stage = collisions_select_stage,
-    .select_fire_many = collisions_select_fire_many,
+    .rate_exponent = collisions_rate_exponent,
+    .fast = &collisions_fast,
+    .stages = &collisions_stages,
 };
 
-sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim_error *err)
+sim_status sim_effect_collisions(const sim_scene *scene, sim_event *effect, sim_error *err)
 {
     collisions_params *p = malloc(sizeof *p);
     if (p == NULL)
@@ -619,6 +695,10 @@ sim_status sim_effect_collisions(const sim_scene *scene, sim_effect *effect, sim
                    * (double)(scene->particles.n - 1) * sim_scene_collision_rate_factor(scene);
     p->contact = scene->collisions.rule == SIM_RULE_CONTACT;
     p->stage_time = p->contact ? 1.0 / (4.0 * p->prefactor) : 1.0 / p->prefactor;
-    *effect = (sim_effect){.type = &collisions_type, .params = p};
+    p->layer_kappa = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
+                     * sim_scene_collision_rate_factor(scene) * (double)scene->shear.layers
+                     / (double)scene->particles.n;
+    p->pair_offset = scene->shear.candidates == SIM_SLAB_PAIRS_PAPER ? 0 : 1;
+    *effect = (sim_event){.type = &collisions_type, .params = p};
     return SIM_OK;
 }

@@ -24,7 +24,7 @@ typedef struct drag_params {
     double shear_rate;    /* a, for the sheared drag (below) */
 } drag_params;
 
-static void drag_step(const sim_effect *e, sim_run *run, double h)
+static void drag_step(const sim_flow *e, sim_run *run, double h)
 {
     const drag_params *p = e->params;
     const size_t n = run->p.n;
@@ -52,9 +52,22 @@ static void drag_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
-static const sim_effect_type drag_type = {
+/* The Lees-Edwards slab's layer (E Eq. 4.12): the drag about the layer's
+ * velocity u_I at its temperature, zeta_I = zeta0(T_I) n_I/n. */
+static void drag_step_layer(const sim_flow *e, double (*v)[3], size_t count, const double u[3],
+                            double theta, double density, double h)
+{
+    const drag_params *p = e->params;
+    const double f = exp(-0.5 * p->zeta_factor * sqrt(theta) * density * h);
+    for (size_t i = 0; i < count; i++)
+        for (int c = 0; c < 3; c++)
+            v[i][c] = u[c] + f * (v[i][c] - u[c]);
+}
+
+static const sim_flow_type drag_type = {
     .name = "drag",
     .step = drag_step,
+    .step_layer = drag_step_layer,
 };
 
 /* Paper E's EHS gas under the homogeneous shear (issue 18), in one of two
@@ -68,7 +81,7 @@ static const sim_effect_type drag_type = {
  *    shear is applied to a particle when a stage draws it (advance, as
  *    effect_shear.c alone) and the drag, a scaling about the mean velocity
  *    with which collisions and the shear commute, is one global factor
- *    (linear_factor, run->scale), so a step costs O(1) plus its collisions;
+ *    (its linear map, run->scale), so a step costs O(1) plus its collisions;
  *    the jump scheme keeps the same two, with the scale's exact map between
  *    candidates (scale_after).
  *
@@ -96,7 +109,7 @@ static double drag_factor(const drag_params *p, const sim_sums *s, size_t n, dou
     return theta > 0.0 ? exp(-0.5 * p->zeta_factor * sqrt(theta) * h) : 1.0;
 }
 
-static void sheared_drag_step(const sim_effect *e, sim_run *run, double h)
+static void sheared_drag_step(const sim_flow *e, sim_run *run, double h)
 {
     const drag_params *p = e->params;
     sim_sums *s = &run->sums;
@@ -135,26 +148,26 @@ static void sheared_drag_step(const sim_effect *e, sim_run *run, double h)
  * |a| dt |V_y|, the sums' shear, and the drag's factor for the velocities
  * u + run->scale (v - u) at the end of a step of h whose shear the sums
  * already hold. */
-static void sheared_drag_advance(const sim_effect *e, double v[3], double dt, gsl_rng *rng)
+static void sheared_drag_advance(const sim_flow *e, double v[3], double dt, gsl_rng *rng)
 {
     (void)rng;
     const drag_params *p = e->params;
     sim_shear_velocity(v, p->shear_rate * dt);
 }
 
-static double sheared_drag_reach_vy(const sim_effect *e, double dt)
+static double sheared_drag_reach_vy(const sim_flow *e, double dt)
 {
     const drag_params *p = e->params;
     return fabs(p->shear_rate) * dt;
 }
 
-static void sheared_drag_advance_sums(const sim_effect *e, sim_sums *s, double dt)
+static void sheared_drag_advance_sums(const sim_flow *e, sim_sums *s, double dt)
 {
     const drag_params *p = e->params;
     sim_shear_sums(s, p->shear_rate * dt);
 }
 
-static double sheared_drag_factor(const sim_effect *e, const sim_run *run, double h)
+static double sheared_drag_factor(const sim_flow *e, const sim_run *run, double h)
 {
     return drag_factor(e->params, &run->sums, run->p.n, run->scale, h);
 }
@@ -171,7 +184,7 @@ static double sheared_drag_factor(const sim_effect *e, const sim_run *run, doubl
  * candidates of any but the smallest systems). */
 #define DRAG_PANEL_VARIATION 0.01
 #define DRAG_PANELS_MAX 4096
-static double sheared_drag_scale_after(const sim_effect *e, const sim_run *run, double dt)
+static double sheared_drag_scale_after(const sim_flow *e, const sim_run *run, double dt)
 {
     const drag_params *p = e->params;
     const sim_sums *s = &run->sums;
@@ -200,24 +213,28 @@ static double sheared_drag_scale_after(const sim_effect *e, const sim_run *run, 
     return 1.0 / (1.0 / run->scale + 0.5 * p->zeta_factor * integral);
 }
 
-static const sim_effect_type sheared_drag_type = {
+static const sim_linear_map sheared_drag_map = {
+    .factor = sheared_drag_factor,
+    .centred = 1,
+    .reads_sums = 1,
+    .advance_sums = sheared_drag_advance_sums,
+    .scale_after = sheared_drag_scale_after,
+};
+
+static const sim_flow_type sheared_drag_type = {
     .name = "shear+drag",
     .step = sheared_drag_step,
     .step_reads_sums = 1,
     .advance = sheared_drag_advance,
     .reach = sim_reach_none,
     .reach_vy = sheared_drag_reach_vy,
-    .advance_sums = sheared_drag_advance_sums,
-    .linear_factor = sheared_drag_factor,
-    .linear_centred = 1,
-    .linear_reads_sums = 1,
-    .scale_after = sheared_drag_scale_after,
+    .linear = &sheared_drag_map,
 };
 
-static sim_status drag_create(const sim_scene *scene, sim_effect *effect, sim_error *err);
+static sim_status drag_create(const sim_scene *scene, sim_flow *effect, sim_error *err);
 
 /* In either scheme: the jump scheme runs it exactly (scale_after). */
-sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_effect *effect,
+sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_flow *effect,
                                        sim_error *err)
 {
     sim_status status = drag_create(scene, effect, err);
@@ -229,7 +246,7 @@ sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_effect *effec
 }
 
 /* Alone (no shear) only in the time-step scheme. */
-sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_effect *effect, sim_error *err)
+sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_flow *effect, sim_error *err)
 {
     if (scene->scheme != SIM_SCHEME_TIMESTEP)
         return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.model",
@@ -238,7 +255,7 @@ sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_effect *effect, sim_e
     return drag_create(scene, effect, err);
 }
 
-static sim_status drag_create(const sim_scene *scene, sim_effect *effect, sim_error *err)
+static sim_status drag_create(const sim_scene *scene, sim_flow *effect, sim_error *err)
 {
     if (scene->collisions.exponent != 1.0)
         return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.model",
@@ -251,6 +268,6 @@ static sim_status drag_create(const sim_scene *scene, sim_effect *effect, sim_er
     p->zeta_factor = 2.0 / (3.0 * sqrt(M_PI)) * (1.0 - alpha * alpha) * sqrt(2.0)
                      / sim_scene_mean_free_path(scene);
     p->shear_rate = 0.0;
-    *effect = (sim_effect){.type = &drag_type, .params = p};
+    *effect = (sim_flow){.type = &drag_type, .params = p};
     return SIM_OK;
 }

@@ -36,7 +36,7 @@ typedef struct heat_flux_params {
     double target;     /* T0/m */
 } heat_flux_params;
 
-static void heat_flux_step(const sim_effect *e, sim_run *run, double h)
+static void heat_flux_step(const sim_flow *e, sim_run *run, double h)
 {
     const heat_flux_params *p = e->params;
     const size_t n = run->p.n;
@@ -67,12 +67,12 @@ static void heat_flux_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
-static const sim_effect_type heat_flux_type = {
+static const sim_flow_type heat_flux_type = {
     .name = "heat-flux",
     .step = heat_flux_step,
 };
 
-sim_status sim_effect_heat_flux(const sim_scene *scene, sim_effect *effect, sim_error *err)
+sim_status sim_effect_heat_flux(const sim_scene *scene, sim_flow *effect, sim_error *err)
 {
     const sim_maxwellian *m = &scene->particles.maxwellian;
     if (scene->scheme != SIM_SCHEME_TIMESTEP)
@@ -93,6 +93,6 @@ sim_status sim_effect_heat_flux(const sim_scene *scene, sim_effect *effect, sim_
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     p->strength = scene->heat_flux.strength;
     p->target = m->temperature / m->mass;
-    *effect = (sim_effect){.type = &heat_flux_type, .params = p};
+    *effect = (sim_flow){.type = &heat_flux_type, .params = p};
     return SIM_OK;
 }

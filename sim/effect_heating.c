@@ -18,7 +18,7 @@
  * with k = (1/n) Σ v̂_j (Eq. (62)), so the total momentum is kept to round-off.
  * It couples the particles (through k), so it has only `step`.
  *
- * The Gaussian thermostats are linear maps (linear_factor): the engine keeps
+ * The Gaussian thermostats are linear maps (sim_linear_map): the engine keeps
  * one global factor instead of stepping every particle.  The jump scheme runs
  * white noise, the Gaussian thermostat exactly (a fixed zeta: candidates at a
  * rate growing as e^{lambda zeta t}; keep_temperature: the rescaling after
@@ -39,7 +39,7 @@ typedef struct heating_params {
 
 /* ------------------------------------------------------------ white noise */
 
-static void white_noise_advance(const sim_effect *e, double v[3], double dt, gsl_rng *rng)
+static void white_noise_advance(const sim_flow *e, double v[3], double dt, gsl_rng *rng)
 {
     const heating_params *p = e->params;
     double xi[3], s = sqrt(2.0 * p->strength * dt);
@@ -49,7 +49,7 @@ static void white_noise_advance(const sim_effect *e, double v[3], double dt, gsl
     v[2] += s * xi[2];
 }
 
-static void white_noise_step(const sim_effect *e, sim_run *run, double h)
+static void white_noise_step(const sim_flow *e, sim_run *run, double h)
 {
     const heating_params *p = e->params;
     const double s = sqrt(2.0 * p->strength * h);
@@ -71,20 +71,20 @@ static void white_noise_step(const sim_effect *e, sim_run *run, double h)
  * hard-sphere majorant (effect_collisions.c) needs |v_i - c| <= R for each
  * drawn particle, and at 4 sigma (P(chi_3 > 4) = 1.1e-3) particles of a gas
  * much colder than the heating outran the bound. */
-static double white_noise_reach(const sim_effect *e, double dt)
+static double white_noise_reach(const sim_flow *e, double dt)
 {
     const heating_params *p = e->params;
     return 7.0 * sqrt(2.0 * p->strength * dt);
 }
 
 /* The increment over dt is N(0, 2 beta dt) per component. */
-static double white_noise_spread(const sim_effect *e)
+static double white_noise_spread(const sim_flow *e)
 {
     const heating_params *p = e->params;
     return 2.0 * p->strength;
 }
 
-static const sim_effect_type white_noise_type = {
+static const sim_flow_type white_noise_type = {
     .name = "heating",
     .advance = white_noise_advance,
     .step = white_noise_step,
@@ -94,7 +94,7 @@ static const sim_effect_type white_noise_type = {
 
 /* --------------------------------------------------------------- Gaussian */
 
-static void gaussian_step(const sim_effect *e, sim_run *run, double h)
+static void gaussian_step(const sim_flow *e, sim_run *run, double h)
 {
     const heating_params *p = e->params;
     const double f = exp(p->strength * h);
@@ -109,28 +109,29 @@ static void gaussian_step(const sim_effect *e, sim_run *run, double h)
 }
 
 /* v -> e^{zeta h} v about the origin. */
-static double gaussian_factor(const sim_effect *e, const sim_run *run, double h)
+static double gaussian_factor(const sim_flow *e, const sim_run *run, double h)
 {
     (void)run;
     const heating_params *p = e->params;
     return exp(p->strength * h);
 }
 
-static double gaussian_rate(const sim_effect *e)
+static double gaussian_rate(const sim_flow *e)
 {
     const heating_params *p = e->params;
     return p->strength;
 }
 
-static const sim_effect_type gaussian_type = {
+static const sim_linear_map gaussian_map = {.factor = gaussian_factor, .rate = gaussian_rate};
+
+static const sim_flow_type gaussian_type = {
     .name = "heating",
     .step = gaussian_step,
-    .linear_factor = gaussian_factor,
-    .linear_rate = gaussian_rate,
+    .linear = &gaussian_map,
 };
 
 /* Rescale the peculiar velocities so that T/m = target (h does not enter). */
-static void keep_temperature_step(const sim_effect *e, sim_run *run, double h)
+static void keep_temperature_step(const sim_flow *e, sim_run *run, double h)
 {
     (void)h;
     const heating_params *p = e->params;
@@ -160,7 +161,7 @@ static void keep_temperature_step(const sim_effect *e, sim_run *run, double h)
 /* The factor that brings T/m of the velocities o + scale f (w - o) to the
  * target, o the bulk velocity, from the sums of the stored w (h does not
  * enter): f = sqrt(target / (scale^2 theta_w)), theta_w = T_w/m. */
-static double keep_temperature_factor(const sim_effect *e, const sim_run *run, double h)
+static double keep_temperature_factor(const sim_flow *e, const sim_run *run, double h)
 {
     (void)h;
     const heating_params *p = e->params;
@@ -173,17 +174,21 @@ static double keep_temperature_factor(const sim_effect *e, const sim_run *run, d
     return sqrt(3.0 * n * p->target / c2) / run->scale;
 }
 
-static const sim_effect_type keep_temperature_type = {
+static const sim_linear_map keep_temperature_map = {
+    .factor = keep_temperature_factor,
+    .centred = 1,
+    .reads_sums = 1,
+};
+
+static const sim_flow_type keep_temperature_type = {
     .name = "heating",
     .step = keep_temperature_step,
-    .linear_factor = keep_temperature_factor,
-    .linear_centred = 1,
-    .linear_reads_sums = 1,
+    .linear = &keep_temperature_map,
 };
 
 /* ----------------------------------------------------------- non-Gaussian */
 
-static void non_gaussian_step(const sim_effect *e, sim_run *run, double h)
+static void non_gaussian_step(const sim_flow *e, sim_run *run, double h)
 {
     const heating_params *p = e->params;
     const size_t n = run->p.n;
@@ -208,16 +213,16 @@ static void non_gaussian_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
-static const sim_effect_type non_gaussian_type = {
+static const sim_flow_type non_gaussian_type = {
     .name = "heating",
     .step = non_gaussian_step,
 };
 
 /* ------------------------------------------------------------ constructor */
 
-sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_error *err)
+sim_status sim_effect_heating(const sim_scene *scene, sim_flow *effect, sim_error *err)
 {
-    const sim_effect_type *type = &white_noise_type;
+    const sim_flow_type *type = &white_noise_type;
     switch (scene->heating.type) {
     case SIM_HEATING_WHITE_NOISE:
         type = &white_noise_type;
@@ -231,7 +236,7 @@ sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_er
     }
     /* the jump scheme: a lazy flow (white noise) or a linear map kept global
      * (engine.c, run_jump_linear) */
-    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL && type->linear_factor == NULL)
+    if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL && type->linear == NULL)
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
                              "non-gaussian heating needs scene.scheme = timestep (the jump "
                              "scheme supports white-noise and gaussian)");
@@ -240,6 +245,6 @@ sim_status sim_effect_heating(const sim_scene *scene, sim_effect *effect, sim_er
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     p->strength = scene->heating.strength;
     p->target = scene->particles.maxwellian.temperature / sim_scene_grain_mass(scene);
-    *effect = (sim_effect){.type = type, .params = p};
+    *effect = (sim_flow){.type = type, .params = p};
     return SIM_OK;
 }

@@ -29,7 +29,7 @@ typedef struct shear_params {
     double rate;   /* a */
 } shear_params;
 
-static void shear_advance(const sim_effect *e, double v[3], double dt, gsl_rng *rng)
+static void shear_advance(const sim_flow *e, double v[3], double dt, gsl_rng *rng)
 {
     (void)rng;
     const shear_params *p = e->params;
@@ -45,7 +45,7 @@ void sim_shear_sums(sim_sums *s, double ah)
     s->vv[4] -= ah * s->vv[5];
 }
 
-static void shear_step(const sim_effect *e, sim_run *run, double h)
+static void shear_step(const sim_flow *e, sim_run *run, double h)
 {
     const shear_params *p = e->params;
     const double ah = p->rate * h;
@@ -57,20 +57,20 @@ static void shear_step(const sim_effect *e, sim_run *run, double h)
     }
 }
 
-double sim_reach_none(const sim_effect *e, double dt)
+double sim_reach_none(const sim_flow *e, double dt)
 {
     (void)e;
     (void)dt;
     return 0.0;
 }
 
-static double shear_reach_vy(const sim_effect *e, double dt)
+static double shear_reach_vy(const sim_flow *e, double dt)
 {
     const shear_params *p = e->params;
     return fabs(p->rate) * dt;
 }
 
-static const sim_effect_type shear_type = {
+static const sim_flow_type shear_type = {
     .name = "shear",
     .advance = shear_advance,
     .step = shear_step,
@@ -78,12 +78,12 @@ static const sim_effect_type shear_type = {
     .reach_vy = shear_reach_vy,
 };
 
-sim_status sim_effect_shear(const sim_scene *scene, sim_effect *effect, sim_error *err)
+sim_status sim_effect_shear(const sim_scene *scene, sim_flow *effect, sim_error *err)
 {
     shear_params *p = malloc(sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     p->rate = scene->shear.rate;
-    *effect = (sim_effect){.type = &shear_type, .params = p};
+    *effect = (sim_flow){.type = &shear_type, .params = p};
     return SIM_OK;
 }

@@ -1,72 +1,19 @@
-/* The engine: scene -> effects -> the exact jump scheme (docs/theory.md §8.3) or the
- * time-step scheme (docs/theory.md §8.5).
+/* The DSMC engine (docs/theory.md §8): scene -> the registry's effects ->
+ * a scheme.
  *
- * The jump scheme simulates the Markov jump process without time splitting
- * (paper A §3, paper B §3): candidate events arrive at rate pi_hat = Σ of the event
- * processes' majorant rates, each is fired by its process (accepted or
- * fictitious), and the one lazy flow (white-noise heating, or the homogeneous
- * shear when it is the only flow) is applied to a particle only when an event
- * touches it or at an output time.  At each output time every
- * particle is brought to that time, the observables are recorded, and the
- * majorants are recomputed from the synchronised system; the pending waiting
- * time is then redrawn, which is exact because the waiting times are
- * exponential (memoryless).  When an event process needs the velocity bound,
- * the bound is also recomputed between output times, about every
- * LAZY_REBOUND_SWEEPS n candidates, without bringing any particle: each
- * carries the flow's reach from its own stamp (lazy_reset).  With
- * scene.observation = conditional nothing is brought: T .. Pyz are the exact
- * expectations over the pending increments, from running sums the events
- * keep (observe.h, sim_sums; recomputed every REBOUND_SWEEPS n candidates).
- * The loop is chosen when the engine is built:
- *
- *  - with a lazy flow (run_jump_timed) every candidate needs its time, so
- *    the waiting times are drawn one by one, tau = -ln(U) / pi_hat;
- *
- *  - without one (run_jump_counted) no candidate needs its time, only how many
- *    fall before the next output time.  pi_hat is constant between the
- *    candidates that change it (a collision that grows the velocity bound),
- *    so the candidates of (t, t_out] are a Poisson number K of rate
- *    pi_hat (t_out - t), fired one after another without any waiting time.
- *    When candidate k of K changes the rate, its time is the k-th of K
- *    uniform points on (t, t_out], t_k = t + (t_out - t) Beta(k, K - k + 1)
- *    (the outcomes of candidates 1..k do not depend on their times); the rest
- *    of the span starts afresh from t_k at the new rate (the process is
- *    Markov and its arrival times are stopping times).  No logarithm per
- *    candidate, and a process that is alone may fire its candidates in its
- *    own loop (effect.h, fire_many).  In these runs the system is always
- *    synchronised, so every REBOUND_SWEEPS n candidates the bound is also
- *    recomputed from scratch (the same change of rate): it follows the
- *    current largest speed instead of the largest ever seen, and the
- *    majorants stay tight.
- *
- * The time-step scheme (Bird; paper C §3) advances the whole system in steps
- * of h, the largest h <= scene.dt that divides the interval between output
- * times, so output times fall on step boundaries.  A step composes the event
- * processes' stages (collisions for h) and the flow's step (free flight with
- * the thermostat) by Lie splitting, collisions then flow (paper C's order,
- * "euler", first order in h), or Strang splitting, flow h/2, collisions h,
- * flow h/2 (second order); the engine picks the step function once.  The
- * velocity bound is recomputed from scratch at each output time and grows
- * (sim_run_cover) whenever a stage moves a velocity beyond it.  When white
- * noise or the homogeneous shear is the only flow and the stages fire the
- * jump scheme's candidates (collisions.rule = relative-speed, or a kernel
- * other than hard spheres) it is lazy here too (interval_lazy), and a step
- * costs O(1) plus its collisions; a Gaussian thermostat alone is a linear
- * map kept global (stages_scaled, apply_linear), which the jump scheme also
- * runs, exactly (run_jump_linear); paper E's sheared EHS gas is both, the
- * shear lazy and the drag a global map (current_sums, lazy_linear_flow), in
- * the jump scheme too (run_jump_lazy_linear).
- *
- * The Lees-Edwards slab (shear.boundary = lees-edwards, slab.h) is the
- * time-step scheme with positions: its own ordered stages per step (streaming
- * with the wrap, the sort into layers, the layer fields, collisions within
- * layers) replace the homogeneous events and flows, and its observer takes T
- * and P against the layers' velocities; the steady observers see those
- * peculiar velocities.
- *
- * Steady-state observers (steady.h), when the scene has [steady], sample at
- * the output times t >= steady.from in either scheme, after the standard
- * observables; pair sampling uses its own random substream.
+ * The engine walks the registry (registry.h) to build the effects the scene
+ * names, as type objects (effect.h), and resolves once, from what their types
+ * offer, how the scheme runs them: which flow is lazy (brought forward per
+ * particle: white noise, the homogeneous shear), which is a linear map kept
+ * global (the Gaussian thermostat; the sheared EHS drag is both), whether
+ * the events keep running sums, and each event's fire function.  The scheme
+ * (scheme.h) then resolves its loop: the exact jump scheme (scheme_jump.c),
+ * the time-step scheme (scheme_timestep.c) or the Lees-Edwards slab
+ * (scheme_slab.c).  This file also holds what the schemes share: the velocity
+ * bound and the majorants' reset, the output times' observation, and the
+ * steady-state observers (steady.h), which sample at the output times
+ * t >= steady.from after the standard observables; pair sampling uses its
+ * own random substream.
  */
 #include "engine.h"
 
@@ -77,115 +24,12 @@
 #include <string.h>
 #include <time.h>
 
-#include "effect.h"
 #include "first_stage.h"
+#include "registry.h"
 #include "rng.h"
 #include "run.h"
-#include "slab.h"
+#include "scheme.h"
 #include "steady.h"
-
-#define MAX_EVENTS 4
-#define MAX_FLOWS 4
-
-/* Candidates between two recomputations of the velocity bound in runs
- * without a lazy flow, in units of n: one pass over the particles every 4 n
- * candidates (about one collision per particle) costs about 1% and keeps the
- * majorant near the current largest speed (run_jump_counted). */
-#define REBOUND_SWEEPS 4
-
-/* With a lazy flow the bound carries the flow's reach (7 sigma of white
- * noise's increment; |a| dt |V_y| for the shear) over the span until the next
- * reset (reset_bound), so a long span inflates the majorant: with resets only
- * at paper A Ex 5's output times, 1.6 apart, 12.2 candidates per hard-sphere
- * collision (split-ex5's jump rows, n = 1024).  Runs with a lazy flow and a
- * bounded process therefore also reset every LAZY_REBOUND_SWEEPS n candidates
- * or so (lazy_reset; interval_lazy in the time-step scheme): 6.8 candidates
- * per collision there.  A reset brings no particle (each keeps its own reach
- * from its stamp; about 2n square roots) and is exact anywhere, the waiting
- * times being memoryless.  Resets every 1, 2 and 4 n candidates cost the same
- * CPU time within this machine's noise. */
-#define LAZY_REBOUND_SWEEPS 2
-
-/* The largest Poisson mean drawn at once (gsl_ran_poisson returns an
- * unsigned int); a longer span is cut into pieces, which is exact because the
- * counts of disjoint spans are independent. */
-#define POISSON_MAX 1e9
-
-typedef void (*step_fn)(const sim_engine *e, sim_workspace *ws, double h);
-typedef void (*stages_fn)(const sim_engine *e, sim_workspace *ws, double h);
-typedef void (*flows_fn)(const sim_engine *e, sim_workspace *ws, double h);
-typedef void (*interval_fn)(const sim_engine *e, sim_workspace *ws);
-typedef uint64_t (*fire_some_fn)(const sim_engine *e, sim_workspace *ws, double *rates,
-                                 double *total, uint64_t max);
-static uint64_t fire_some_alone(const sim_engine *e, sim_workspace *ws, double *rates,
-                                double *total, uint64_t max);
-static uint64_t fire_some_one(const sim_engine *e, sim_workspace *ws, double *rates,
-                              double *total, uint64_t max);
-static uint64_t fire_some_mixed(const sim_engine *e, sim_workspace *ws, double *rates,
-                                double *total, uint64_t max);
-
-struct sim_engine {
-    sim_scene scene;
-    double mass;          /* the grain mass */
-    char effects[64];
-    size_t nflows;        /* the flows in the order a step applies them: shear, the EHS
-                             drag, then a thermostat or the heat-flux force */
-    sim_effect flows[MAX_FLOWS];
-    int lazy_flow;        /* flows[0] is applied lazily (stamps): white noise */
-    int linear;           /* flows[0] is a linear map kept global (run->scale) */
-    double rate_exponent; /* ... the collisions' lambda: their rate scales as scale^lambda */
-    int stage_sums;       /* ... its factor reads run->sums: the stages keep them (then sums) */
-    int current_sums;     /* ... and flows[0] is also lazy (the sheared EHS drag): the sums
-                             are of the velocities at the stages' time (effect.h,
-                             advance_sums), not of the stored ones */
-    int conditional;      /* scene.observation = conditional: T .. Pyz as expectations
-                             over the lazy flow's pending increments, which are never
-                             drawn at output times (observe.h, sim_observe_sums) */
-    double pending_spread;/* ... the lazy flow's variance per unit time, or 0 */
-    int sums;             /* ... from running sums the events keep (else a pass) */
-    int bounded;          /* some event needs the velocity bound (run.h) */
-    int lazy_rebound;     /* ... and a lazy flow: reset between output times too */
-    int fixed_centre;     /* ... centred at `centre`, else at the bulk velocity */
-    double centre[3];
-    size_t nevents;
-    sim_effect events[MAX_EVENTS];
-    sim_event_fire_fn fire[MAX_EVENTS];
-    size_t state_offset[MAX_EVENTS];
-    size_t state_bytes;
-    /* jump scheme without a lazy flow (run_jump_counted) */
-    fire_some_fn fire_some;            /* the candidates of a span, up to a change of rate */
-    sim_event_fire_many_fn fire_many;  /* the only process's own loop, or NULL */
-    uint64_t rebound_every;            /* candidates between bound recomputations */
-    /* time-step scheme */
-    sim_event_stage_fn stage[MAX_EVENTS];
-    step_fn step;         /* Lie (euler) step, or collisions only */
-    stages_fn stages;     /* the stages of a step (scaled by a linear flow's factor) */
-    flows_fn flow_step;   /* the flows of a step (or the linear flow's factor) */
-    interval_fn interval; /* one output interval of steps */
-    size_t steps;         /* steps per output interval */
-    double h;             /* the step */
-    size_t observables;   /* per output row (sim_engine_observables) */
-    sim_slab_params *slab;/* the Lees-Edwards slab (slab.h), or NULL */
-    /* steady-state observers */
-    size_t nsteady;
-    size_t steady_from;   /* first output index with t >= steady.from */
-};
-
-struct sim_workspace {
-    sim_run run;
-    unsigned char *states;   /* the event processes' per-run states */
-    gsl_rng *observer_rng;   /* pair sampling (shear and steady observers), or NULL */
-    sim_slab *slab;          /* the slab's layers and buffers, or NULL */
-    double *steady_sum;      /* [nsteady] sums of the samples of the current run */
-    size_t samples;          /* how many samples those sums hold */
-    size_t steps;            /* time-step scheme: steps in the current output interval */
-    double h;                /* ... and their length */
-    double t0;               /* ... and its start */
-    double rates[MAX_EVENTS];/* ... with a lazy flow: the processes' majorant rates */
-    double credit[MAX_EVENTS];/* ... and the stage time they have not spent */
-    int time_outputs;        /* add the time of output times to output_seconds */
-    double output_seconds;
-};
 
 static void append_name(sim_engine *e, const char *name)
 {
@@ -193,242 +37,30 @@ static void append_name(sim_engine *e, const char *name)
     snprintf(e->effects + len, sizeof e->effects - len, "%s%s", len ? " " : "", name);
 }
 
-static void add_flow(sim_engine *e, sim_effect effect)
+static void add_event(sim_engine *e, sim_event event)
 {
-    e->flows[e->nflows++] = effect;
-    append_name(e, effect.type->name);
-}
-
-static void add_event(sim_engine *e, sim_effect effect)
-{
-    e->events[e->nevents] = effect;
+    e->events[e->nevents] = event;
     e->state_offset[e->nevents] = e->state_bytes;
     /* keep every state block aligned for doubles */
-    e->state_bytes += (effect.type->state_size + 15) & ~(size_t)15;
+    e->state_bytes += (event.type->state_size + 15) & ~(size_t)15;
     e->nevents++;
-    append_name(e, effect.type->name);
 }
 
-static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double h, double t);
-static double lazy_candidates(const sim_engine *e);
-static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
-                           double t, double horizon);
-
-/* The time-step scheme's steps: stages and the flow's step composed.  A
- * process without a stage of its own fires its candidates (stage_fired; no
- * lazy flow here, so their time does not matter). */
-static void stages(const sim_engine *e, sim_workspace *ws, double h)
+/* The scheme the scene asks for: the first that claims it (the slab, the time
+ * step with positions, before the homogeneous time-step scheme). */
+static const sim_scheme_type *scheme_of(const sim_scene *scene)
 {
-    for (size_t k = 0; k < e->nevents; k++) {
-        if (e->stage[k])
-            e->stage[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], h);
-        else
-            stage_fired(e, ws, k, h, 0.0);
-    }
+    static const sim_scheme_type *const schemes[] = {&sim_scheme_slab, &sim_scheme_timestep,
+                                                     &sim_scheme_jump};
+    size_t k = 0;
+    while (k + 1 < sizeof schemes / sizeof schemes[0] && !schemes[k]->claims(scene))
+        k++;
+    return schemes[k];
 }
 
-/* Every flow's step of length h, in order. */
-static void flow_steps(const sim_engine *e, sim_workspace *ws, double h)
+/* What no scheme can run: a scene the parser should have refused, two masses. */
+static sim_status check_scene(const sim_scene *scene, sim_error *err)
 {
-    for (size_t k = 0; k < e->nflows; k++)
-        e->flows[k].type->step(&e->flows[k], &ws->run, h);
-}
-
-/* With a linear flow kept global (effect.h, linear_factor): the stored
- * velocities w stand for o + scale (w - o), and a collision rule is covariant
- * under that map (collide.h: translation and scaling commute with it), so the
- * stages act on w; only the rate scales, as |g|^lambda, so a stage of h at the
- * true velocities is one of h scale^lambda at the stored ones.  O(1) per step;
- * the map is applied to every particle at output times (apply_linear). */
-static double scaled_stage(const sim_engine *e, const sim_workspace *ws, double h)
-{
-    const double s = ws->run.scale, lambda = e->rate_exponent;
-    return h * (lambda == 1.0 ? s : lambda == 0.0 ? 1.0 : pow(s, lambda));
-}
-
-static void stages_scaled(const sim_engine *e, sim_workspace *ws, double h)
-{
-    stages(e, ws, scaled_stage(e, ws, h));
-}
-
-static void linear_step(const sim_engine *e, sim_workspace *ws, double h)
-{
-    ws->run.scale *= e->flows[0].type->linear_factor(&e->flows[0], &ws->run, h);
-}
-
-static void step_euler(const sim_engine *e, sim_workspace *ws, double h)
-{
-    e->stages(e, ws, h);
-    e->flow_step(e, ws, h);
-}
-
-static void step_no_flow(const sim_engine *e, sim_workspace *ws, double h)
-{
-    stages(e, ws, h);
-}
-
-/* One output interval of ws->steps steps of ws->h. */
-static void interval_lie(const sim_engine *e, sim_workspace *ws)
-{
-    for (size_t k = 0; k < ws->steps; k++)
-        e->step(e, ws, ws->h);
-}
-
-/* A stage of length h of event process k made of the jump scheme's
- * candidates, all at time t (each brings the particles it draws to t):
- * floor(credit x rate) of them at the process's majorant rate, the remainder
- * kept for the next stage, as the other stages do; when a candidate changes
- * the rate (a collision grows the bound) the stage time left is spent at the
- * new rate. */
-static void stage_fired(const sim_engine *e, sim_workspace *ws, size_t k, double h, double t)
-{
-    void *state = ws->states + e->state_offset[k];
-    double credit = ws->credit[k] + h, rate = ws->rates[k];
-    for (;;) {
-        if (!(rate > 0.0)) {   /* every velocity equal: no collision can happen */
-            credit = 0.0;
-            break;
-        }
-        const double count = floor(credit * rate);
-        if (!(count >= 1.0))
-            break;
-        double after = rate;
-        uint64_t done = 0;
-        while (done < (uint64_t)count && after == rate) {
-            done++;
-            after = e->fire[k](&e->events[k], &ws->run, state, t);
-        }
-        credit -= (double)done / rate;
-        rate = after;
-        if (done == (uint64_t)count)
-            break;
-    }
-    ws->credit[k] = fmax(credit, 0.0);
-    ws->rates[k] = rate;
-}
-
-/* The sheared EHS drag's flow over dt with the shear lazy (current_sums):
- * the sums sheared to the end of the flow, then the drag's global factor
- * from the temperature they give. */
-static void lazy_linear_flow(const sim_engine *e, sim_workspace *ws, double dt)
-{
-    const sim_effect *f = &e->flows[0];
-    f->type->advance_sums(f, &ws->run.sums, dt);
-    ws->run.scale *= f->type->linear_factor(f, &ws->run, dt);
-}
-
-/* The time-step scheme with a lazy flow (white noise, the shear; effect.h):
- * the flow's steps only move the clock, and step k's stages fire at t0 + (k +
- * theta) h, theta = 0 for Lie splitting (collisions, then the flow) and 1/2
- * for Strang (half the flow, collisions, half the flow): each particle a stage
- * draws is brought to that time, so the same increments are drawn, in law, as
- * by stepping every particle (Gaussian increments over adjoining times add;
- * shears compose).  With current_sums the flow also carries a global linear
- * map (the EHS drag), applied where interval_lie and interval_strang apply
- * the flow's step, and the stages run at the rate scaled by it, as
- * stages_scaled. */
-static void interval_lazy(const sim_engine *e, sim_workspace *ws)
-{
-    const int strang = e->scene.splitting == SIM_SPLIT_STRANG;
-    const double theta = strang ? 0.5 : 0.0;
-    size_t next_reset = e->lazy_rebound ? 0 : ws->steps;
-    if (e->current_sums && strang)
-        lazy_linear_flow(e, ws, 0.5 * ws->h);
-    for (size_t k = 0; k < ws->steps; k++) {
-        const double stage = scaled_stage(e, ws, ws->h);
-        if (k == next_reset) {   /* lazy_rebound: a reset for the stages of `span`
-                                    steps, about lazy_candidates(e) candidates */
-            double total = 0.0;
-            for (size_t q = 0; q < e->nevents; q++)
-                total += ws->rates[q];
-            const double steps = floor(lazy_candidates(e) / (total * stage));
-            const size_t left = ws->steps - k;
-            const size_t span = !(steps >= 1.0) ? 1 : steps < (double)left ? (size_t)steps : left;
-            /* the span's stages fire at t0 + (k + theta) h ... t0 + (k + span - 1
-             * + theta) h: the reach is needed that far, not to the span's end */
-            reset_events(e, ws, ws->rates, ws->t0 + (double)k * ws->h,
-                         ((double)span - 1.0 + theta) * ws->h);
-            next_reset = k + span;
-        }
-        for (size_t q = 0; q < e->nevents; q++)
-            stage_fired(e, ws, q, stage, ws->t0 + ((double)k + theta) * ws->h);
-        if (e->current_sums)
-            lazy_linear_flow(e, ws, strang && k + 1 == ws->steps ? 0.5 * ws->h : ws->h);
-    }
-}
-
-/* Strang: flow h/2, collisions h, flow h/2 per step, with the two half flows
- * of adjacent steps merged into one flow of h (as in leapfrog): exact in
- * distribution for white noise (Gaussian increments add) and for the Gaussian
- * thermostat (scalings multiply), so Strang costs one flow per step like
- * Euler.  For the non-Gaussian flow the merged step differs from two half
- * steps by O(h^2 |k|), k = the mean direction (about 0 in an isotropic gas);
- * the keep-T rescaling is a projection, for which Strang and Euler coincide.
- * Several flows are applied in order in each (merged) half: for flows that do
- * not commute (shear and drag) that is a splitting of its own, O(h^2) per step.
- * The output times see whole steps. */
-static void interval_strang(const sim_engine *e, sim_workspace *ws)
-{
-    const double h = ws->h;
-    e->flow_step(e, ws, 0.5 * h);
-    for (size_t k = 1; k < ws->steps; k++) {
-        e->stages(e, ws, h);
-        e->flow_step(e, ws, h);
-    }
-    e->stages(e, ws, h);
-    e->flow_step(e, ws, 0.5 * h);
-}
-
-/* One output interval of the Lees-Edwards slab: its own ordered stages per
- * step (slab.h) instead of the homogeneous events and flows. */
-static void interval_slab(const sim_engine *e, sim_workspace *ws)
-{
-    for (size_t k = 0; k < ws->steps; k++)
-        sim_slab_step(e->slab, ws->slab, &ws->run, ws->h);
-}
-
-/* Resolve the time-step scheme: stages, the step function, h. */
-static sim_status build_timestep(sim_engine *e, sim_error *err)
-{
-    const sim_scene *scene = &e->scene;
-    for (size_t k = 0; k < e->nevents; k++) {
-        const sim_effect *ev = &e->events[k];
-        e->stage[k] = ev->type->select_stage ? ev->type->select_stage(ev, e->stage_sums) : NULL;
-    }
-    for (size_t k = 0; k < e->nflows; k++)
-        if (e->flows[k].type->step == NULL)
-            return sim_error_set(err, SIM_EUNSUPPORTED, e->flows[k].type->name,
-                                 "%s has no time-step form", e->flows[k].type->name);
-    e->stages = e->linear ? stages_scaled : stages;
-    e->flow_step = e->linear ? linear_step : flow_steps;
-    e->step = e->nflows ? step_euler : step_no_flow;
-    e->interval = e->lazy_flow ? interval_lazy
-                  : e->nflows && scene->splitting == SIM_SPLIT_STRANG ? interval_strang
-                                                                      : interval_lie;
-    if (!(scene->dt > 0.0) || !isfinite(scene->dt))
-        return sim_error_set(err, SIM_EINVAL, "scene.dt", "%g is not a positive step",
-                             scene->dt);
-    const double interval = sim_scene_output_time(scene, 1);
-    double steps = ceil(interval / scene->dt * (1.0 - 1e-9));
-    if (steps < 1.0)
-        steps = 1.0;
-    if (steps > 1e12)
-        return sim_error_set(err, SIM_EINVAL, "scene.dt",
-                             "%g gives %.3g steps between output times (allowed at most 1e12)",
-                             scene->dt, steps);
-    e->steps = (size_t)steps;
-    e->h = interval / steps;
-    return SIM_OK;
-}
-
-sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err)
-{
-    *engine = NULL;
-    const int timestep = scene->scheme == SIM_SCHEME_TIMESTEP;
-    if (timestep && scene->background.present)
-        return sim_error_set(err, SIM_EUNSUPPORTED, "background",
-                             "the background is not implemented in the time-step scheme "
-                             "(supported: jump)");
     if (scene->particles.initial == SIM_INITIAL_TWO_MAXWELLIANS
         && scene->particles.first.mass != scene->particles.second.mass)
         return sim_error_set(err, SIM_EUNSUPPORTED, "particles.mass2",
@@ -443,179 +75,292 @@ sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_er
         return sim_error_set(err, SIM_EINVAL, "particles.n", "%zu is out of range (allowed "
                              "n <= %lu)", scene->particles.n,
                              (unsigned long)SIM_PARTICLES_MAX);
+    return SIM_OK;
+}
 
-    sim_engine *e = calloc(1, sizeof *e);
-    if (e == NULL)
-        return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
-    e->scene = *scene;
-    e->mass = sim_scene_grain_mass(scene);
-    e->observables = sim_observe_row_length(scene);
+/* Which registry entries the engine builds: those the scene names, with a
+ * fused flow in place of its parts when they are all present and no other
+ * flow is (registry.h). */
+static void select_entries(const sim_scene *scene, int use[])
+{
+    size_t flows = 0;
+    for (size_t k = 0; k < sim_registry_count; k++) {
+        const sim_effect_entry *en = &sim_registry[k];
+        use[k] = en->present && en->present(scene);
+        flows += use[k] && en->create_flow;
+    }
+    for (size_t k = 0; k < sim_registry_count; k++) {
+        const sim_effect_entry *en = &sim_registry[k];
+        size_t parts = 0, present = 0;
+        for (; parts < SIM_FUSES_MAX && en->fuses[parts]; parts++) {
+            const sim_effect_entry *part = sim_registry_find(en->fuses[parts]);
+            present += part && use[part - sim_registry];
+        }
+        if (parts == 0 || present != parts || flows != parts)
+            continue;
+        use[k] = 1;
+        for (size_t q = 0; q < parts; q++)
+            use[sim_registry_find(en->fuses[q]) - sim_registry] = 0;
+    }
+}
 
-    sim_status status = SIM_OK;
-    const int slab = scene->shear.present && scene->shear.boundary == SIM_SHEAR_LEES_EDWARDS;
-    if (slab && (status = sim_slab_params_create(&e->scene, &e->slab, err)) == SIM_OK)
-        append_name(e, sim_slab_effects(e->slab));
-    if (status == SIM_OK && !slab && scene->collisions.present) {
-        sim_effect collisions;
-        status = sim_effect_collisions(scene, &collisions, err);
-        if (status == SIM_OK)
-            add_event(e, collisions);
+/* The event processes of the selected entries, in the table's order, each
+ * accepted by the scheme. */
+static sim_status build_events(sim_engine *e, const int use[], sim_error *err)
+{
+    for (size_t k = 0; k < sim_registry_count; k++) {
+        const sim_effect_entry *en = &sim_registry[k];
+        if (!use[k] || !en->create_event)
+            continue;
+        if (e->nevents == SIM_EVENTS_MAX)
+            return sim_error_set(err, SIM_EUNSUPPORTED, en->section, "more than %d event "
+                                 "processes", SIM_EVENTS_MAX);
+        sim_event event;
+        sim_status status = en->create_event(&e->scene, &event, err);
+        if (status != SIM_OK)
+            return status;
+        add_event(e, event);
+        if (e->scheme->accept_event
+            && (status = e->scheme->accept_event(&e->scene, &event, err)) != SIM_OK)
+            return status;
     }
-    if (status == SIM_OK && scene->background.present) {
-        sim_effect background;
-        status = sim_effect_background(scene, &background, err);
-        if (status == SIM_OK)
-            add_event(e, background);
-    }
-    /* the flows, in the order of a step */
-    sim_effect flow;
-    const int ehs_drag = !slab && scene->collisions.present
-                         && scene->collisions.model == SIM_MODEL_EHS
-                         && scene->collisions.restitution < 1.0;   /* elastic: no drag */
-    const int shear = !slab && scene->shear.present;
-    /* both in one pass per step, reading running sums, when no other flow
-     * moves the particles behind the sums' back */
-    const int fused = shear && ehs_drag && !scene->heating.present && !scene->heat_flux.present;
-    if (status == SIM_OK && fused
-        && (status = sim_effect_sheared_ehs_drag(scene, &flow, err)) == SIM_OK)
-        add_flow(e, flow);
-    if (status == SIM_OK && shear && !fused
-        && (status = sim_effect_shear(scene, &flow, err)) == SIM_OK)
-        add_flow(e, flow);
-    if (status == SIM_OK && ehs_drag && !fused
-        && (status = sim_effect_ehs_drag(scene, &flow, err)) == SIM_OK)
-        add_flow(e, flow);
-    if (status == SIM_OK && scene->heating.present
-        && (status = sim_effect_heating(scene, &flow, err)) == SIM_OK)
-        add_flow(e, flow);
-    if (status == SIM_OK && scene->heat_flux.present   /* refuses [heating] */
-        && (status = sim_effect_heat_flux(scene, &flow, err)) == SIM_OK)
-        add_flow(e, flow);
-    /* White noise and the homogeneous shear are lazy, and a Gaussian
-     * thermostat a global linear map, when it is the only flow: always in the
-     * jump scheme; in the time-step scheme
-     * when the stage fires the jump scheme's candidates (not by the contact
-     * rule, which the batched stage draws without bringing particles) and
-     * the background and the slab are absent (the heating constructor
-     * refuses the other thermostats in the jump scheme).  The sheared EHS
-     * drag is both: the shear lazy, the drag a global map, with running sums
-     * at the stages' or candidates' time (current_sums). */
-    const int hard_contact = scene->collisions.present && scene->collisions.exponent == 1.0
-                             && scene->collisions.rule == SIM_RULE_CONTACT;
-    if (status == SIM_OK && e->nflows == 1 && (scene->heating.present || scene->shear.present)
-        && !slab) {
-        const sim_effect_type *type = e->flows[0].type;
-        e->lazy_flow = type->advance != NULL && (!timestep || !hard_contact);
-        e->linear = type->linear_factor != NULL && e->nevents == 1 && scene->collisions.present
-                    && (type->advance == NULL
-                        || (e->lazy_flow && type->advance_sums != NULL
-                            && (timestep || type->scale_after != NULL)));
-        e->current_sums = e->lazy_flow && e->linear;
-        e->rate_exponent = scene->collisions.exponent;
-        e->stage_sums = e->linear && type->linear_reads_sums;
-    }
-    if (status == SIM_OK && e->nflows == 1 && e->flows[0].type->step_reads_sums)
-        e->stage_sums = 1;
-    /* with no event process either: a flow that is neither lazy nor global would
-     * never be applied (a Gaussian thermostat alone left T unchanged) */
-    if (status == SIM_OK && !timestep && e->nflows > 0 && !e->lazy_flow && !e->linear)
-        status = sim_error_set(err, SIM_EUNSUPPORTED,
-                               scene->heating.present ? "heating.type" : "scene.scheme",
-                               "the jump scheme applies a flow only lazily (white noise, or "
-                               "[shear] alone) or as one global map with binary collisions "
-                               "(gaussian, without [background])");
-    if (status == SIM_OK && scene->observation == SIM_OBSERVE_CONDITIONAL) {
-        if (timestep || scene->steady.present || scene->shear.present
-            || (e->nflows > 0 && (!e->lazy_flow || e->flows[0].type->spread == NULL)))
-            status = sim_error_set(err, SIM_EUNSUPPORTED, "scene.observation",
-                                   "conditional needs scheme = jump, at most white-noise "
-                                   "heating, and no [steady] or [shear] (they observe every "
-                                   "particle)");
-        else
-            e->pending_spread = e->lazy_flow ? e->flows[0].type->spread(&e->flows[0]) : 0.0;
-        e->conditional = status == SIM_OK;
-    }
-    if (status == SIM_OK && scene->observe_only != 0) {
-        const uint32_t only = scene->observe_only;
-        if (only & ~SIM_OBS_ALL_BASE)
-            status = sim_error_set(err, SIM_EINVAL, "scene.observe_only",
-                                   "0x%" PRIx32 " names observables beyond the base set", only);
-        else if (scene->shear.present)
-            status = sim_error_set(err, SIM_EUNSUPPORTED, "scene.observe_only",
-                                   "[shear] computes its observables from every base one");
-        else if (scene->step_follows_temperature && !(only & SIM_OBS_BIT(SIM_OBS_T)))
-            status = sim_error_set(err, SIM_EINVAL, "scene.observe_only",
-                                   "step_follows_temperature needs T");
-    }
-    if (status == SIM_OK && timestep)
-        status = build_timestep(e, err);
-    if (status == SIM_OK && slab)
-        e->interval = interval_slab;
-    if (status == SIM_OK && scene->steady.present) {
-        e->nsteady = sim_steady_count(scene);
-        /* the first output time >= from, in O(1) (outputs may be large) */
-        double first = ceil(scene->steady.from * (double)(scene->outputs - 1) / scene->t_end);
-        size_t m = first <= 0.0 ? 0 : first >= (double)scene->outputs ? scene->outputs
-                                                                        : (size_t)first;
-        while (m > 0 && sim_scene_output_time(scene, m - 1) >= scene->steady.from)
-            m--;
-        while (m < scene->outputs && sim_scene_output_time(scene, m) < scene->steady.from)
-            m++;
-        e->steady_from = m;
-        if (scene->steady.bins > 0 && !(scene->steady.c_max > 0.0))
-            status = sim_error_set(err, SIM_EINVAL, "steady.c_max", "%g is not positive",
-                                   scene->steady.c_max);
-        if (e->steady_from == scene->outputs)
-            status = sim_error_set(err, SIM_EINVAL, "steady.from",
-                                   "%g is after the last output time %g",
-                                   scene->steady.from, scene->t_end);
-    }
-    if (status != SIM_OK) {
-        sim_engine_free(e);
+    return SIM_OK;
+}
+
+/* The flows of the selected entries in their flow_order. */
+static sim_status build_flows(sim_engine *e, const int use[], sim_error *err)
+{
+    for (int order = 0; order <= SIM_FLOW_ORDER_MAX; order++)
+        for (size_t k = 0; k < sim_registry_count; k++) {
+            const sim_effect_entry *en = &sim_registry[k];
+            if (!use[k] || !en->create_flow || en->flow_order != order)
+                continue;
+            if (e->nflows == SIM_FLOWS_MAX)
+                return sim_error_set(err, SIM_EUNSUPPORTED, en->section, "more than %d flows",
+                                     SIM_FLOWS_MAX);
+            sim_status status = en->create_flow(&e->scene, &e->flows[e->nflows], err);
+            if (status != SIM_OK)
+                return status;
+            e->flow_entries[e->nflows++] = en;
+        }
+    return SIM_OK;
+}
+
+/* The effects: the events, the scheme's own refusals, the flows; then their
+ * names for sim_engine_effects. */
+static sim_status build_effects(sim_engine *e, sim_error *err)
+{
+    int use[sim_registry_count];
+    select_entries(&e->scene, use);
+    sim_status status = build_events(e, use, err);
+    if (status == SIM_OK && e->scheme->accept)
+        status = e->scheme->accept(&e->scene, err);
+    if (status == SIM_OK)
+        status = build_flows(e, use, err);
+    if (status != SIM_OK)
         return status;
-    }
+    if (e->scheme->effect_name)
+        append_name(e, e->scheme->effect_name);
+    for (size_t k = 0; k < e->nevents; k++)
+        append_name(e, e->events[k].type->name);
+    for (size_t k = 0; k < e->nflows; k++)
+        append_name(e, e->flows[k].type->name);
+    return SIM_OK;
+}
+
+/* How the one flow runs beside the events, from what its type offers: lazy
+ * (advance), always in the jump scheme and in the time-step scheme when every
+ * stage may fire the jump scheme's candidates (not by the contact rule, which
+ * the batched stage draws without bringing particles); a global linear map
+ * when the only event process is covariant under it (its rate scales as
+ * scale^lambda: binary collisions), also lazy when the map carries running
+ * sums (the sheared EHS drag: current_sums). */
+static void resolve_modes(sim_engine *e)
+{
+    const int timestep = e->scene.scheme == SIM_SCHEME_TIMESTEP;
+    e->rate_exponent = 1.0;   /* the scale stays 1 without a linear map */
+    if (e->nflows != 1)
+        return;
+    const sim_flow_type *type = e->flows[0].type;
+    int stages_fire = 1;
     for (size_t k = 0; k < e->nevents; k++) {
-        const sim_effect *ev = &e->events[k];
+        const sim_event_stages *st = e->events[k].type->stages;
+        stages_fire &= st && st->fires_candidates && st->fires_candidates(&e->events[k]);
+    }
+    const sim_event *ev = e->nevents == 1 ? &e->events[0] : NULL;
+    const int covariant = ev && ev->type->rate_exponent;
+    if (covariant)
+        e->rate_exponent = ev->type->rate_exponent(ev);
+    const sim_linear_map *map = type->linear;
+    e->lazy_flow = type->advance != NULL && (!timestep || stages_fire);
+    e->linear = map != NULL && covariant
+                && (type->advance == NULL
+                    || (e->lazy_flow && map->advance_sums != NULL
+                        && (timestep || map->scale_after != NULL)));
+    e->current_sums = e->lazy_flow && e->linear;
+    e->stage_sums = (e->linear && map->reads_sums) || type->step_reads_sums;
+}
+
+/* Conditional observation needs the jump scheme and at most a lazy flow with
+ * a spread; observe_only, the base set; neither goes with an effect that
+ * observes every particle. */
+static sim_status check_observation(sim_engine *e, sim_error *err)
+{
+    const sim_scene *scene = &e->scene;
+    const char *observer;
+    const int every = sim_registry_observes_every_particle(scene, &observer);
+    if (scene->observation == SIM_OBSERVE_CONDITIONAL) {
+        if (scene->scheme == SIM_SCHEME_TIMESTEP || scene->steady.present || every
+            || (e->nflows > 0 && (!e->lazy_flow || e->flows[0].type->spread == NULL)))
+            return sim_error_set(err, SIM_EUNSUPPORTED, "scene.observation",
+                                 "conditional needs scheme = jump, at most one lazy flow "
+                                 "with Gaussian increments (white noise), and no "
+                                 "[steady]%s%s%s (they observe every particle)", every ? " or [" : "", every ? observer : "",
+                                 every ? "]" : "");
+        e->pending_spread = e->lazy_flow ? e->flows[0].type->spread(&e->flows[0]) : 0.0;
+        e->conditional = 1;
+    }
+    const uint32_t only = scene->observe_only;
+    if (only == 0)
+        return SIM_OK;
+    if (only & ~SIM_OBS_ALL_BASE)
+        return sim_error_set(err, SIM_EINVAL, "scene.observe_only",
+                             "0x%" PRIx32 " names observables beyond the base set", only);
+    if (every)
+        return sim_error_set(err, SIM_EUNSUPPORTED, "scene.observe_only",
+                             "[%s] computes its observables from every base one", observer);
+    if (scene->step_follows_temperature && !(only & SIM_OBS_BIT(SIM_OBS_T)))
+        return sim_error_set(err, SIM_EINVAL, "scene.observe_only",
+                             "step_follows_temperature needs T");
+    return SIM_OK;
+}
+
+/* The steady observers: their count and the first output time >= from. */
+static sim_status resolve_steady(sim_engine *e, sim_error *err)
+{
+    const sim_scene *scene = &e->scene;
+    if (!scene->steady.present)
+        return SIM_OK;
+    e->nsteady = sim_steady_count(scene);
+    /* the first output time >= from, in O(1) (outputs may be large) */
+    double first = ceil(scene->steady.from * (double)(scene->outputs - 1) / scene->t_end);
+    size_t m = first <= 0.0 ? 0 : first >= (double)scene->outputs ? scene->outputs
+                                                                    : (size_t)first;
+    while (m > 0 && sim_scene_output_time(scene, m - 1) >= scene->steady.from)
+        m--;
+    while (m < scene->outputs && sim_scene_output_time(scene, m) < scene->steady.from)
+        m++;
+    e->steady_from = m;
+    if (scene->steady.bins > 0 && !(scene->steady.c_max > 0.0))
+        return sim_error_set(err, SIM_EINVAL, "steady.c_max", "%g is not positive",
+                             scene->steady.c_max);
+    if (e->steady_from == scene->outputs)
+        return sim_error_set(err, SIM_EINVAL, "steady.from",
+                             "%g is after the last output time %g", scene->steady.from,
+                             scene->t_end);
+    return SIM_OK;
+}
+
+/* A flow that reads running sums beside an event process that cannot keep
+ * them (with the lazy flow): refused, naming that process's section. */
+static sim_status refuse_sums(const sim_engine *e, sim_error *err)
+{
+    const sim_event *lacking = &e->events[0];
+    for (size_t k = 0; k < e->nevents; k++) {
+        const sim_event_fast *fast = e->events[k].type->fast;
+        sim_event_fire_fn fire = NULL;
+        if (fast && e->current_sums && fast->select_fire_current_sums)
+            fire = fast->select_fire_current_sums(&e->events[k]);
+        else if (fast && !e->current_sums && fast->select_fire_sums)
+            fire = fast->select_fire_sums(&e->events[k], e->lazy_flow, e->bounded);
+        if (fire == NULL) {
+            lacking = &e->events[k];
+            break;
+        }
+    }
+    return sim_error_set(err, SIM_EUNSUPPORTED, lacking->type->name,
+                         "the %s reads running sums of the velocities, which the %s does not "
+                         "keep%s", e->flows[0].type->name, lacking->type->name,
+                         e->lazy_flow ? " beside a lazy flow" : "");
+}
+
+/* The velocity bound, and each event's fire function: with running sums
+ * where every process keeps them (for conditional observation, and for a
+ * linear map that reads them, which needs them). */
+static sim_status resolve_events(sim_engine *e, sim_error *err)
+{
+    for (size_t k = 0; k < e->nevents; k++) {
+        const sim_event *ev = &e->events[k];
         e->bounded |= ev->type->needs_bound(ev);
         if (ev->type->bound_centre && ev->type->bound_centre(ev, e->centre))
             e->fixed_centre = 1;
     }
-    /* running sums where every event process keeps them: for conditional
-     * observation, and for the keep-temperature rescaling (run_jump_linear,
-     * linear_step), which needs them */
-    const int linear_sums = e->stage_sums;
-    e->sums = e->conditional || linear_sums;
+    e->sums = e->conditional || e->stage_sums;
     for (size_t k = 0; k < e->nevents; k++) {
-        const sim_effect *ev = &e->events[k];
+        const sim_event *ev = &e->events[k];
+        const sim_event_fast *fast = ev->type->fast;
         if (e->current_sums)
-            e->fire[k] = ev->type->select_fire_current_sums
-                             ? ev->type->select_fire_current_sums(ev) : NULL;
+            e->fire[k] = fast && fast->select_fire_current_sums
+                             ? fast->select_fire_current_sums(ev) : NULL;
         else
-            e->fire[k] = ev->type->select_fire_sums
-                             ? ev->type->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
+            e->fire[k] = fast && fast->select_fire_sums
+                             ? fast->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
         e->sums &= e->fire[k] != NULL;
     }
     for (size_t k = 0; k < e->nevents; k++)
         if (!e->sums)
             e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow,
                                                          e->bounded);
-    if (linear_sums && !e->sums) {
-        const int current = e->current_sums;
-        sim_engine_free(e);
-        if (current)   /* the constructors make this unreachable: ehs is hard spheres */
-            return sim_error_set(err, SIM_EUNSUPPORTED, "collisions.kernel",
-                                 "the sheared ehs drag needs hard spheres");
-        return sim_error_set(err, SIM_EUNSUPPORTED, "heating.keep_temperature",
-                             "the keep-temperature rescaling needs collisions that keep "
-                             "running sums (supported: maxwell, vhs, hard-spheres)");
-    }
-    if (e->nevents == 1 && !e->sums && e->events[0].type->select_fire_many)
-        e->fire_many = e->events[0].type->select_fire_many(&e->events[0]);
-    e->fire_some = e->fire_many ? fire_some_alone : e->nevents == 1 ? fire_some_one
-                                                                    : fire_some_mixed;
+    if (e->stage_sums && !e->sums)
+        return refuse_sums(e, err);
     e->lazy_rebound = e->bounded && e->lazy_flow;
-    e->rebound_every = (e->bounded && !e->lazy_flow) || e->sums
-                           ? REBOUND_SWEEPS * (uint64_t)scene->particles.n : UINT64_MAX;
+    return SIM_OK;
+}
+
+/* The effects' own observers of the output row (registry.h). */
+static void resolve_observers(sim_engine *e)
+{
+    for (size_t k = 0; k < sim_registry_count; k++) {
+        const sim_effect_entry *en = &sim_registry[k];
+        if (en->observe && en->observables && en->observables(&e->scene) > 0
+            && e->nobservers < SIM_OBSERVERS_MAX)
+            e->observers[e->nobservers++] = en;
+    }
+}
+
+sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err)
+{
+    *engine = NULL;
+    sim_status status = check_scene(scene, err);
+    if (status != SIM_OK)
+        return status;
+    sim_engine *e = calloc(1, sizeof *e);
+    if (e == NULL)
+        return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    e->scene = *scene;
+    e->scheme = scheme_of(scene);
+    e->mass = sim_scene_grain_mass(scene);
+    e->observables = sim_observe_row_length(scene);
+    status = build_effects(e, err);
+    if (status == SIM_OK) {
+        resolve_modes(e);
+        if (e->scheme->check)
+            status = e->scheme->check(e, err);
+    }
+    if (status == SIM_OK) {
+        resolve_observers(e);
+        status = check_observation(e, err);
+    }
+    if (status == SIM_OK)
+        status = resolve_steady(e, err);
+    if (status == SIM_OK)
+        status = resolve_events(e, err);
+    if (status == SIM_OK)
+        status = e->scheme->build(e, err);
+    if (status != SIM_OK) {
+        sim_engine_free(e);
+        return status;
+    }
     *engine = e;
     return SIM_OK;
 }
@@ -628,7 +373,8 @@ void sim_engine_free(sim_engine *engine)
         free(engine->events[k].params);
     for (size_t k = 0; k < engine->nflows; k++)
         free(engine->flows[k].params);
-    sim_slab_params_free(engine->slab);
+    if (engine->free_params)
+        engine->free_params(engine->scheme_params);
     free(engine);
 }
 
@@ -642,9 +388,10 @@ size_t sim_engine_observables(const sim_engine *engine) { return engine->observa
 
 size_t sim_engine_workspace_bytes(const sim_engine *engine)
 {
-    return engine->scene.particles.n * sim_particles_bytes_per_particle(engine->lazy_flow)
-           + engine->state_bytes + engine->nsteady * sizeof(double) + sizeof(sim_workspace)
-           + (engine->slab ? sim_slab_bytes(engine->slab, engine->scene.particles.n) : 0);
+    const size_t n = engine->scene.particles.n;
+    return n * sim_particles_bytes_per_particle(engine->lazy_flow) + engine->state_bytes
+           + engine->nsteady * sizeof(double) + sizeof(sim_workspace)
+           + (engine->scheme->state ? engine->scheme->state->bytes(engine, n) : 0);
 }
 
 double sim_engine_step(const sim_engine *engine)
@@ -666,15 +413,16 @@ sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, si
         if (w->run.rng == NULL || w->states == NULL)
             status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
     }
-    if (status == SIM_OK && engine->slab)
-        status = sim_slab_create(engine->slab, &w->run.p, &w->slab, err);
+    if (status == SIM_OK && engine->scheme->state)
+        status = engine->scheme->state->create(engine, w, err);
     if (status == SIM_OK && engine->nsteady > 0
         && (w->steady_sum = calloc(engine->nsteady, sizeof *w->steady_sum)) == NULL)
         status = sim_error_set(err, SIM_ENOMEM, "steady", "out of memory");
     const int pairs = (engine->nsteady > 0 && engine->scene.steady.pairs > 0)
-                      || (engine->scene.shear.present && engine->scene.shear.pairs > 0);
+                      || sim_registry_observers_draw(&engine->scene);
     if (status == SIM_OK && pairs && (w->observer_rng = sim_rng_alloc()) == NULL)
         status = sim_error_set(err, SIM_ENOMEM, "", "out of memory");
+    w->free_state = engine->scheme->state ? engine->scheme->state->free : NULL;
     if (status != SIM_OK) {
         sim_workspace_free(w);
         return status;
@@ -705,7 +453,8 @@ void sim_workspace_free(sim_workspace *ws)
         gsl_rng_free(ws->observer_rng);
     free(ws->steady_sum);
     free(ws->states);
-    sim_slab_free(ws->slab);
+    if (ws->free_state)
+        ws->free_state(ws->scheme_state);
     free(ws);
 }
 
@@ -734,7 +483,7 @@ static void reset_bound(const sim_engine *e, sim_run *run, double t, double hori
     }
     memcpy(run->centre, c, sizeof c);
     if (run->flow) {
-        const sim_effect *f = run->flow;
+        const sim_flow *f = run->flow;
         double r = 0.0;
         for (size_t i = 0; i < n; i++) {
             const double dt = t + horizon - run->p.stamp[i];
@@ -756,7 +505,7 @@ static void reset_bound(const sim_engine *e, sim_run *run, double t, double hori
 
 /* Recompute the bound and every event process's majorant; return their total
  * rate. */
-static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
+double sim_engine_reset_events(const sim_engine *e, sim_workspace *ws, double rates[SIM_EVENTS_MAX],
                            double t, double horizon)
 {
     reset_bound(e, &ws->run, t, horizon);
@@ -769,89 +518,16 @@ static double reset_events(const sim_engine *e, sim_workspace *ws, double rates[
     return total;
 }
 
-/* Runs without a lazy flow, between output times: R = max |v_i - c| from
- * scratch about the same centre (binary collisions keep the bulk velocity,
- * and a fixed centre stays), and every process's rate for it; returns the
- * total.  One pass over the particles, no reset of the processes.  The
- * running sums, when kept, are recomputed in the same pass's place. */
-static double rebound(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS])
-{
-    sim_run *run = &ws->run;
-    if (e->sums)
-        sim_sums_compute(&run->p, &run->sums);
-    if (!e->bounded) {
-        double total = 0.0;
-        for (size_t k = 0; k < e->nevents; k++)
-            total += rates[k];
-        return total;
-    }
-    const double *c = run->centre;
-    double r2 = 0.0;
-    for (size_t i = 0; i < run->p.n; i++) {
-        const double *v = run->p.v[i];
-        const double d[3] = {v[0] - c[0], v[1] - c[1], v[2] - c[2]};
-        const double x = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-        r2 = x > r2 ? x : r2;
-    }
-    run->radius = sqrt(r2);
-    run->bound_grew = 0;
-    double total = 0.0;
-    for (size_t k = 0; k < e->nevents; k++) {
-        rates[k] = e->events[k].type->rate(&e->events[k], run, ws->states + e->state_offset[k]);
-        total += rates[k];
-    }
-    return total;
-}
-
-/* The total rate after process `fired` returned its rate; if it grew the
- * bound, the other processes' majorants grow too. */
-static double update_rates(const sim_engine *e, sim_workspace *ws, double *rates, size_t fired)
-{
-    sim_run *run = &ws->run;
-    if (run->bound_grew) {
-        run->bound_grew = 0;
-        for (size_t k = 0; k < e->nevents; k++)
-            if (k != fired)
-                rates[k] = e->events[k].type->rate(&e->events[k], run,
-                                                   ws->states + e->state_offset[k]);
-    }
-    double total = 0.0;
-    for (size_t k = 0; k < e->nevents; k++)
-        total += rates[k];
-    return total;
-}
-
-/* The event process that fires: k with probability rates[k] / total. */
-static size_t pick_event(const sim_engine *e, gsl_rng *rng, const double *rates, double total)
-{
-    double x = sim_rng_uniform(rng) * total;
-    size_t k = 0;
-    while (k + 1 < e->nevents && x >= rates[k]) {
-        x -= rates[k];
-        k++;
-    }
-    return k;
-}
-
-/* Bring every particle to time t with the lazy flow (paper A's sampled
- * observation: the pending increments are drawn). */
-static void bring_all(sim_run *run, double t)
-{
-    for (size_t i = 0; i < run->p.n; i++)
-        sim_run_bring(run, i, t);
-}
-
-/* Output time m: the standard observables (with [shear], paper E's after
- * them), and a steady sample if t_m >= from. */
+/* Output time m: the standard observables (then the effects' own: paper E's
+ * shear set), or the scheme's, and a steady sample if t_m >= from. */
 static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double *obs,
                        size_t *samples)
 {
     double *row = obs + m * e->observables;
     const double *prev = m > 0 ? row - e->observables : NULL;
     const sim_particles *observed = &ws->run.p;
-    if (e->slab) {   /* against the layers' velocities (slab.h) */
-        sim_slab_observe(e->slab, ws->slab, &ws->run, m, prev, ws->observer_rng, row);
-        observed = sim_slab_peculiar(ws->slab);
+    if (e->scheme->observe) {
+        observed = e->scheme->observe(e, ws, m, prev, row);
     } else if (e->conditional) {   /* no pass over the particles with sums */
         sim_sums pass;
         const sim_sums *sums = &ws->run.sums;
@@ -864,9 +540,9 @@ static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double 
         sim_observe_drop(e->scene.observe_only, row);
     } else {
         sim_observe_only(&ws->run.p, e->mass, e->scene.observe_only, row);
-        if (e->scene.shear.present)
-            sim_observe_shear(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions, m,
-                              prev, ws->observer_rng, row);
+        for (size_t k = 0; k < e->nobservers; k++)
+            e->observers[k]->observe(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions,
+                                     m, prev, ws->observer_rng, row);
     }
     if (e->nsteady > 0 && m >= e->steady_from) {
         sim_steady_sample(&e->scene, observed, e->mass, ws->observer_rng, row,
@@ -892,184 +568,23 @@ static double clock_seconds(void)
  * first draws every particle's pending increment of a lazy flow; then the
  * observables.  With ws->time_outputs, its time is added to
  * ws->output_seconds (the bench's breakdown; two clock reads per output). */
-static void observe_output(const sim_engine *e, sim_workspace *ws, size_t m, double t,
+void sim_engine_observe_output(const sim_engine *e, sim_workspace *ws, size_t m, double t,
                            double *obs, size_t *samples)
 {
     const double start = ws->time_outputs ? clock_seconds() : 0.0;
     if (e->lazy_flow && !e->conditional)
-        bring_all(&ws->run, t);
+        sim_run_bring_all(&ws->run, t);
     observe_at(e, ws, m, obs, samples);
     if (ws->time_outputs)
         ws->output_seconds += clock_seconds() - start;
 }
 
-/* The candidates between two resets of a lazy_rebound run; and its reset at
- * time t (the output time at t_out, or earlier): the bound and the
- * majorants for a span of that many candidates at the current total rate, at
- * most to t_out; returns the new total and sets *t_span to the span's end. */
-static double lazy_candidates(const sim_engine *e)
-{
-    return LAZY_REBOUND_SWEEPS * (double)e->scene.particles.n;
-}
-
-static double lazy_reset(const sim_engine *e, sim_workspace *ws, double rates[MAX_EVENTS],
-                         double total, double t, double t_out, double *t_span)
-{
-    const double left = t_out - t;
-    double span = lazy_candidates(e) / total;
-    if (!(span < left))
-        span = left;
-    *t_span = span < left ? t + span : t_out;
-    return reset_events(e, ws, rates, t, span);
-}
-
-/* The exact jump scheme from t = 0 to t_end (the initial state is sampled),
- * with a lazy flow: every candidate gets its waiting time. */
-static void run_jump_timed(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
-{
-    const sim_scene *scene = &e->scene;
-    sim_run *run = &ws->run;
-    gsl_rng *rng = run->rng;
-
-    const double interval = sim_scene_output_time(scene, 1);   /* between resets */
-    double rates[MAX_EVENTS] = {0};
-    double t = 0.0;
-    double total = reset_events(e, ws, rates, t, interval);
-    uint64_t until_resum = e->rebound_every;   /* the running sums' recomputation */
-    for (size_t m = 1; m < scene->outputs; m++) {
-        const double t_out = sim_scene_output_time(scene, m);
-        double t_span = t_out;   /* the end of the span the bound covers */
-        if (e->lazy_rebound)
-            total = lazy_reset(e, ws, rates, total, t, t_out, &t_span);
-        for (;;) {
-            double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total) : INFINITY;
-            if (t_next >= t_span) {
-                if (t_span >= t_out)
-                    break;
-                t = t_span;   /* only with lazy_rebound */
-                total = lazy_reset(e, ws, rates, total, t, t_out, &t_span);
-                continue;
-            }
-            t = t_next;
-            size_t k = e->nevents == 1 ? 0 : pick_event(e, rng, rates, total);
-            rates[k] = e->fire[k](&e->events[k], run, ws->states + e->state_offset[k], t);
-            total = e->nevents == 1 ? rates[0] : update_rates(e, ws, rates, k);
-            if (--until_resum == 0) {   /* only with sums (else 2^64 candidates away) */
-                sim_sums_compute(&run->p, &run->sums);
-                until_resum = e->rebound_every;
-            }
-        }
-        t = t_out;
-        observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs && !e->lazy_rebound)   /* else at the loop's top */
-            total = reset_events(e, ws, rates, t, interval);
-    }
-}
-
-/* fire_some_fn: up to `max` candidates of the jump scheme without a lazy flow
- * (no times: the fire functions use t only to bring particles forward),
- * stopping after the first that changes the total rate; returns how many.
- * One instance per engine shape, chosen when the engine is built. */
-
-/* The only process, in its own loop. */
-static uint64_t fire_some_alone(const sim_engine *e, sim_workspace *ws, double *rates,
-                                double *total, uint64_t max)
-{
-    const uint64_t fired = e->fire_many(&e->events[0], &ws->run, ws->states, max, &rates[0]);
-    *total = rates[0];
-    return fired;
-}
-
-/* The only process, one candidate per call. */
-static uint64_t fire_some_one(const sim_engine *e, sim_workspace *ws, double *rates,
-                              double *total, uint64_t max)
-{
-    const double before = *total;
-    for (uint64_t c = 1; c <= max; c++) {
-        rates[0] = e->fire[0](&e->events[0], &ws->run, ws->states, 0.0);
-        if (rates[0] != before) {
-            *total = rates[0];
-            return c;
-        }
-    }
-    return max;
-}
-
-/* Several processes: each candidate belongs to process k with probability
- * rates[k] / total (the superposition of independent Poisson processes). */
-static uint64_t fire_some_mixed(const sim_engine *e, sim_workspace *ws, double *rates,
-                                double *total, uint64_t max)
-{
-    const double before = *total;
-    for (uint64_t c = 1; c <= max; c++) {
-        const size_t k = pick_event(e, ws->run.rng, rates, before);
-        rates[k] = e->fire[k](&e->events[k], &ws->run, ws->states + e->state_offset[k], 0.0);
-        const double after = update_rates(e, ws, rates, k);
-        if (after != before) {
-            *total = after;
-            return c;
-        }
-    }
-    return max;
-}
-
-/* The exact jump scheme without a lazy flow: Poisson numbers of candidates
- * per span of constant rate, and the time of a candidate only when it changes
- * the rate (the header comment). */
-static void run_jump_counted(const sim_engine *e, sim_workspace *ws, double *obs,
-                             size_t *samples)
-{
-    const sim_scene *scene = &e->scene;
-    gsl_rng *rng = ws->run.rng;
-    const double interval = sim_scene_output_time(scene, 1);   /* between resets */
-    double rates[MAX_EVENTS] = {0};
-    double t = 0.0;
-    double total = reset_events(e, ws, rates, t, interval);
-    uint64_t until_rebound = e->rebound_every;
-    for (size_t m = 1; m < scene->outputs; m++) {
-        const double t_out = sim_scene_output_time(scene, m);
-        while (t < t_out && total > 0.0) {
-            /* the candidates of (t, end] at the constant rate `total` */
-            double end = t_out, mean = total * (t_out - t);
-            if (mean > POISSON_MAX) {
-                end = fmin(t_out, t + POISSON_MAX / total);
-                mean = POISSON_MAX;
-            }
-            const uint64_t count = gsl_ran_poisson(rng, mean);
-            uint64_t done = 0;
-            int changed = 0;
-            while (done < count && !changed) {
-                const uint64_t max = count - done < until_rebound ? count - done : until_rebound;
-                const double before = total;
-                const uint64_t fired = e->fire_some(e, ws, rates, &total, max);
-                done += fired;
-                until_rebound -= fired;
-                changed = total != before || until_rebound == 0;
-            }
-            if (!changed) {
-                t = end;
-                continue;
-            }
-            /* candidate `done` of `count` is the done-th of `count` uniform points */
-            t += (end - t) * gsl_ran_beta(rng, (double)done, (double)(count - done + 1));
-            if (until_rebound == 0) {
-                total = rebound(e, ws, rates);
-                until_rebound = e->rebound_every;
-            }
-        }
-        t = t_out;
-        observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs)
-            total = reset_events(e, ws, rates, t, interval);
-        until_rebound = e->rebound_every;
-    }
-}
 
 /* The steps of the output interval that starts at output m - 1: the
  * engine's, or with step_follows_temperature the largest h <= dt sqrt(T0/T)
  * that divides the interval, T the centred temperature just observed (the
  * mean free time scales as T^{-1/2}; paper E's dt = 1e-3 tau0 sqrt(T0/T)). */
-static void interval_steps(const sim_engine *e, sim_workspace *ws, const double *obs, size_t m)
+void sim_engine_interval_steps(const sim_engine *e, sim_workspace *ws, const double *obs, size_t m)
 {
     const sim_scene *scene = &e->scene;
     ws->steps = e->steps;
@@ -1087,12 +602,12 @@ static void interval_steps(const sim_engine *e, sim_workspace *ws, const double 
 /* Apply a linear flow's pending factor to every stored velocity (at output
  * times): v -> o + scale (v - o), o the bulk velocity for a centred map, else
  * 0; the running sums follow. */
-static void apply_linear(const sim_engine *e, sim_run *run)
+void sim_engine_apply_linear(const sim_engine *e, sim_run *run)
 {
     const size_t n = run->p.n;
     const double f = run->scale;
     double o[3] = {0, 0, 0};
-    if (e->flows[0].type->linear_centred) {
+    if (e->flows[0].type->linear->centred) {
         for (size_t i = 0; i < n; i++)
             for (int k = 0; k < 3; k++)
                 o[k] += run->p.v[i][k];
@@ -1107,163 +622,6 @@ static void apply_linear(const sim_engine *e, sim_run *run)
         sim_sums_compute(&run->p, &run->sums);
 }
 
-/* The time-step scheme from t = 0 to t_end. */
-static void run_timestep(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
-{
-    const sim_scene *scene = &e->scene;
-    const double interval = sim_scene_output_time(scene, 1);
-    reset_events(e, ws, ws->rates, 0.0, interval);
-    for (size_t m = 1; m < scene->outputs; m++) {
-        interval_steps(e, ws, obs, m);
-        ws->t0 = sim_scene_output_time(scene, m - 1);
-        e->interval(e, ws);
-        const double t = sim_scene_output_time(scene, m);
-        if (e->current_sums)   /* the lazy flow first: the sums are then of the true velocities */
-            bring_all(&ws->run, t);
-        if (e->linear)
-            apply_linear(e, &ws->run);
-        else if (e->sums)   /* kept by the stages and the flow: their round-off reset */
-            sim_sums_compute(&ws->run.p, &ws->run.sums);
-        observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs && !e->lazy_rebound)   /* synchronised; else interval_lazy */
-            reset_events(e, ws, ws->rates, t, interval);
-    }
-}
-
-/* The exact jump scheme with a Gaussian thermostat kept as one global factor
- * in run->scale (paper C Eq. (12)); candidates arrive at the stored
- * velocities' majorant rate times scale^lambda, their rate at the true
- * velocities, and the map is applied to every particle at output times.
- *  - keep_temperature (the homogeneous cooling state in scaled variables): T
- *    changes only at collisions, so the rescaling that keeps it acts right
- *    after each one (the h -> 0 limit of the time-step scheme, which rescales
- *    after every step); the rate is constant between collisions.
- *  - a fixed zeta: scale = e^{zeta (t - t0)} since the last output time t0,
- *    so the candidates are a Poisson process of rate total e^{g (t - t0)},
- *    g = lambda zeta: no splitting error.  In the operational time
- *    tau = (e^{g (t - t0)} - 1) / g it has the constant rate total, so the
- *    candidates of the interval are those of a homogeneous process before
- *    tau_out, one exponential each, as without the flow; no candidate needs
- *    its time t (no lazy flow), and a candidate that changes total restarts
- *    the homogeneous process at its tau (memoryless). */
-static void run_jump_linear(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
-{
-    const sim_scene *scene = &e->scene;
-    sim_run *run = &ws->run;
-    gsl_rng *rng = run->rng;
-    const sim_effect *flow = &e->flows[0];
-    const double interval = sim_scene_output_time(scene, 1), lambda = e->rate_exponent;
-    const int flowing = flow->type->linear_rate != NULL;
-    const double growth = flowing ? lambda * flow->type->linear_rate(flow) : 0.0;
-    double rates[MAX_EVENTS] = {0};
-    double t = 0.0;
-    double total = reset_events(e, ws, rates, t, interval), speed = 1.0;
-    uint64_t until_resum = e->rebound_every;
-    for (size_t m = 1; m < scene->outputs; m++) {
-        const double t_out = sim_scene_output_time(scene, m);
-        /* the interval in the clock the candidates run on: t itself, or tau */
-        double clock = t, clock_end = t_out;
-        if (flowing) {
-            clock = 0.0;
-            clock_end = growth == 0.0 ? t_out - t : expm1(growth * (t_out - t)) / growth;
-        }
-        for (;;) {
-            if (!(total > 0.0))
-                break;
-            clock += sim_rng_exponential(rng, total * speed);
-            if (clock >= clock_end)
-                break;
-            const uint64_t before = run->counts.collisions;
-            total = rates[0] = e->fire[0](&e->events[0], run, ws->states, flowing ? t : clock);
-            if (e->sums && --until_resum == 0) {
-                sim_sums_compute(&run->p, &run->sums);
-                until_resum = e->rebound_every;
-            }
-            if (!flowing && run->counts.collisions != before) {
-                run->scale *= flow->type->linear_factor(flow, run, 0.0);
-                speed = lambda == 1.0 ? run->scale : pow(run->scale, lambda);
-            }
-        }
-        if (flowing)
-            run->scale = flow->type->linear_factor(flow, run, t_out - t);
-        t = t_out;
-        apply_linear(e, run);
-        speed = 1.0;
-        observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs)
-            total = reset_events(e, ws, rates, t, interval);
-    }
-}
-
-/* The sheared EHS drag's flow over dt in the jump scheme (current_sums): the
- * exact scale between collisions (effect.h, scale_after), then the sums
- * sheared to the end. */
-static void lazy_linear_advance(const sim_engine *e, sim_workspace *ws, double dt)
-{
-    const sim_effect *f = &e->flows[0];
-    ws->run.scale = f->type->scale_after(f, &ws->run, dt);
-    f->type->advance_sums(f, &ws->run.sums, dt);
-}
-
-/* The exact jump scheme with a lazy flow that also carries a global linear
- * map read from the temperature (current_sums: paper E's sheared EHS gas, the
- * shear lazy and the drag as run->scale; effect_drag.c).  A candidate's rate
- * at the true velocities is scale(t) times the stored velocities' majorant,
- * and the scale only falls, so candidates are drawn at total x scale(now) and
- * each is kept with probability scale(t)/scale(now) (thinning; restarted at
- * every candidate, from which on the bound holds again).  Between candidates
- * the scale follows its exact map and the running sums the shear; at an
- * output time every particle is brought forward and the scale applied.  The
- * sums are recomputed from the synchronised particles every rebound_every
- * candidates too (their round-off). */
-static void run_jump_lazy_linear(const sim_engine *e, sim_workspace *ws, double *obs,
-                                 size_t *samples)
-{
-    const sim_scene *scene = &e->scene;
-    sim_run *run = &ws->run;
-    gsl_rng *rng = run->rng;
-    const double interval = sim_scene_output_time(scene, 1);
-    double rates[MAX_EVENTS] = {0};
-    double t = 0.0;
-    double total = reset_events(e, ws, rates, t, interval);
-    uint64_t until_resum = e->rebound_every;
-    for (size_t m = 1; m < scene->outputs; m++) {
-        const double t_out = sim_scene_output_time(scene, m);
-        double t_span = t_out;
-        if (e->lazy_rebound)
-            total = lazy_reset(e, ws, rates, total * run->scale, t, t_out, &t_span);
-        for (;;) {
-            const double bound = run->scale;
-            const double t_next = total > 0.0 ? t + sim_rng_exponential(rng, total * bound)
-                                              : INFINITY;
-            const double to = t_next < t_span ? t_next : t_span;
-            lazy_linear_advance(e, ws, to - t);
-            t = to;
-            if (t_next >= t_span) {
-                if (t_span >= t_out)
-                    break;
-                total = lazy_reset(e, ws, rates, total * run->scale, t, t_out, &t_span);
-                continue;
-            }
-            if (!(sim_rng_uniform(rng) * bound < run->scale)) {
-                run->counts.candidates++;   /* thinned: fictitious at the true rate */
-                continue;
-            }
-            total = rates[0] = e->fire[0](&e->events[0], run, ws->states, t);
-            if (--until_resum == 0) {
-                bring_all(run, t);
-                sim_sums_compute(&run->p, &run->sums);
-                until_resum = e->rebound_every;
-            }
-        }
-        t = t_out;
-        bring_all(run, t);
-        apply_linear(e, run);
-        observe_output(e, ws, m, t, obs, samples);
-        if (m + 1 < scene->outputs && !e->lazy_rebound)
-            total = reset_events(e, ws, rates, t, interval);
-    }
-}
 
 void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, double *obs)
 {
@@ -1282,8 +640,8 @@ void sim_engine_start(const sim_engine *e, sim_workspace *ws, uint64_t index, do
     run->scale = 1.0;
     if (e->sums)
         sim_sums_compute(&run->p, &run->sums);
-    if (e->slab)
-        sim_slab_start(e->slab, ws->slab, run);
+    if (e->scheme->start)
+        e->scheme->start(e, ws);
     observe_at(e, ws, 0, obs, &ws->samples);
 }
 
@@ -1296,16 +654,7 @@ void sim_engine_evolve(const sim_engine *e, sim_workspace *ws, double *obs, sim_
      * index streams, which their first reset fills) */
     memset(ws->states, 0, e->state_bytes);
     memset(ws->credit, 0, sizeof ws->credit);
-    if (scene->scheme == SIM_SCHEME_TIMESTEP)
-        run_timestep(e, ws, obs, &ws->samples);
-    else if (e->current_sums)
-        run_jump_lazy_linear(e, ws, obs, &ws->samples);
-    else if (e->linear)
-        run_jump_linear(e, ws, obs, &ws->samples);
-    else if (e->lazy_flow)
-        run_jump_timed(e, ws, obs, &ws->samples);
-    else
-        run_jump_counted(e, ws, obs, &ws->samples);
+    e->scheme->evolve(e, ws, obs, &ws->samples);
 
     if (e->nsteady > 0) {   /* the time averages follow the rows */
         double *avg = obs + scene->outputs * e->observables;

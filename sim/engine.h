@@ -66,6 +66,12 @@ size_t sim_engine_workspace_bytes(const sim_engine *engine);
  * output interval); 0 for the jump scheme. */
 double sim_engine_step(const sim_engine *engine);
 
+/* The same from the scene alone, without building an engine: *h and the
+ * *steps per output interval (0 and 0 for the jump scheme).  SIM_EINVAL,
+ * naming scene.dt, for a step that is not positive or gives more than 1e12
+ * steps per interval. */
+sim_status sim_scene_step(const sim_scene *scene, double *h, size_t *steps, sim_error *err);
+
 /* Per-thread memory: the particle system, the random stream, effect states. */
 sim_status sim_workspace_create(const sim_engine *engine, sim_workspace **ws, sim_error *err);
 void sim_workspace_free(sim_workspace *ws);

@@ -264,6 +264,102 @@ void sim_ensemble_result_free(sim_ensemble_result *res)
     memset(res, 0, sizeof *res);
 }
 
+/* This process's blocks of ensembles, on every thread: each block's running
+ * mean and m2 into job->sums, its count into job->counts.  A thread that
+ * cannot work, or a stop request, sets *failed; the first error is kept. */
+typedef struct block_job {
+    const sim_engine *engine;
+    ranks rk;
+    size_t len, N, bsize, my_nblocks, my_ensembles;
+    double *sums, *counts;
+    sim_progress_fn progress;
+    void *ctx;
+} block_job;
+
+static void simulate_blocks(const block_job *job, sim_status *status_out, sim_error *err,
+                            int *failed_out, size_t *done_out, sim_counts *total_counts,
+                            int *threads_out)
+{
+    const sim_engine *engine = job->engine;
+    const size_t len = job->len, N = job->N, bsize = job->bsize;
+    const size_t my_nblocks = job->my_nblocks, my_ensembles = job->my_ensembles;
+    double *sums = job->sums, *counts = job->counts;
+    const sim_progress_fn progress = job->progress;
+    void *ctx = job->ctx;
+    const ranks rk = job->rk;
+    sim_status status = *status_out;
+    int failed = 0, threads = 1;
+    size_t done = *done_out;
+
+#pragma omp parallel
+    {
+        sim_workspace *ws = NULL;
+        sim_error local_err;
+        sim_status local = sim_workspace_create(engine, &ws, &local_err);
+        double *obs = malloc(len * sizeof *obs);
+        if (local == SIM_OK && obs == NULL)
+            local = sim_error_set(&local_err, SIM_ENOMEM, "", "out of memory");
+        if (local != SIM_OK) {
+#pragma omp critical(gdsmc_ensemble_error)
+            if (status == SIM_OK) {
+                status = local;
+                if (err)
+                    *err = local_err;
+            }
+#pragma omp atomic write
+            failed = 1;
+        }
+#pragma omp barrier
+        sim_counts my_counts = {0};
+#pragma omp single
+        threads = omp_get_num_threads();
+
+#pragma omp for schedule(dynamic, 1)
+        for (size_t i = 0; i < my_nblocks; i++) {
+            const size_t b = ranks_block(rk, i);
+            int stop;
+#pragma omp atomic read
+            stop = failed;
+            if (stop)
+                continue;
+            block_stats st = {0.0, sums + 2 * len * b, sums + 2 * len * b + len};
+            int cut = 0;
+            for (size_t j = b * bsize; j < (b + 1) * bsize && j < N && !cut; j++) {
+                if ((cut = stop_requested) != 0)
+                    break;
+                sim_engine_run(engine, ws, j, obs, &my_counts);
+                welford_add(&st, obs, len);
+            }
+            if (cut) {   /* the block is incomplete: the run's statistics are void */
+#pragma omp atomic write
+                failed = 1;
+                continue;
+            }
+            counts[b] = st.count;
+#pragma omp critical(gdsmc_ensemble_progress)
+            {
+                done += (size_t)st.count;
+                if (progress)   /* this process's fraction, in ensembles of N */
+                    progress(my_ensembles == N ? done
+                                               : (size_t)((double)done * (double)N
+                                                          / (double)my_ensembles),
+                             N, ctx);
+            }
+        }
+#pragma omp critical(gdsmc_ensemble_counts)
+        {
+            sim_counts_add(total_counts, &my_counts);
+        }
+        free(obs);
+        sim_workspace_free(ws);
+    }
+
+    *status_out = status;
+    *failed_out = failed;
+    *done_out = done;
+    *threads_out = threads;
+}
+
 sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, void *ctx,
                             sim_ensemble_result *res, sim_error *err)
 {
@@ -330,68 +426,9 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
     sim_counts total_counts = {0};
     int threads = 1;
 
-#pragma omp parallel
-    {
-        sim_workspace *ws = NULL;
-        sim_error local_err;
-        sim_status local = sim_workspace_create(engine, &ws, &local_err);
-        double *obs = malloc(len * sizeof *obs);
-        if (local == SIM_OK && obs == NULL)
-            local = sim_error_set(&local_err, SIM_ENOMEM, "", "out of memory");
-        if (local != SIM_OK) {
-#pragma omp critical(gdsmc_ensemble_error)
-            if (status == SIM_OK) {
-                status = local;
-                if (err)
-                    *err = local_err;
-            }
-#pragma omp atomic write
-            failed = 1;
-        }
-#pragma omp barrier
-        sim_counts my_counts = {0};
-#pragma omp single
-        threads = omp_get_num_threads();
-
-#pragma omp for schedule(dynamic, 1)
-        for (size_t i = 0; i < my_nblocks; i++) {
-            const size_t b = ranks_block(rk, i);
-            int stop;
-#pragma omp atomic read
-            stop = failed;
-            if (stop)
-                continue;
-            block_stats st = {0.0, sums + 2 * len * b, sums + 2 * len * b + len};
-            int cut = 0;
-            for (size_t j = b * bsize; j < (b + 1) * bsize && j < N && !cut; j++) {
-                if ((cut = stop_requested) != 0)
-                    break;
-                sim_engine_run(engine, ws, j, obs, &my_counts);
-                welford_add(&st, obs, len);
-            }
-            if (cut) {   /* the block is incomplete: the run's statistics are void */
-#pragma omp atomic write
-                failed = 1;
-                continue;
-            }
-            counts[b] = st.count;
-#pragma omp critical(gdsmc_ensemble_progress)
-            {
-                done += (size_t)st.count;
-                if (progress)   /* this process's fraction, in ensembles of N */
-                    progress(my_ensembles == N ? done
-                                               : (size_t)((double)done * (double)N
-                                                          / (double)my_ensembles),
-                             N, ctx);
-            }
-        }
-#pragma omp critical(gdsmc_ensemble_counts)
-        {
-            sim_counts_add(&total_counts, &my_counts);
-        }
-        free(obs);
-        sim_workspace_free(ws);
-    }
+    const block_job job = {engine, rk, len, N, bsize, my_nblocks, my_ensembles, sums, counts,
+                           progress, ctx};
+    simulate_blocks(&job, &status, err, &failed, &done, &total_counts, &threads);
 
     stopped = failed && status == SIM_OK;
     status = ranks_agree(rk, status, &stopped, &done, err);   /* one verdict on all ranks */

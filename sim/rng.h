@@ -254,4 +254,14 @@ static inline void sim_rng_unit_sphere(gsl_rng *r, double e[3])
     e[2] = 1.0 - 2.0 * q;
 }
 
+/* A candidate pair of the range [lo, lo + count), count >= 2: i uniform, j
+ * uniform among the others, so every ordered pair has probability
+ * 1/(count (count - 1)) (the Lees-Edwards slab's layers). */
+static inline void sim_pick_pair_in(gsl_rng *rng, size_t lo, size_t count, size_t *i, size_t *j)
+{
+    *i = lo + (size_t)sim_rng_index(rng, count);
+    *j = lo + (size_t)sim_rng_index(rng, count - 1);
+    *j += *j >= *i;
+}
+
 #endif

@@ -23,7 +23,7 @@
 struct sim_run {
     sim_particles p;
     gsl_rng *rng;
-    const sim_effect *flow;   /* the lazy flow, or NULL */
+    const sim_flow *flow;     /* the lazy flow, or NULL */
     double centre[3];
     double radius;
     int bound_grew;           /* set by sim_run_cover; the engine re-reads rates */

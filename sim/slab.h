@@ -8,17 +8,19 @@
  *
  *   1. stream    y <- y + v_y h; a particle leaving through the top re-enters at
  *                the bottom with v_x - aL, through the bottom at the top with
- *                v_x + aL (E Eq. 4.11, any number of crossings).  EHS
- *                (collisions.model = ehs) first applies the layer's drag,
- *                v <- u_I + (v - u_I) e^{-zeta_I h/2}, with the fields of the
- *                particle's layer at the start of the step (E Eq. 4.12) and
- *                zeta_I = zeta0(T_I) n_I/n (zeta0 of sim_effect_ehs_drag).
+ *                v_x + aL (E Eq. 4.11, any number of crossings).  Each flow
+ *                (the EHS drag, collisions.model = ehs) first takes its layer
+ *                step with the fields of the particle's layer at the start of
+ *                the step (effect_drag.c: v <- u_I + (v - u_I) e^{-zeta_I h/2},
+ *                zeta_I = zeta0(T_I) n_I/n, E Eq. 4.12); the streaming uses
+ *                v_y from before it (E Eq. 4.10).
  *   2. sort      a counting sort of the particles by layer, so that each layer
  *                is a contiguous range of the arrays.
  *   3. fields    per layer: N_I, u_I, T_I (peculiar to u_I) and the bound
  *                R_I = max |v_i - u_I|, so w_I = 2 R_I bounds the layer's relative
  *                speeds exactly (E's w_I is an estimate ∝ sqrt(T_I)).
- *   4. collide   per layer, candidates at the rate
+ *   4. collide   per layer, each event process's layer stage (the collisions'
+ *                in effect_collisions.c): candidates at the rate
  *                kappa P_I w_I, P_I = N_I (N_I - 1) (the layer's ordered pairs;
  *                shear.candidates = paper: N_I^2 as E Eq. 4.13 prints, a +1/N_I
  *                bias), kappa = 2 pi gamma C beta M/N: each unordered pair of the
@@ -67,15 +69,19 @@
 typedef struct sim_slab_params sim_slab_params;
 typedef struct sim_slab sim_slab;
 
-/* The slab of a scene with [shear] boundary = lees-edwards.  Refuses, naming
- * the key, what it cannot simulate: scheme = jump (shear.boundary), a kernel
- * other than hard spheres, [heating], [background], [heat-flux]. */
-sim_status sim_slab_params_create(const sim_scene *scene, sim_slab_params **params,
-                                  sim_error *err);
-void sim_slab_params_free(sim_slab_params *params);
+/* Refuse, naming the key, what the slab cannot simulate: scheme = jump
+ * (shear.boundary), a kernel other than hard spheres, [heating],
+ * [background], [heat-flux], splitting = strang. */
+sim_status sim_slab_accept(const sim_scene *scene, sim_error *err);
 
-/* The effects of the loop, for sim_engine_effects ("slab collisions drag"). */
-const char *sim_slab_effects(const sim_slab_params *params);
+/* The slab of a scene with [shear] boundary = lees-edwards, running the
+ * effects' per-layer forms (effect.h: each event's stages->layer, each flow's
+ * step_layer; refused, naming shear.boundary, when one has none).  scene,
+ * events and flows must outlive the params. */
+sim_status sim_slab_params_create(const sim_scene *scene, const sim_event *events,
+                                  size_t nevents, const sim_flow *flows, size_t nflows,
+                                  sim_slab_params **params, sim_error *err);
+void sim_slab_params_free(sim_slab_params *params);
 
 /* Bytes per particle and per layer the slab adds to a workspace. */
 size_t sim_slab_bytes(const sim_slab_params *params, size_t n);
@@ -96,17 +102,6 @@ void sim_slab_step(const sim_slab_params *params, sim_slab *slab, sim_run *run, 
  * shear.pairs).  Leaves the peculiar velocities in sim_slab_peculiar. */
 void sim_slab_observe(const sim_slab_params *params, sim_slab *slab, const sim_run *run,
                       size_t m, const double *prev, gsl_rng *rng, double *row);
-
-/* A candidate pair of the layer [lo, lo + count), count >= 2: i uniform, j
- * uniform among the others, so every ordered pair has probability
- * 1/(count (count - 1)). */
-static inline void sim_slab_pick_pair(gsl_rng *rng, size_t lo, size_t count, size_t *i,
-                                      size_t *j)
-{
-    *i = lo + (size_t)sim_rng_index(rng, count);
-    *j = lo + (size_t)sim_rng_index(rng, count - 1);
-    *j += *j >= *i;
-}
 
 /* The peculiar velocities v_i - u_I of the last observation, in the order of
  * the sorted system (for the steady observers, steady.h). */

@@ -85,7 +85,7 @@ static void test_step_projection(void **state)
         for (int k = 0; k < 3; k++)
             r.p.v[i][k] = sim_rng_exponential(r.rng, 1.0);
     }
-    sim_effect e;
+    sim_flow e;
     assert_int_equal(sim_effect_heat_flux(&s, &e, &err), SIM_OK);
     for (int step = 0; step < 50; step++) {
         e.type->step(&e, &r, 0.05);

@@ -136,7 +136,7 @@ static void test_ehs_drag_step(void **state)
         }
         double u0[3], T0;
         moments(&r.p, u0, &T0);
-        sim_effect e;
+        sim_flow e;
         assert_int_equal(sim_effect_ehs_drag(&s, &e, &err), SIM_OK);
         const double h = 0.05;
         e.type->step(&e, &r, h);
@@ -172,7 +172,7 @@ static void test_sheared_drag_step(void **state)
     s.collisions.model = SIM_MODEL_EHS;
     s.collisions.restitution = 0.5;
     sim_error err;
-    sim_effect shear, drag, fused;
+    sim_flow shear, drag, fused;
     assert_int_equal(sim_effect_shear(&s, &shear, &err), SIM_OK);
     assert_int_equal(sim_effect_ehs_drag(&s, &drag, &err), SIM_OK);
     assert_int_equal(sim_effect_sheared_ehs_drag(&s, &fused, &err), SIM_OK);

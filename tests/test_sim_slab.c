@@ -82,6 +82,9 @@ static void assert_z(const sim_ensemble_result *r, size_t m, int k, double want,
 
 typedef struct hand {
     sim_scene scene;   /* outlives params, which points at it */
+    sim_event collisions;   /* ... as do the effects */
+    sim_flow drag;
+    size_t nflows;
     sim_slab_params *params;
     sim_slab *slab;
     sim_run run;
@@ -92,7 +95,13 @@ static void hand_create(hand *h, const sim_scene *scene, uint64_t seed)
     sim_error err;
     memset(h, 0, sizeof *h);
     h->scene = *scene;
-    assert_int_equal(sim_slab_params_create(&h->scene, &h->params, &err), SIM_OK);
+    assert_int_equal(sim_effect_collisions(&h->scene, &h->collisions, &err), SIM_OK);
+    if (scene->collisions.model == SIM_MODEL_EHS && scene->collisions.restitution < 1.0) {
+        assert_int_equal(sim_effect_ehs_drag(&h->scene, &h->drag, &err), SIM_OK);
+        h->nflows = 1;
+    }
+    assert_int_equal(sim_slab_params_create(&h->scene, &h->collisions, 1, &h->drag, h->nflows,
+                                            &h->params, &err), SIM_OK);
     assert_int_equal(sim_particles_alloc(&h->run.p, scene->particles.n, 0, &err), SIM_OK);
     h->run.rng = sim_rng_alloc();
     assert_non_null(h->run.rng);
@@ -106,6 +115,8 @@ static void hand_free(hand *h)
 {
     sim_slab_free(h->slab);
     sim_slab_params_free(h->params);
+    free(h->collisions.params);
+    free(h->drag.params);
     sim_particles_free(&h->run.p);
     gsl_rng_free(h->run.rng);
 }
@@ -370,7 +381,7 @@ static void biased_pick(gsl_rng *rng, size_t lo, size_t count, size_t *i, size_t
     *j += *j == *i;
 }
 
-/* 6. sim_slab_pick_pair draws every ordered pair i != j of the layer
+/* 6. sim_pick_pair_in draws every ordered pair i != j of the layer
  * [lo, lo + count) with probability 1/(count (count - 1)).  Proves: 1e6 draws
  * at lo = 7, count = 6 all lie in the layer with i != j, and the 30 ordered
  * pairs' counts pass a chi-square test at the 0.999 level (29 degrees of
@@ -392,7 +403,7 @@ static void test_pick_pair_uniform(void **state)
             if (control)
                 biased_pick(rng, LO, COUNT, &i, &j);
             else
-                sim_slab_pick_pair(rng, LO, COUNT, &i, &j);
+                sim_pick_pair_in(rng, LO, COUNT, &i, &j);
             if (i < LO || i >= LO + COUNT || j < LO || j >= LO + COUNT || i == j) {
                 if (!control)
                     fail_msg("pair (%zu, %zu) outside [%d, %d) or not distinct", i, j, LO,

@@ -73,7 +73,7 @@ static double max_z_against(const sim_ensemble_result *r, int k, const double *e
 
 typedef struct bench_run {
     sim_run run;
-    sim_effect effect;
+    sim_flow effect;
 } bench_run;
 
 /* A run with n particles and no bound (covering is a no-op). */

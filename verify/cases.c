@@ -550,12 +550,9 @@ int vfy_external(const vfy_options *o)
 
 double vfy_scene_step(const sim_scene *s)
 {
-    sim_engine *e = NULL;
-    double h = 0.0;
-    if (sim_engine_create(s, &e, NULL) == SIM_OK)
-        h = sim_engine_step(e);
-    sim_engine_free(e);
-    return h;
+    double h;
+    size_t steps;
+    return sim_scene_step(s, &h, &steps, NULL) == SIM_OK ? h : 0.0;
 }
 
 const char *vfy_report_path(const vfy_options *o, const char *name, const char *suffix,

@@ -142,8 +142,8 @@ sim_status vfy_simulate(const sim_scene *scene, const vfy_options *o, const char
  * may leave quantities unreported (NaN in the result). */
 int vfy_external(const vfy_options *o);
 
-/* The time step the engine uses for scene s: 0 for the jump scheme or if
- * it cannot build. */
+/* The time step the engine uses for scene s, from the scene alone
+ * (sim_scene_step): 0 for the jump scheme or a step the engine refuses. */
 double vfy_scene_step(const sim_scene *s);
 
 /* out_dir/<name><suffix>, in buf. */

@@ -1,4 +1,5 @@
-/* The Lees-Edwards slab (slab.h; paper E §IV A, docs/theory.md §6.3). */
+/* The Lees-Edwards slab (slab.h; paper E §IV A, docs/theory.md §6.3): the
+ * time-step scheme with positions, and the engine's scheme object for it. */
 #include "slab.h"
 
 #include <math.h>
@@ -8,6 +9,7 @@
 #include "collide.h"
 #include "observe.h"
 #include "rng.h"
+#include "scheme.h"
 
 typedef void slab_stage(const sim_slab_params *p, sim_slab *s, sim_run *run, double h);
 
@@ -19,15 +21,12 @@ struct sim_slab_params {
     double length;        /* L */
     size_t layers;        /* M */
     double width;         /* dy = L/M */
-    double alpha;         /* the collisions' restitution (1 for EHS) */
-    double kappa;         /* 2 pi gamma C beta M/N: a layer's candidate rate per ordered
-                             pair and unit of w_I */
-    size_t pair_offset;   /* a layer's ordered pairs are N_I (N_I - pair_offset): 1, or 0
-                             for E's N_I^2 (shear.candidates = paper) */
-    double zeta_factor;   /* EHS: zeta_I = zeta_factor sqrt(T_I/m) n_I/n; 0 for IHS */
+    const sim_event *events;  /* the engine's (outlive the params), each with a layer stage */
+    size_t nevents;
+    const sim_flow *flows;    /* ... each with a layer step (the EHS drag) */
+    size_t nflows;
     double mass;
     slab_stage *stages[SLAB_STAGES];
-    char effects[48];
 };
 
 struct sim_slab {
@@ -74,24 +73,24 @@ static void stage_stream(const sim_slab_params *p, sim_slab *s, sim_run *run, do
         stream_one(p, s, run, i, run->p.v[i][1], h);
 }
 
-/* EHS: the layer's drag (E Eq. 4.12) with the fields at the start of the step,
- * and the streaming by the velocity before the drag (E Eq. 4.10). */
-static void stage_stream_drag(const sim_slab_params *p, sim_slab *s, sim_run *run, double h)
+/* With flows (the EHS drag, E Eq. 4.12): each flow's layer step with the
+ * fields at the start of the step, then the streaming by the velocity before
+ * them (E Eq. 4.10), kept in the sort's second buffer of positions (free
+ * until the sort). */
+static void stage_flows_stream(const sim_slab_params *p, sim_slab *s, sim_run *run, double h)
 {
     const double N = (double)run->p.n, M = (double)p->layers;
+    for (size_t i = 0; i < run->p.n; i++)
+        s->y2[i] = run->p.v[i][1];
     for (size_t I = 0; I < p->layers; I++) {
         const size_t lo = s->start[I], hi = s->start[I + 1];
         const double density = (double)(hi - lo) * M / N;   /* n_I/n */
-        const double f = exp(-0.5 * p->zeta_factor * sqrt(s->theta[I]) * density * h);
-        const double *u = s->u[I];
-        for (size_t i = lo; i < hi; i++) {
-            double *v = run->p.v[i];
-            const double vy = v[1];
-            for (int c = 0; c < 3; c++)
-                v[c] = u[c] + f * (v[c] - u[c]);
-            stream_one(p, s, run, i, vy, h);
-        }
+        for (size_t k = 0; k < p->nflows; k++)
+            p->flows[k].type->step_layer(&p->flows[k], run->p.v + lo, hi - lo, s->u[I],
+                                         s->theta[I], density, h);
     }
+    for (size_t i = 0; i < run->p.n; i++)
+        stream_one(p, s, run, i, s->y2[i], h);
 }
 
 /* A counting sort by layer into the second buffers, which become the system's. */
@@ -146,57 +145,24 @@ static void stage_fields(const sim_slab_params *p, sim_slab *s, sim_run *run, do
     }
 }
 
-/* Each layer's candidates for h (slab.h, stage 4): a Poisson process of rate
- * kappa P_I w_I, by exponential waiting times, so that the number in a step
- * is exact in distribution whatever the layer held in the steps before (a
- * remainder carried between steps, Bird's, biases the rate by O(1/N_I) when
- * N_I changes from step to step: +10% at N_I = 10, tests/test_sim_slab.c).
- * When a collision grows R_I, the rest of the step runs at the new rate
- * (memoryless). */
+/* Each layer's candidates for h (slab.h, stage 4): every event process's
+ * layer stage (effect.h, sim_event_stages.layer), which grows R_I. */
 static void stage_collide(const sim_slab_params *p, sim_slab *s, sim_run *run, double h)
 {
-    gsl_rng *rng = run->rng;
     for (size_t I = 0; I < p->layers; I++) {
         const size_t lo = s->start[I], count = s->start[I + 1] - lo;
-        double R = s->radius[I];
-        if (count < 2 || !(R > 0.0))
+        if (count < 2 || !(s->radius[I] > 0.0))
             continue;
-        const double pairs = (double)count * (double)(count - p->pair_offset);
-        const double *u = s->u[I];
-        double rate = p->kappa * pairs * 2.0 * R;
-        for (double t = sim_rng_exponential(rng, rate); t < h;
-             t += sim_rng_exponential(rng, rate)) {
-            run->counts.candidates++;
-            size_t i, j;
-            sim_slab_pick_pair(rng, lo, count, &i, &j);
-            double *vi = run->p.v[i], *vj = run->p.v[j];
-            const double g[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
-            const double gnorm = sim_norm3(g);
-            if (!(sim_rng_uniform(rng) * 2.0 * R < gnorm))
-                continue;
-            double e[3];
-            sim_rng_unit_sphere(rng, e);
-            sim_collide_inelastic(vi, vj, p->alpha, gnorm, e);
-            run->counts.collisions++;
-            /* the layer's bound covers both new velocities */
-            const double di[3] = {vi[0] - u[0], vi[1] - u[1], vi[2] - u[2]};
-            const double dj[3] = {vj[0] - u[0], vj[1] - u[1], vj[2] - u[2]};
-            const double a = fmax(sim_norm3(di), sim_norm3(dj));
-            if (a > R) {
-                R = a;
-                rate = p->kappa * pairs * 2.0 * R;
-            }
-        }
-        s->radius[I] = R;
+        for (size_t k = 0; k < p->nevents; k++)
+            p->events[k].type->stages->layer(&p->events[k], run, lo, count, s->u[I],
+                                             &s->radius[I], h);
     }
 }
 
 /* ---------------------------------------------------------------- build */
 
-sim_status sim_slab_params_create(const sim_scene *scene, sim_slab_params **params,
-                                  sim_error *err)
+sim_status sim_slab_accept(const sim_scene *scene, sim_error *err)
 {
-    *params = NULL;
     if (scene->scheme != SIM_SCHEME_TIMESTEP)
         return sim_error_set(err, SIM_EUNSUPPORTED, "shear.boundary",
                              "lees-edwards needs scheme = timestep (the jump scheme keeps no "
@@ -213,31 +179,45 @@ sim_status sim_slab_params_create(const sim_scene *scene, sim_slab_params **para
         return sim_error_set(err, SIM_EUNSUPPORTED, "scene.splitting",
                              "lees-edwards steps in one order, streaming then collisions "
                              "(docs/theory.md §6.3): strang is not implemented");
+    return SIM_OK;
+}
+
+sim_status sim_slab_params_create(const sim_scene *scene, const sim_event *events,
+                                  size_t nevents, const sim_flow *flows, size_t nflows,
+                                  sim_slab_params **params, sim_error *err)
+{
+    *params = NULL;
+    sim_status status = sim_slab_accept(scene, err);
+    if (status != SIM_OK)
+        return status;
+    for (size_t k = 0; k < nevents; k++)
+        if (events[k].type->stages == NULL || events[k].type->stages->layer == NULL)
+            return sim_error_set(err, SIM_EUNSUPPORTED, "shear.boundary",
+                                 "lees-edwards has no per-layer form of the %s",
+                                 events[k].type->name);
+    for (size_t k = 0; k < nflows; k++)
+        if (flows[k].type->step_layer == NULL)
+            return sim_error_set(err, SIM_EUNSUPPORTED, "shear.boundary",
+                                 "lees-edwards has no per-layer form of the %s",
+                                 flows[k].type->name);
     sim_slab_params *p = calloc(1, sizeof *p);
     if (p == NULL)
         return sim_error_set(err, SIM_ENOMEM, "", "out of memory");
-    const double alpha = scene->collisions.restitution, M = (double)scene->shear.layers;
-    const int ehs = scene->collisions.model == SIM_MODEL_EHS;
+    const double M = (double)scene->shear.layers;
     p->scene = scene;
     p->rate = scene->shear.rate;
     p->length = scene->shear.length;
     p->layers = scene->shear.layers;
     p->width = p->length / M;
-    p->alpha = ehs ? 1.0 : alpha;
-    p->kappa = 2.0 * M_PI * scene->collisions.rate * scene->collisions.constant
-               * sim_scene_collision_rate_factor(scene) * M / (double)scene->particles.n;
-    p->pair_offset = scene->shear.candidates == SIM_SLAB_PAIRS_PAPER ? 0 : 1;
-    /* zeta0 = (2/(3 sqrt(pi))) (1 - alpha^2) sqrt(2 T/m)/lambda0 (effect_drag.c) */
-    p->zeta_factor = ehs ? 2.0 / (3.0 * sqrt(M_PI)) * (1.0 - alpha * alpha) * sqrt(2.0)
-                               / sim_scene_mean_free_path(scene)
-                         : 0.0;
+    p->events = events;
+    p->nevents = nevents;
+    p->flows = flows;
+    p->nflows = nflows;
     p->mass = sim_scene_grain_mass(scene);
-    const int drag = ehs && alpha < 1.0;
-    p->stages[0] = drag ? stage_stream_drag : stage_stream;
+    p->stages[0] = nflows > 0 ? stage_flows_stream : stage_stream;
     p->stages[1] = stage_sort;
     p->stages[2] = stage_fields;
     p->stages[3] = stage_collide;
-    strcpy(p->effects, drag ? "slab collisions drag" : "slab collisions");
     *params = p;
     return SIM_OK;
 }
@@ -245,11 +225,6 @@ sim_status sim_slab_params_create(const sim_scene *scene, sim_slab_params **para
 void sim_slab_params_free(sim_slab_params *params)
 {
     free(params);
-}
-
-const char *sim_slab_effects(const sim_slab_params *params)
-{
-    return params->effects;
 }
 
 size_t sim_slab_bytes(const sim_slab_params *params, size_t n)
@@ -414,3 +389,83 @@ void sim_slab_observe(const sim_slab_params *p, sim_slab *s, const sim_run *run,
     const double var = syy - sy * sy / filled;
     row[SIM_OBS_UX_SLOPE] = var > 0.0 ? (syu - sy * su / filled) / var / p->rate : NAN;
 }
+
+/* ------------------------------------------------------- the scheme object */
+
+static sim_status slab_build(sim_engine *e, sim_error *err)
+{
+    sim_slab_params *params;
+    sim_status status = sim_slab_params_create(&e->scene, e->events, e->nevents, e->flows,
+                                               e->nflows, &params, err);
+    if (status != SIM_OK)
+        return status;
+    e->scheme_params = params;
+    e->free_params = (void (*)(void *))sim_slab_params_free;
+    return sim_scene_step(&e->scene, &e->h, &e->steps, err);
+}
+
+static size_t slab_bytes(const sim_engine *e, size_t n)
+{
+    return sim_slab_bytes(e->scheme_params, n);
+}
+
+static sim_status slab_create(const sim_engine *e, sim_workspace *ws, sim_error *err)
+{
+    sim_slab *slab;
+    sim_status status = sim_slab_create(e->scheme_params, &ws->run.p, &slab, err);
+    ws->scheme_state = status == SIM_OK ? slab : NULL;
+    return status;
+}
+
+static void slab_free(void *state)
+{
+    sim_slab_free(state);
+}
+
+static void slab_start(const sim_engine *e, sim_workspace *ws)
+{
+    sim_slab_start(e->scheme_params, ws->scheme_state, &ws->run);
+}
+
+/* The time-step scheme's output intervals, each of ws->steps slab steps. */
+static void slab_evolve(const sim_engine *e, sim_workspace *ws, double *obs, size_t *samples)
+{
+    const sim_scene *scene = &e->scene;
+    for (size_t m = 1; m < scene->outputs; m++) {
+        sim_engine_interval_steps(e, ws, obs, m);
+        for (size_t k = 0; k < ws->steps; k++)
+            sim_slab_step(e->scheme_params, ws->scheme_state, &ws->run, ws->h);
+        sim_engine_observe_output(e, ws, m, sim_scene_output_time(scene, m), obs, samples);
+    }
+}
+
+/* Against the layers' velocities (slab.h); the steady observers see the
+ * peculiar velocities. */
+static const sim_particles *slab_observe(const sim_engine *e, sim_workspace *ws, size_t m,
+                                         const double *prev, double *row)
+{
+    sim_slab_observe(e->scheme_params, ws->scheme_state, &ws->run, m, prev, ws->observer_rng,
+                     row);
+    return sim_slab_peculiar(ws->scheme_state);
+}
+
+static const sim_scheme_state slab_state = {slab_bytes, slab_create, slab_free};
+
+/* A shear with the Lees-Edwards boundary, in either scheme (the jump scheme
+ * is refused by sim_slab_accept, naming shear.boundary). */
+static int slab_claims(const sim_scene *scene)
+{
+    return scene->shear.present && scene->shear.boundary == SIM_SHEAR_LEES_EDWARDS;
+}
+
+const sim_scheme_type sim_scheme_slab = {
+    .effect_name = "slab",
+    .claims = slab_claims,
+    .accept = sim_slab_accept,
+    .accept_event = sim_scheme_needs_stages,
+    .build = slab_build,
+    .state = &slab_state,
+    .start = slab_start,
+    .evolve = slab_evolve,
+    .observe = slab_observe,
+};
