@@ -26,10 +26,12 @@
  * the temperature), so it has only `step`, and the jump scheme refuses it.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "effect.h"
 #include "run.h"
+#include "steady.h"
 
 typedef struct heat_flux_params {
     double strength;   /* eps, along x */
@@ -96,3 +98,105 @@ sim_status sim_effect_heat_flux(const sim_scene *scene, sim_flow *effect, sim_er
     *effect = (sim_flow){.type = &heat_flux_type, .params = p};
     return SIM_OK;
 }
+
+/* ------------------------------------------------ steady quantities (steady.h) */
+
+static const char *const heat_flux_names[SIM_HF_SCALARS] = {
+    "qx", "kappa_prime", "b1", "b2", "b3", "b1_x", "b2_x", "b3_x", "b1_x_outer",
+};
+
+/* The generalised Laguerre polynomial L_k^{(a)}(x) for k = 1, 2, 3 into
+ * L[0..2] (the three-term recurrence from L_0 = 1, L_1 = 1 + a - x). */
+static inline void laguerre3(double a, double x, double L[3])
+{
+    L[0] = 1.0 + a - x;
+    L[1] = ((3.0 + a - x) * L[0] - (1.0 + a)) / 2.0;
+    L[2] = ((5.0 + a - x) * L[1] - (2.0 + a) * L[0]) / 3.0;
+}
+
+double sim_steady_kappa_per_moment(const sim_scene *scene)
+{
+    return -64.0 / (75.0 * sqrt(M_PI))
+           / (sim_scene_mean_free_path(scene) * scene->heat_flux.strength);
+}
+
+/* Paper D's heat-flux quantities of one sample (steady.h), added to the
+ * block hf. */
+static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, double mass,
+                             const double V[3], double theta, const double *row, double *hf)
+{
+    static const double P[3] = {4.0 / 5.0, 16.0 / 35.0, 32.0 / 105.0};   /* D Eq. 3.10 */
+    static const double Q[3] = {4.0 / 3.0, 16.0 / 15.0, 32.0 / 35.0};    /* D Eq. 3.12 */
+    const size_t n = p->n, bins = scene->steady.bins;
+    const double w = 1.0 / (double)n, v0 = sqrt(2.0 * theta), inv_v0 = 1.0 / v0;
+    const double inv_eps = 1.0 / (sim_scene_mean_free_path(scene) * scene->heat_flux.strength);
+    const double delta = bins > 0 ? scene->steady.c_max / (double)bins : 1.0;
+    (void)row;
+    double *g1 = hf + SIM_HF_SCALARS, *beta1 = g1 + bins;
+    double q = 0.0, b[3] = {0, 0, 0}, bx[3] = {0, 0, 0}, outer = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        const double c[3] = {(p->v[i][0] - V[0]) * inv_v0, (p->v[i][1] - V[1]) * inv_v0,
+                             (p->v[i][2] - V[2]) * inv_v0};
+        const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2], cx2 = c[0] * c[0];
+        double L[3], Lx[3];
+        laguerre3(1.5, c2, L);
+        laguerre3(0.5, cx2, Lx);
+        q += c2 * c[0];
+        for (int k = 0; k < 3; k++) {
+            b[k] += c[0] * L[k];
+            bx[k] += c[0] * Lx[k];
+        }
+        if (cx2 > 6.0)
+            outer += c[0] * Lx[0];
+        const double ax = fabs(c[0]);
+        if (ax < scene->steady.c_max && bins > 0) {
+            size_t k = (size_t)(ax / delta);
+            if (k >= bins)   /* round-off at the last edge */
+                k = bins - 1;
+            g1[k] += (c[0] > 0.0 ? 1.0 : -1.0) * 0.5 * w / delta * inv_eps;
+            /* per bin here; sim_steady_finish makes it cumulative */
+            beta1[k] += Q[0] * c[0] * Lx[0] * w * inv_eps;
+        }
+    }
+    hf[SIM_HF_QX] += 0.5 * mass * v0 * v0 * v0 * q * w;
+    hf[SIM_HF_KAPPA_PRIME] += sim_steady_kappa_per_moment(scene) * q * w;
+    for (int k = 0; k < 3; k++) {
+        hf[SIM_HF_B1 + k] += P[k] * b[k] * w * inv_eps;
+        hf[SIM_HF_B1_X + k] += Q[k] * bx[k] * w * inv_eps;
+    }
+    hf[SIM_HF_B1_X_OUTER] += Q[0] * outer * w * inv_eps;
+}
+
+static size_t heat_flux_steady_count(const sim_scene *scene)
+{
+    return scene->heat_flux.present ? SIM_HF_SCALARS + 2 * scene->steady.bins : 0;
+}
+
+static void heat_flux_steady_name(const sim_scene *scene, size_t k, char *buf, size_t len)
+{
+    const size_t bins = scene->steady.bins;
+    if (k < SIM_HF_SCALARS)
+        snprintf(buf, len, "%s", heat_flux_names[k]);
+    else if (k < SIM_HF_SCALARS + bins)
+        snprintf(buf, len, "g1_%zu", k - SIM_HF_SCALARS);
+    else
+        snprintf(buf, len, "beta1_%zu", k - SIM_HF_SCALARS - bins);
+}
+
+/* The beta1 bins are sampled per bin and made cumulative here (the prefix
+ * sum is linear). */
+static void heat_flux_steady_finish(const sim_scene *scene, double *hf)
+{
+    const size_t bins = scene->steady.bins;
+    double *beta1 = hf + SIM_HF_SCALARS + bins;
+    for (size_t k = 1; k < bins; k++)
+        beta1[k] += beta1[k - 1];
+}
+
+const sim_steady_block sim_heat_flux_steady = {
+    .count = heat_flux_steady_count,
+    .scalars = SIM_HF_SCALARS,
+    .name = heat_flux_steady_name,
+    .sample = heat_flux_sample,
+    .finish = heat_flux_steady_finish,
+};

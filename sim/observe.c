@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "registry.h"
 #include "rng.h"
 
 static const char *const names[SIM_OBS_PROFILE] = {
@@ -173,11 +174,7 @@ void sim_observe_sums(const sim_sums *s, size_t n, double mass, double t, double
 
 size_t sim_observe_row_length(const sim_scene *scene)
 {
-    if (!scene->shear.present)
-        return SIM_OBS_BASE;
-    if (scene->shear.boundary != SIM_SHEAR_LEES_EDWARDS)
-        return SIM_OBS_SHEAR_END;
-    return SIM_OBS_PROFILE + SIM_PROFILES * scene->shear.layers;
+    return SIM_OBS_BASE + sim_registry_observables(scene);
 }
 
 /* tau_eta = 1.016 (5 sqrt(pi)/8) lambda0/sqrt(2 theta), theta = T/m (E Eq. 2.18

@@ -25,16 +25,6 @@ static int drag_present(const sim_scene *s)
            && s->collisions.restitution < 1.0;
 }
 
-static size_t heat_flux_steady(const sim_scene *s)
-{
-    return s->heat_flux.present ? SIM_HF_SCALARS + 2 * s->steady.bins : 0;
-}
-
-static size_t shear_steady(const sim_scene *s)
-{
-    return s->shear.present ? SIM_SHEAR_SCALARS + 5 * s->steady.bins : 0;
-}
-
 /* The shear set (docs/theory.md §9.3), and with the Lees-Edwards boundary the
  * slab's columns and profiles (§9.4). */
 static size_t shear_observables(const sim_scene *s)
@@ -59,11 +49,11 @@ const sim_effect_entry sim_registry[] = {
     {.section = "heating", .present = heating_present, .create_flow = sim_effect_heating,
      .flow_order = 3, .jump_key = "heating.type"},
     {.section = "heat-flux", .present = heat_flux_present, .create_flow = sim_effect_heat_flux,
-     .flow_order = 4, .steady_columns = heat_flux_steady},
+     .flow_order = 4, .steady = &sim_heat_flux_steady},
     {.section = "shear+drag", .create_flow = sim_effect_sheared_ehs_drag, .flow_order = 0,
      .fuses = {"shear", "drag"}},
     {.section = "shear", .present = shear_present, .create_flow = sim_effect_shear,
-     .flow_order = 1, .steady_columns = shear_steady, .observables = shear_observables,
+     .flow_order = 1, .steady = &sim_shear_steady, .observables = shear_observables,
      .observe = sim_observe_shear, .observe_draws = shear_draws},
     {.section = "drag", .present = drag_present, .create_flow = sim_effect_ehs_drag,
      .flow_order = 2},
@@ -83,8 +73,8 @@ size_t sim_registry_steady_first(const sim_scene *scene, const char *section)
 {
     size_t first = SIM_STEADY_BIN0 + scene->steady.bins;
     for (size_t k = 0; k < sim_registry_count && strcmp(sim_registry[k].section, section); k++)
-        if (sim_registry[k].steady_columns)
-            first += sim_registry[k].steady_columns(scene);
+        if (sim_registry[k].steady)
+            first += sim_registry[k].steady->count(scene);
     return first;
 }
 
@@ -92,9 +82,51 @@ size_t sim_registry_steady_columns(const sim_scene *scene)
 {
     size_t count = 0;
     for (size_t k = 0; k < sim_registry_count; k++)
-        if (sim_registry[k].steady_columns)
-            count += sim_registry[k].steady_columns(scene);
+        if (sim_registry[k].steady)
+            count += sim_registry[k].steady->count(scene);
     return count;
+}
+
+const sim_steady_block *sim_registry_steady_block(const sim_scene *scene, size_t k,
+                                                  size_t *first)
+{
+    size_t at = SIM_STEADY_BIN0 + scene->steady.bins;
+    for (size_t e = 0; e < sim_registry_count; e++) {
+        const sim_steady_block *b = sim_registry[e].steady;
+        const size_t count = b ? b->count(scene) : 0;
+        if (k >= at && k < at + count) {
+            *first = at;
+            return b;
+        }
+        at += count;
+    }
+    return NULL;
+}
+
+void sim_registry_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
+                                const double V[3], double theta, const double *row,
+                                double *sum)
+{
+    double *block = sum + SIM_STEADY_BIN0 + scene->steady.bins;
+    for (size_t e = 0; e < sim_registry_count; e++) {
+        const sim_steady_block *b = sim_registry[e].steady;
+        const size_t count = b ? b->count(scene) : 0;
+        if (count > 0)
+            b->sample(scene, p, mass, V, theta, row, block);
+        block += count;
+    }
+}
+
+void sim_registry_steady_finish(const sim_scene *scene, double *avg)
+{
+    double *block = avg + SIM_STEADY_BIN0 + scene->steady.bins;
+    for (size_t e = 0; e < sim_registry_count; e++) {
+        const sim_steady_block *b = sim_registry[e].steady;
+        const size_t count = b ? b->count(scene) : 0;
+        if (count > 0 && b->finish)
+            b->finish(scene, block);
+        block += count;
+    }
 }
 
 size_t sim_registry_observables(const sim_scene *scene)

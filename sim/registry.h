@@ -25,6 +25,7 @@
 #include "error.h"
 #include "particles.h"
 #include "scene.h"
+#include "steady.h"
 
 #define SIM_FUSES_MAX 2   /* flows one fused flow replaces */
 
@@ -50,10 +51,9 @@ typedef struct sim_effect_entry {
     /* The key a refusal names when the jump scheme cannot apply the flow (it is
      * neither lazy nor a global map there); NULL: scene.scheme. */
     const char *jump_key;
-    /* The columns it adds to the steady quantities (steady.h) after the base
-     * ones, in the table's order: their number for the scene (0 when the
-     * scene does not name the section), or NULL. */
-    size_t (*steady_columns)(const sim_scene *scene);
+    /* The quantities it adds to the steady ones (steady.h) after the base
+     * quantities, in the table's order, or NULL. */
+    const sim_steady_block *steady;
     /* The observables it adds to the output row after the base set, computed
      * from every particle (so it refuses conditional observation and
      * observe_only): their number for the scene, or NULL. */
@@ -77,6 +77,17 @@ size_t sim_registry_steady_first(const sim_scene *scene, const char *section);
 
 /* Every steady column the entries add for the scene. */
 size_t sim_registry_steady_columns(const sim_scene *scene);
+
+/* The block that holds steady quantity k and its first index, or NULL (a
+ * base quantity). */
+const sim_steady_block *sim_registry_steady_block(const sim_scene *scene, size_t k,
+                                                  size_t *first);
+
+/* Every block's sample (sim_steady_block.sample) and finish, into sum. */
+void sim_registry_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
+                                const double V[3], double theta, const double *row,
+                                double *sum);
+void sim_registry_steady_finish(const sim_scene *scene, double *avg);
 
 /* Nonzero if an observer of the scene draws from the observers' stream. */
 int sim_registry_observers_draw(const sim_scene *scene);

@@ -5,75 +5,48 @@
 #include <string.h>
 
 #include "observe.h"
+#include "registry.h"
 #include "rng.h"
 
 static const char *const names[SIM_STEADY_BIN0] = {
     "T", "a2", "a3", "c1", "c3", "mu2", "mu4", "mu4_white", "mu4_gaussian", "mu4_nongaussian",
 };
 
-static const char *const heat_flux_names[SIM_HF_SCALARS] = {
-    "qx", "kappa_prime", "b1", "b2", "b3", "b1_x", "b2_x", "b3_x", "b1_x_outer",
-};
-
-static const char *const shear_names[SIM_SHEAR_SCALARS] = {
-    "Pxy_reduced", "N1", "N2", "a_star", "v12_ratio", "R0", "R1", "R2", "R3",
-};
-
-/* The output row's observables the shear scalars average, in their order. */
-static const sim_observable shear_row[SIM_SHEAR_SCALARS] = {
-    SIM_OBS_PXY_REDUCED, SIM_OBS_N1, SIM_OBS_N2, SIM_OBS_A_STAR, SIM_OBS_V12_RATIO,
-    SIM_OBS_R0, SIM_OBS_R1, SIM_OBS_R2, SIM_OBS_R3,
-};
-
-size_t sim_steady_shear_first(const sim_scene *scene)
-{
-    const size_t bins = scene->steady.bins;
-    return SIM_STEADY_BIN0 + bins + (scene->heat_flux.present ? SIM_HF_SCALARS + 2 * bins : 0);
-}
-
 size_t sim_steady_count(const sim_scene *scene)
 {
     if (!scene->steady.present)
         return 0;
-    return sim_steady_shear_first(scene)
-           + (scene->shear.present ? SIM_SHEAR_SCALARS + 5 * scene->steady.bins : 0);
+    return SIM_STEADY_BIN0 + scene->steady.bins + sim_registry_steady_columns(scene);
 }
 
 size_t sim_steady_heat_flux_first(const sim_scene *scene)
 {
-    return SIM_STEADY_BIN0 + scene->steady.bins;
+    return sim_registry_steady_first(scene, "heat-flux");
+}
+
+size_t sim_steady_shear_first(const sim_scene *scene)
+{
+    return sim_registry_steady_first(scene, "shear");
 }
 
 const char *sim_steady_name(const sim_scene *scene, size_t k, char *buf, size_t len)
 {
-    const size_t bins = scene->steady.bins, hf = sim_steady_heat_flux_first(scene);
-    const size_t sh = sim_steady_shear_first(scene);
-    if (k >= sh + SIM_SHEAR_SCALARS + 4 * bins)
-        snprintf(buf, len, "F_%zu", k - sh - SIM_SHEAR_SCALARS - 4 * bins);
-    else if (k >= sh + SIM_SHEAR_SCALARS)
-        snprintf(buf, len, "%s_%zu", k - sh - SIM_SHEAR_SCALARS < 2 * bins ? "gx" : "gy",
-                 (k - sh - SIM_SHEAR_SCALARS) % (2 * bins));
-    else if (k >= sh)
-        snprintf(buf, len, "%s", shear_names[k - sh]);
+    size_t first;
+    const sim_steady_block *b = sim_registry_steady_block(scene, k, &first);
+    if (b != NULL)
+        b->name(scene, k - first, buf, len);
     else if (k < SIM_STEADY_BIN0)
         snprintf(buf, len, "%s", names[k]);
-    else if (k < hf)
-        snprintf(buf, len, "f_%zu", k - SIM_STEADY_BIN0);
-    else if (k < hf + SIM_HF_SCALARS)
-        snprintf(buf, len, "%s", heat_flux_names[k - hf]);
-    else if (k < hf + SIM_HF_SCALARS + bins)
-        snprintf(buf, len, "g1_%zu", k - hf - SIM_HF_SCALARS);
     else
-        snprintf(buf, len, "beta1_%zu", k - hf - SIM_HF_SCALARS - bins);
+        snprintf(buf, len, "f_%zu", k - SIM_STEADY_BIN0);
     return buf;
 }
 
 int sim_steady_scalar(const sim_scene *scene, size_t k)
 {
-    const size_t hf = sim_steady_heat_flux_first(scene);
-    const size_t sh = sim_steady_shear_first(scene);
-    return k < SIM_STEADY_BIN0 || (k >= hf && k < hf + SIM_HF_SCALARS)
-           || (k >= sh && k < sh + SIM_SHEAR_SCALARS);
+    size_t first;
+    const sim_steady_block *b = sim_registry_steady_block(scene, k, &first);
+    return b != NULL ? k - first < b->scalars : k < SIM_STEADY_BIN0;
 }
 
 long sim_steady_find(const sim_scene *scene, const char *name)
@@ -163,107 +136,6 @@ static inline void speed_moments(const sim_particles *p, const double V[3], doub
     m[0] = m1, m[1] = m3, m[2] = m4, m[3] = m6;
 }
 
-/* The generalised Laguerre polynomial L_k^{(a)}(x) for k = 1, 2, 3 into
- * L[0..2] (the three-term recurrence from L_0 = 1, L_1 = 1 + a - x). */
-static inline void laguerre3(double a, double x, double L[3])
-{
-    L[0] = 1.0 + a - x;
-    L[1] = ((3.0 + a - x) * L[0] - (1.0 + a)) / 2.0;
-    L[2] = ((5.0 + a - x) * L[1] - (2.0 + a) * L[0]) / 3.0;
-}
-
-double sim_steady_kappa_per_moment(const sim_scene *scene)
-{
-    return -64.0 / (75.0 * sqrt(M_PI))
-           / (sim_scene_mean_free_path(scene) * scene->heat_flux.strength);
-}
-
-/* Paper D's heat-flux quantities of one sample (steady.h), added to
- * sum[hf ...] (hf = sim_steady_heat_flux_first). */
-static void heat_flux_sample(const sim_scene *scene, const sim_particles *p, double mass,
-                             const double V[3], double theta, double *sum)
-{
-    static const double P[3] = {4.0 / 5.0, 16.0 / 35.0, 32.0 / 105.0};   /* D Eq. 3.10 */
-    static const double Q[3] = {4.0 / 3.0, 16.0 / 15.0, 32.0 / 35.0};    /* D Eq. 3.12 */
-    const size_t n = p->n, bins = scene->steady.bins;
-    const double w = 1.0 / (double)n, v0 = sqrt(2.0 * theta), inv_v0 = 1.0 / v0;
-    const double inv_eps = 1.0 / (sim_scene_mean_free_path(scene) * scene->heat_flux.strength);
-    const double delta = bins > 0 ? scene->steady.c_max / (double)bins : 1.0;
-    double *hf = sum + sim_steady_heat_flux_first(scene);
-    double *g1 = hf + SIM_HF_SCALARS, *beta1 = g1 + bins;
-    double q = 0.0, b[3] = {0, 0, 0}, bx[3] = {0, 0, 0}, outer = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        const double c[3] = {(p->v[i][0] - V[0]) * inv_v0, (p->v[i][1] - V[1]) * inv_v0,
-                             (p->v[i][2] - V[2]) * inv_v0};
-        const double c2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2], cx2 = c[0] * c[0];
-        double L[3], Lx[3];
-        laguerre3(1.5, c2, L);
-        laguerre3(0.5, cx2, Lx);
-        q += c2 * c[0];
-        for (int k = 0; k < 3; k++) {
-            b[k] += c[0] * L[k];
-            bx[k] += c[0] * Lx[k];
-        }
-        if (cx2 > 6.0)
-            outer += c[0] * Lx[0];
-        const double ax = fabs(c[0]);
-        if (ax < scene->steady.c_max && bins > 0) {
-            size_t k = (size_t)(ax / delta);
-            if (k >= bins)   /* round-off at the last edge */
-                k = bins - 1;
-            g1[k] += (c[0] > 0.0 ? 1.0 : -1.0) * 0.5 * w / delta * inv_eps;
-            /* per bin here; sim_steady_finish makes it cumulative */
-            beta1[k] += Q[0] * c[0] * Lx[0] * w * inv_eps;
-        }
-    }
-    hf[SIM_HF_QX] += 0.5 * mass * v0 * v0 * v0 * q * w;
-    hf[SIM_HF_KAPPA_PRIME] += sim_steady_kappa_per_moment(scene) * q * w;
-    for (int k = 0; k < 3; k++) {
-        hf[SIM_HF_B1 + k] += P[k] * b[k] * w * inv_eps;
-        hf[SIM_HF_B1_X + k] += Q[k] * bx[k] * w * inv_eps;
-    }
-    hf[SIM_HF_B1_X_OUTER] += Q[0] * outer * w * inv_eps;
-}
-
-/* The bin of x in [0, bins/inv_width), x >= 0 (rounding kept inside). */
-static size_t bin_of(double x, double inv_width, size_t bins)
-{
-    const size_t k = (size_t)(x * inv_width);
-    return k < bins ? k : bins - 1;
-}
-
-/* Paper E's shear-flow quantities of one sample (steady.h), added to
- * sum[sim_steady_shear_first ...]: the row's shear observables, and with bins
- * the marginals gx, gy (symmetrised, E Eq. 5.3) and F of C = (v - V)/v0. */
-static void shear_sample(const sim_scene *scene, const sim_particles *p, const double V[3],
-                         double inv_v0, const double *row, double *sum)
-{
-    double *sh = sum + sim_steady_shear_first(scene);
-    for (int k = 0; k < SIM_SHEAR_SCALARS; k++)
-        sh[k] += row[shear_row[k]];
-    const size_t bins = scene->steady.bins, n = p->n;
-    if (bins == 0)
-        return;
-    double *gx = sh + SIM_SHEAR_SCALARS, *gy = gx + 2 * bins, *F = gy + 2 * bins;
-    const double width = scene->steady.c_max / (double)bins, inv_width = 1.0 / width;
-    const double c_max = scene->steady.c_max;
-    const double half = 0.5 / ((double)n * width);       /* (1/2) per particle per width */
-    const double whole = 1.0 / ((double)n * width);
-    for (size_t i = 0; i < n; i++) {
-        const double cx = (p->v[i][0] - V[0]) * inv_v0, cy = (p->v[i][1] - V[1]) * inv_v0;
-        const double cz = (p->v[i][2] - V[2]) * inv_v0;
-        /* g_x^(+) at C_x for C_y > 0, g_x^(-)(-C_x) = g_x^(+) at -C_x for C_y < 0 */
-        const double x = cy > 0.0 ? cx : -cx, y = cx > 0.0 ? cy : -cy;
-        if (fabs(x) < c_max && cy != 0.0)
-            gx[bin_of(x + c_max, inv_width, 2 * bins)] += half;
-        if (fabs(y) < c_max && cx != 0.0)
-            gy[bin_of(y + c_max, inv_width, 2 * bins)] += half;
-        const double c = sqrt(cx * cx + cy * cy + cz * cz);
-        if (c < c_max)
-            F[bin_of(c, inv_width, bins)] += whole;
-    }
-}
-
 void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double mass,
                        gsl_rng *rng, const double *row, double *sum)
 {
@@ -346,18 +218,10 @@ void sim_steady_sample(const sim_scene *scene, const sim_particles *p, double ma
     sum[SIM_STEADY_MU4_WHITE] += 5.0 * mu2;                   /* (d + 2) mu2 */
     sum[SIM_STEADY_MU4_GAUSSIAN] += 5.0 * (1.0 + a2) * mu2;
     sum[SIM_STEADY_MU4_NONGAUSSIAN] += 2.0 * mu2 * m3 / m1;
-    if (scene->heat_flux.present)
-        heat_flux_sample(scene, p, mass, V, theta, sum);
-    if (scene->shear.present)
-        shear_sample(scene, p, V, inv_v0, row, sum);
+    sim_registry_steady_sample(scene, p, mass, V, theta, row, sum);
 }
 
 void sim_steady_finish(const sim_scene *scene, double *avg)
 {
-    if (!scene->heat_flux.present)
-        return;
-    const size_t bins = scene->steady.bins;
-    double *beta1 = avg + sim_steady_heat_flux_first(scene) + SIM_HF_SCALARS + bins;
-    for (size_t k = 1; k < bins; k++)   /* the prefix sum is linear: per bin, then cumulate */
-        beta1[k] += beta1[k - 1];
+    sim_registry_steady_finish(scene, avg);
 }

@@ -130,6 +130,32 @@ double sim_steady_marginal_centre(const sim_scene *scene, size_t k);
  * (the kappa_prime above; D Eq. 2.47 with q_x = (m/2) v0^3 <c^2 c_x>). */
 double sim_steady_kappa_per_moment(const sim_scene *scene);
 
+/* A block of steady quantities an effect adds after the base ones (its
+ * registry entry, registry.h, points at it; the blocks follow in the
+ * registry's order): the heat-flux force's (effect_heat_flux.c) and the
+ * shear's (effect_shear.c). */
+typedef struct sim_steady_block {
+    size_t (*count)(const sim_scene *scene);   /* 0 when the scene does not name it */
+    size_t scalars;   /* its first `scalars` quantities are single values, the rest bins */
+    /* The name of its quantity k into buf. */
+    void (*name)(const sim_scene *scene, size_t k, char *buf, size_t len);
+    /* Add one sample to block[count]: p the system, V its mean velocity, theta
+     * = T/m about V, row the output row just observed. */
+    void (*sample)(const sim_scene *scene, const sim_particles *p, double mass,
+                   const double V[3], double theta, const double *row, double *block);
+    /* One ensemble's time averages into the quantities (NULL: nothing to do). */
+    void (*finish)(const sim_scene *scene, double *block);
+} sim_steady_block;
+
+extern const sim_steady_block sim_heat_flux_steady, sim_shear_steady;
+
+/* The bin of x in [0, bins/inv_width), x >= 0 (rounding kept inside). */
+static inline size_t sim_steady_bin_of(double x, double inv_width, size_t bins)
+{
+    const size_t k = (size_t)(x * inv_width);
+    return k < bins ? k : bins - 1;
+}
+
 /* Add one sample of every quantity of p to sum[sim_steady_count(scene)]
  * (particles of mass `mass`; pair sampling with rng, which may be NULL when
  * steady.pairs = 0; row: the output row just observed, whose shear
