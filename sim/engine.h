@@ -32,13 +32,32 @@ typedef struct sim_counts {
 /* to += from, field by field. */
 void sim_counts_add(sim_counts *to, const sim_counts *from);
 
-/* Build the engine for a validated scene: the scheme and the effects it names,
- * each resolved once.  Returns SIM_EUNSUPPORTED, naming the scene key, for a
- * valid combination that no scheme implements yet (the time-step scheme:
- * hard-sphere collisions and the three thermostats, no background, and the
- * Lees-Edwards slab of hard spheres; the jump scheme: white-noise heating
- * only, no slab), SIM_EINVAL for values the parser should
- * have refused, SIM_ENOMEM. */
+/* Build the engine for a validated scene: the scheme and the effects it names
+ * (sim/registry.c), each resolved once.  What it accepts (tests/
+ * test_sim_contract.c builds every combination of scheme and effects and
+ * holds the engine to this list):
+ *
+ *  - scheme = jump: [collisions] of any kernel, [background], and at most one
+ *    flow: white-noise heating or [shear] (homogeneous) beside any events;
+ *    the Gaussian thermostat (a fixed zeta or keep_temperature) with
+ *    [collisions] as the only event process; the EHS drag (collisions.model
+ *    = ehs, restitution < 1) only with [shear] and [collisions] as the only
+ *    event process.  No non-Gaussian thermostat (heating.type), no
+ *    [heat-flux] (scene.scheme).  Refused, naming heating.type (or
+ *    scene.scheme, collisions.model, collisions), when a flow would not be
+ *    applied.  observation = conditional: at most white-noise heating, no
+ *    [shear] or [steady] (scene.observation).
+ *  - scheme = timestep: [collisions] of any kernel, rule and model, the
+ *    three thermostats, [shear] (homogeneous), [heat-flux] without [heating]
+ *    (heating.type); no [background] (background), no conditional
+ *    observation (scene.observation).
+ *  - [shear] boundary = lees-edwards (the slab): scheme = timestep,
+ *    hard-sphere [collisions] (ihs or ehs), splitting = euler, nothing else
+ *    (shear.boundary; background for a [background]).
+ *
+ * Returns SIM_EUNSUPPORTED, naming the scene key, for a valid combination
+ * outside that list, SIM_EINVAL for values the parser should have refused,
+ * SIM_ENOMEM. */
 sim_status sim_engine_create(const sim_scene *scene, sim_engine **engine, sim_error *err);
 void sim_engine_free(sim_engine *engine);
 
