@@ -215,6 +215,7 @@ sim_status sim_effect_heating(const sim_scene *scene, sim_flow *flow, sim_error 
 sim_status sim_effect_heat_flux(const sim_scene *scene, sim_flow *flow, sim_error *err);
 sim_status sim_effect_shear(const sim_scene *scene, sim_flow *flow, sim_error *err);
 sim_status sim_effect_ehs_drag(const sim_scene *scene, sim_flow *flow, sim_error *err);
+sim_status sim_effect_bath(const sim_scene *scene, sim_flow *flow, sim_error *err);
 /* The homogeneous shear and the EHS drag as one flow (effect_drag.c). */
 sim_status sim_effect_sheared_ehs_drag(const sim_scene *scene, sim_flow *flow, sim_error *err);
 

@@ -112,9 +112,6 @@ static sim_status build_events(sim_engine *e, const int use[], sim_error *err)
         const sim_effect_entry *en = &sim_registry[k];
         if (!use[k] || !en->create_event)
             continue;
-        if (e->nevents == SIM_EVENTS_MAX)
-            return sim_error_set(err, SIM_EUNSUPPORTED, en->section, "more than %d event "
-                                 "processes", SIM_EVENTS_MAX);
         sim_event event;
         sim_status status = en->create_event(&e->scene, &event, err);
         if (status != SIM_OK)
@@ -127,22 +124,27 @@ static sim_status build_events(sim_engine *e, const int use[], sim_error *err)
     return SIM_OK;
 }
 
-/* The flows of the selected entries in their flow_order. */
+/* The flows of the selected entries in their flow_order (the table's order
+ * among equals). */
 static sim_status build_flows(sim_engine *e, const int use[], sim_error *err)
 {
-    for (int order = 0; order <= SIM_FLOW_ORDER_MAX; order++)
-        for (size_t k = 0; k < sim_registry_count; k++) {
-            const sim_effect_entry *en = &sim_registry[k];
-            if (!use[k] || !en->create_flow || en->flow_order != order)
-                continue;
-            if (e->nflows == SIM_FLOWS_MAX)
-                return sim_error_set(err, SIM_EUNSUPPORTED, en->section, "more than %d flows",
-                                     SIM_FLOWS_MAX);
-            sim_status status = en->create_flow(&e->scene, &e->flows[e->nflows], err);
-            if (status != SIM_OK)
-                return status;
-            e->flow_entries[e->nflows++] = en;
-        }
+    const sim_effect_entry *order[SIM_FLOWS_MAX];
+    size_t count = 0;
+    for (size_t k = 0; k < sim_registry_count; k++) {
+        const sim_effect_entry *en = &sim_registry[k];
+        if (!use[k] || !en->create_flow)
+            continue;
+        size_t at = count++;
+        for (; at > 0 && order[at - 1]->flow_order > en->flow_order; at--)
+            order[at] = order[at - 1];
+        order[at] = en;
+    }
+    for (size_t k = 0; k < count; k++) {
+        sim_status status = order[k]->create_flow(&e->scene, &e->flows[e->nflows], err);
+        if (status != SIM_OK)
+            return status;
+        e->flow_entries[e->nflows++] = order[k];
+    }
     return SIM_OK;
 }
 
@@ -322,8 +324,7 @@ static void resolve_observers(sim_engine *e)
 {
     for (size_t k = 0; k < sim_registry_count; k++) {
         const sim_effect_entry *en = &sim_registry[k];
-        if (en->observe && en->observables && en->observables(&e->scene) > 0
-            && e->nobservers < SIM_OBSERVERS_MAX)
+        if (en->observe && en->observables && en->observables(&e->scene) > 0)
             e->observers[e->nobservers++] = en;
     }
 }

@@ -38,7 +38,8 @@ void sim_counts_add(sim_counts *to, const sim_counts *from);
  * holds the engine to this list):
  *
  *  - scheme = jump: [collisions] of any kernel, [background], and at most one
- *    flow: white-noise heating or [shear] (homogeneous) beside any events;
+ *    flow: white-noise heating, [bath] or [shear] (homogeneous) beside any
+ *    events;
  *    the Gaussian thermostat (a fixed zeta or keep_temperature) with
  *    [collisions] as the only event process; the EHS drag (collisions.model
  *    = ehs, restitution < 1) only with [shear] and [collisions] as the only
@@ -46,9 +47,9 @@ void sim_counts_add(sim_counts *to, const sim_counts *from);
  *    [heat-flux] (scene.scheme).  Refused, naming heating.type (or
  *    scene.scheme, collisions.model, collisions), when a flow would not be
  *    applied.  observation = conditional: at most white-noise heating, no
- *    [shear] or [steady] (scene.observation).
+ *    [bath], [shear] or [steady] (scene.observation).
  *  - scheme = timestep: [collisions] of any kernel, rule and model, the
- *    three thermostats, [shear] (homogeneous), [heat-flux] without [heating]
+ *    three thermostats, [bath], [shear] (homogeneous), [heat-flux] without [heating]
  *    (heating.type); no [background] (background), no conditional
  *    observation (scene.observation).
  *  - [shear] boundary = lees-edwards (the slab): scheme = timestep,

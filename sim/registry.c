@@ -36,6 +36,8 @@ static size_t shear_observables(const sim_scene *s)
     return SIM_OBS_PROFILE + SIM_PROFILES * s->shear.layers - SIM_OBS_BASE;
 }
 
+static int bath_present(const sim_scene *s) { return s->bath.present; }
+
 static int shear_draws(const sim_scene *s) { return s->shear.pairs > 0; }
 
 /* In the table's order: the steady columns' order.  The flows' order in a
@@ -50,6 +52,7 @@ const sim_effect_entry sim_registry[] = {
      .flow_order = 3, .jump_key = "heating.type"},
     {.section = "heat-flux", .present = heat_flux_present, .create_flow = sim_effect_heat_flux,
      .flow_order = 4, .steady = &sim_heat_flux_steady},
+    {.section = "bath", .present = bath_present, .create_flow = sim_effect_bath, .flow_order = 3},
     {.section = "shear+drag", .create_flow = sim_effect_sheared_ehs_drag, .flow_order = 0,
      .fuses = {"shear", "drag"}},
     {.section = "shear", .present = shear_present, .create_flow = sim_effect_shear,
@@ -60,6 +63,8 @@ const sim_effect_entry sim_registry[] = {
 };
 
 const size_t sim_registry_count = sizeof sim_registry / sizeof sim_registry[0];
+_Static_assert(sizeof sim_registry / sizeof sim_registry[0] <= SIM_EFFECTS_MAX,
+               "the engine holds at most SIM_EFFECTS_MAX effects: raise it (registry.h)");
 
 const sim_effect_entry *sim_registry_find(const char *section)
 {

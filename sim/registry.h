@@ -36,8 +36,9 @@ typedef void (*sim_effect_observe_fn)(const sim_scene *scene, const sim_particle
                                       double mass, uint64_t collisions, size_t m,
                                       const double *prev, gsl_rng *rng, double *row);
 
-/* Flows are ordered 0 .. SIM_FLOW_ORDER_MAX within a step. */
-#define SIM_FLOW_ORDER_MAX 4
+/* The most entries the table may hold (a compile-time check in registry.c):
+ * the engine sizes its effects by it. */
+#define SIM_EFFECTS_MAX 16
 
 typedef struct sim_effect_entry {
     const char *section;   /* its name, the scene section for most, e.g. "heating" */

@@ -37,6 +37,9 @@ void sim_scene_defaults(sim_scene *scene)
     scene->shear.boundary = SIM_SHEAR_HOMOGENEOUS;
     scene->shear.length = 1.0;
     scene->shear.layers = 1;
+
+    scene->bath.friction = 1.0;
+    scene->bath.temperature = 1.0;
 }
 
 int sim_scene_key_line(const sim_scene *scene, const char *key)

@@ -191,6 +191,14 @@ typedef struct sim_scene {
         double strength;
     } heat_flux;
 
+    /* [bath] Langevin bath: friction and white noise at temperature T_b (docs/theory.md
+     * §4.5) */
+    struct {
+        int present;
+        double friction;      /* gamma (default 1) */
+        double temperature;   /* T_b (default 1) */
+    } bath;
+
     /* [steady] steady-state observers (docs/theory.md §10): time averages, per ensemble, over the
      * output times t >= from of the reduced moments, the collisional moments mu2, mu4
      * (by `pairs` random pairs per sample) and the reduced speed distribution

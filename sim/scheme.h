@@ -20,9 +20,11 @@
 #include "run.h"
 #include "scene.h"
 
-#define SIM_EVENTS_MAX 4   /* event processes one engine runs (the registry has 2) */
-#define SIM_FLOWS_MAX 4    /* flows one engine runs (at most 3 present at once) */
-#define SIM_OBSERVERS_MAX 4   /* effects with observers of their own (the registry has 1) */
+/* Each registry entry adds at most one effect, so no scene exceeds these
+ * (registry.c holds the table to SIM_EFFECTS_MAX at compile time). */
+#define SIM_EVENTS_MAX SIM_EFFECTS_MAX
+#define SIM_FLOWS_MAX SIM_EFFECTS_MAX
+#define SIM_OBSERVERS_MAX SIM_EFFECTS_MAX
 
 typedef void (*sim_step_fn)(const sim_engine *e, sim_workspace *ws, double h);
 typedef void (*sim_interval_fn)(const sim_engine *e, sim_workspace *ws);

@@ -624,7 +624,7 @@ static void expect_error(const char *text, const char *const *ov, size_t nov,
         expect_error(text, ov, 2, SIM_EINVAL, expected);      \
     }
 
-#define SECTIONS "scene, particles, collisions, heating, background, shear, heat-flux, steady"
+#define SECTIONS "scene, particles, collisions, heating, background, shear, heat-flux, bath, steady"
 
 TRAP(trap_unknown_key, "[collisions]\nrestitution = 0.5\nalpha = 0.5\n",
      "t.ini:3: collisions.alpha: unknown key (allowed kernel, exponent, constant, rate, "

@@ -20,7 +20,7 @@ enum collisions { C_NONE, C_MAXWELL, C_VHS, C_HS, C_EHS, C_EHS_ELASTIC, COLLISIO
 enum heating { H_NONE, H_WHITE, H_GAUSSIAN, H_KEEP_T, H_NON_GAUSSIAN, HEATINGS };
 
 typedef struct combo {
-    int scheme, collisions, background, heating, heat_flux, shear, conditional;
+    int scheme, collisions, background, heating, heat_flux, shear, bath, conditional;
 } combo;
 
 static const char *const scheme_names[] = {"jump", "timestep", "timestep (relative-speed)",
@@ -68,6 +68,7 @@ static sim_scene scene_of(const combo *c)
         s.heating.keep_temperature = c->heating == H_KEEP_T;
         s.heating.strength = 0.5;
     }
+    s.bath.present = c->bath;
     if (c->heat_flux) {
         s.heat_flux.present = 1;
         s.heat_flux.strength = 0.1;
@@ -109,7 +110,7 @@ static void slab_rules(const combo *c, keys *k)
         broken(k, "shear.boundary");
     if (c->collisions != C_HS && c->collisions != C_EHS && c->collisions != C_EHS_ELASTIC)
         broken(k, "shear.boundary");
-    if (c->heating != H_NONE || c->background || c->heat_flux)
+    if (c->heating != H_NONE || c->background || c->heat_flux || c->bath)
         broken(k, "shear.boundary");
     if (c->background && c->scheme == SLAB)
         broken(k, "background");
@@ -132,7 +133,7 @@ static void timestep_rules(const combo *c, keys *k)
 static void jump_rules(const combo *c, keys *k)
 {
     const int drag = c->collisions == C_EHS;   /* the inelastic EHS gas's drag */
-    const int flows = (c->heating != H_NONE) + c->shear + drag + c->heat_flux;
+    const int flows = (c->heating != H_NONE) + c->shear + drag + c->heat_flux + c->bath;
     const int only_collisions = c->collisions != C_NONE && !c->background;
     if (c->heat_flux)
         broken(k, "scene.scheme");
@@ -146,7 +147,8 @@ static void jump_rules(const combo *c, keys *k)
         broken(k, "collisions");
     if (flows > 1 && !(drag && c->shear && flows == 2))
         broken(k, c->heating != H_NONE ? "heating.type" : "scene.scheme");
-    if (c->conditional && (c->shear || drag || (c->heating != H_NONE && c->heating != H_WHITE)))
+    if (c->conditional
+        && (c->shear || drag || c->bath || (c->heating != H_NONE && c->heating != H_WHITE)))
         broken(k, "scene.observation");
 }
 
@@ -173,6 +175,7 @@ static void test_every_combination(void **state)
     for (c.heating = 0; c.heating < HEATINGS; c.heating++)
     for (c.heat_flux = 0; c.heat_flux < 2; c.heat_flux++)
     for (c.shear = 0; c.shear < 2; c.shear++)
+    for (c.bath = 0; c.bath < 2; c.bath++)
     for (c.conditional = 0; c.conditional < 2; c.conditional++) {
         if ((c.scheme == SLAB || c.scheme == SLAB_JUMP) && c.shear)
             continue;   /* the slab is the shear */
@@ -188,16 +191,16 @@ static void test_every_combination(void **state)
         refused += st != SIM_OK;
         if (!ok && wrong++ < 10)
             print_error("%s, collisions %s, background %d, heating %s, heat-flux %d, shear %d, "
-                        "conditional %d: engine %s (%s: %s), engine.h %s%s\n",
+                        "bath %d, conditional %d: engine %s (%s: %s), engine.h %s%s\n",
                         scheme_names[c.scheme], collision_names[c.collisions], c.background,
-                        heating_names[c.heating], c.heat_flux, c.shear, c.conditional,
+                        heating_names[c.heating], c.heat_flux, c.shear, c.bath, c.conditional,
                         st == SIM_OK ? "accepts" : "refuses", err.key, err.msg,
                         expect.list[0] ? "refuses naming one of " : "accepts", expect.list);
     }
     print_message("%zu combinations accepted, %zu refused, %zu against engine.h\n", accepted,
                   refused, wrong);
     assert_int_equal(wrong, 0);
-    assert_true(accepted > 100 && refused > 1000);   /* the grid spans both */
+    assert_true(accepted > 200 && refused > 2000);   /* the grid spans both */
 }
 
 int main(void)

@@ -35,7 +35,7 @@
 /* ---- the key table --------------------------------------------------- */
 
 enum { S_SCENE, S_PARTICLES, S_COLLISIONS, S_HEATING, S_BACKGROUND, S_SHEAR, S_HEAT_FLUX,
-       S_STEADY };
+       S_BATH, S_STEADY };
 
 typedef struct section_desc {
     const char *name;
@@ -53,6 +53,7 @@ static const section_desc sections[] = {
     {"background", 1, OFF(background.present)},
     {"shear", 1, OFF(shear.present)},
     {"heat-flux", 1, OFF(heat_flux.present)},
+    {"bath", 1, OFF(bath.present)},
     {"steady", 1, OFF(steady.present)},
 };
 #define NSECTIONS (sizeof sections / sizeof sections[0])
@@ -190,6 +191,9 @@ static const key_desc keys[] = {
     COUNT(S_SHEAR, "pairs", shear.pairs, 0, SIZE_MAX),
 
     FINITE(S_HEAT_FLUX, "strength", heat_flux.strength),
+
+    POSITIVE(S_BATH, "friction", bath.friction),
+    POSITIVE(S_BATH, "temperature", bath.temperature),
 
     REAL(S_STEADY, "from", steady.from, LO_GE, 0.0, 0.0),
     COUNT(S_STEADY, "pairs", steady.pairs, 0, SIZE_MAX),

@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "registry.h"
+
 ref_heated_params vfy_heated_params(const sim_scene *scene)
 {
     return (ref_heated_params){
@@ -255,9 +257,30 @@ static sim_status check_paper_a(const sim_scene *s, sim_error *err)
     return SIM_OK;
 }
 
+/* The effects the references know, each family refusing below what it does
+ * not model; an effect registered since (sim/registry.c) is refused here,
+ * naming its section, rather than silently left out of a reference. */
+static sim_status check_modelled(const sim_scene *s, sim_error *err)
+{
+    static const char *const known[] = {"collisions", "background", "heating", "heat-flux",
+                                         "shear+drag", "shear", "drag"};
+    for (size_t k = 0; k < sim_registry_count; k++) {
+        const sim_effect_entry *en = &sim_registry[k];
+        size_t q = 0;
+        while (q < sizeof known / sizeof known[0] && strcmp(known[q], en->section) != 0)
+            q++;
+        if (q == sizeof known / sizeof known[0] && en->present && en->present(s))
+            return sim_error_set(err, SIM_EUNSUPPORTED, en->section,
+                                 "no reference models the %s", en->section);
+    }
+    return SIM_OK;
+}
+
 sim_status vfy_scene_references(const sim_scene *scene, vfy_refs *refs, sim_error *err)
 {
     memset(refs, 0, sizeof *refs);
+    if (check_modelled(scene, err) != SIM_OK)
+        return SIM_EUNSUPPORTED;
     const int paper_b = scene->background.present, paper_e = scene->shear.present && !paper_b;
     sim_status status = paper_b   ? check_paper_b(scene, err)
                         : paper_e ? check_paper_e(scene, err)
