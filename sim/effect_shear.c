@@ -25,6 +25,7 @@
 
 #include "effect.h"
 #include "observe.h"
+#include "registry.h"
 #include "run.h"
 #include "steady.h"
 
@@ -89,6 +90,13 @@ sim_status sim_effect_shear(const sim_scene *scene, sim_flow *effect, sim_error 
     p->rate = scene->shear.rate;
     *effect = (sim_flow){.type = &shear_type, .params = p};
     return SIM_OK;
+}
+
+void sim_shear_observe(const sim_scene *scene, const sim_particles *p, double mass,
+                       const sim_counts *counts, size_t m, const double *prev, gsl_rng *rng,
+                       double *row)
+{
+    sim_observe_shear(scene, p, mass, counts->collisions, m, prev, rng, row);
 }
 
 /* ------------------------------------------------ steady quantities (steady.h) */

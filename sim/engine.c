@@ -216,8 +216,9 @@ static sim_status check_observation(sim_engine *e, sim_error *err)
             || (e->nflows > 0 && (!e->lazy_flow || e->flows[0].type->spread == NULL)))
             return sim_error_set(err, SIM_EUNSUPPORTED, "scene.observation",
                                  "conditional needs scheme = jump, at most one lazy flow "
-                                 "with Gaussian increments (white noise), and no "
-                                 "[steady]%s%s%s (they observe every particle)", every ? " or [" : "", every ? observer : "",
+                                 "whose increments are Gaussian and independent of the "
+                                 "velocity, and no [steady]%s%s%s (they observe every "
+                                 "particle)", every ? " or [" : "", every ? observer : "",
                                  every ? "]" : "");
         e->pending_spread = e->lazy_flow ? e->flows[0].type->spread(&e->flows[0]) : 0.0;
         e->conditional = 1;
@@ -542,8 +543,8 @@ static void observe_at(const sim_engine *e, sim_workspace *ws, size_t m, double 
     } else {
         sim_observe_only(&ws->run.p, e->mass, e->scene.observe_only, row);
         for (size_t k = 0; k < e->nobservers; k++)
-            e->observers[k]->observe(&e->scene, &ws->run.p, e->mass, ws->run.counts.collisions,
-                                     m, prev, ws->observer_rng, row);
+            e->observers[k]->observe(&e->scene, &ws->run.p, e->mass, &ws->run.counts, m, prev,
+                                     ws->observer_rng, row);
     }
     if (e->nsteady > 0 && m >= e->steady_from) {
         sim_steady_sample(&e->scene, observed, e->mass, ws->observer_rng, row,
@@ -674,13 +675,4 @@ void sim_engine_run(const sim_engine *e, sim_workspace *ws, uint64_t index, doub
 {
     sim_engine_start(e, ws, index, obs);
     sim_engine_evolve(e, ws, obs, counts);
-}
-
-void sim_counts_add(sim_counts *to, const sim_counts *from)
-{
-    to->candidates += from->candidates;
-    to->collisions += from->collisions;
-    to->background += from->background;
-    to->violations += from->violations;
-    to->normals += from->normals;
 }

@@ -457,3 +457,12 @@ sim_status sim_ensemble_run(const sim_engine *engine, sim_progress_fn progress, 
     free(counts);
     return status;
 }
+
+void sim_counts_add(sim_counts *to, const sim_counts *from)
+{
+    to->candidates += from->candidates;
+    to->collisions += from->collisions;
+    to->background += from->background;
+    to->violations += from->violations;
+    to->normals += from->normals;
+}

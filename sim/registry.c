@@ -57,7 +57,7 @@ const sim_effect_entry sim_registry[] = {
      .fuses = {"shear", "drag"}},
     {.section = "shear", .present = shear_present, .create_flow = sim_effect_shear,
      .flow_order = 1, .steady = &sim_shear_steady, .observables = shear_observables,
-     .observe = sim_observe_shear, .observe_draws = shear_draws},
+     .observe = sim_shear_observe, .observe_draws = shear_draws},
     {.section = "drag", .present = drag_present, .create_flow = sim_effect_ehs_drag,
      .flow_order = 2},
 };

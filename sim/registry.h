@@ -22,6 +22,7 @@
 #include <gsl/gsl_rng.h>
 
 #include "effect.h"
+#include "engine.h"
 #include "error.h"
 #include "particles.h"
 #include "scene.h"
@@ -29,12 +30,17 @@
 
 #define SIM_FUSES_MAX 2   /* flows one fused flow replaces */
 
-/* An effect's observer of the output row (observe.h, sim_observe_shear): at
- * output m, from the system p of grains of mass `mass`, the collisions so
+/* An effect's observer of the output row (the shear's: effect_shear.c): at
+ * output m, from the system p of grains of mass `mass`, the run's counts so
  * far, the row before (NULL at m = 0) and the observers' stream. */
 typedef void (*sim_effect_observe_fn)(const sim_scene *scene, const sim_particles *p,
-                                      double mass, uint64_t collisions, size_t m,
+                                      double mass, const sim_counts *counts, size_t m,
                                       const double *prev, gsl_rng *rng, double *row);
+
+/* The shear's observer (sim_observe_shear with the run's collisions). */
+void sim_shear_observe(const sim_scene *scene, const sim_particles *p, double mass,
+                       const sim_counts *counts, size_t m, const double *prev, gsl_rng *rng,
+                       double *row);
 
 /* The most entries the table may hold (a compile-time check in registry.c):
  * the engine sizes its effects by it. */
