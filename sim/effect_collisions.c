@@ -65,7 +65,7 @@
  * Maxwell molecules and VHS (issue 15: the heat-flux force on any kernel):
  * the engine's stage fires the jump scheme's candidates (uniform pair, paper
  * A's rule) at their majorant rate for the stage time, with the same
- * remainder (engine.c, stage_fired).
+ * remainder (scheme_timestep.c, stage_fired).
  */
 #include <math.h>
 #include <stdint.h>
@@ -586,7 +586,7 @@ STAGE_HS_INSTANCE(stage_hs_speed_sums, 0, 1)
 /* Hard spheres have their batched stage; Maxwell molecules and VHS none
  * (NULL): the engine's stage fires their jump-scheme candidates (paper A's
  * rule: a uniform pair, accepted with (|g|/U_max)^lambda, e uniform) at the
- * majorant rate for the stage time (engine.c, stage_fired). */
+ * majorant rate for the stage time (scheme_timestep.c, stage_fired). */
 static sim_event_stage_fn collisions_select_stage(const sim_event *e, int sums)
 {
     const collisions_params *p = e->params;

@@ -71,7 +71,7 @@ static const sim_flow_type drag_type = {
 };
 
 /* Paper E's EHS gas under the homogeneous shear (issue 18), in one of two
- * ways the engine chooses (engine.c):
+ * ways the engine chooses (engine.c, resolve_modes):
  *
  *  - eagerly, when the stages draw by the contact rule: the shear's step
  *    (effect_shear.c) and then the drag's, with T taken after the shear, in

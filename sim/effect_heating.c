@@ -235,7 +235,7 @@ sim_status sim_effect_heating(const sim_scene *scene, sim_flow *effect, sim_erro
         break;
     }
     /* the jump scheme: a lazy flow (white noise) or a linear map kept global
-     * (engine.c, run_jump_linear) */
+     * (scheme_jump.c, run_jump_linear) */
     if (scene->scheme == SIM_SCHEME_JUMP && type->advance == NULL && type->linear == NULL)
         return sim_error_set(err, SIM_EUNSUPPORTED, "heating.type",
                              "non-gaussian heating needs scene.scheme = timestep (the jump "

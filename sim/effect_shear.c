@@ -17,7 +17,7 @@
  * global factor, effect_drag.c; by the contact rule, or beside another flow,
  * the step shears every particle).
  *
- * The Lees-Edwards slab (boundary = lees-edwards) is sim/slab.c.
+ * The Lees-Edwards slab (boundary = lees-edwards) is the slab scheme, sim/scheme_slab.c.
  */
 #include <math.h>
 #include <stdio.h>
