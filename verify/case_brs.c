@@ -255,11 +255,12 @@ static sim_status steady_extrapolate(vfy_case_run *run, vfy_report *r, char *msg
      /* the closures have relaxed by t_end (so the DSMC average over the second \
       * half is a steady value too, the closures relaxing on the same scale) */ \
      {.name = "{case} Grad closure at t_end vs its T*", .rule = vfy_rule_absolute,       \
-      .value = "T_grad_end", .expected = "T_star_grad", .tol = 1e-6},                    \
+      .value = "T_grad_end", .expected = "T_star_grad",                                   \
+      .tol = VFY_TOL_BRS_CLOSURE_RELAXED},                                                \
      /* the O(1/n) model describes the rows: chi^2 with 1 degree of freedom     \
       * below its 0.999 quantile */                                              \
      {.name = "{case} O(1/n) fit of T* chi^2", .rule = vfy_rule_range, .value = "chi2",  \
-      .lo = 0.0, .hi = 10.8},                                                            \
+      .lo = 0.0, .hi = VFY_TOL_BRS_FIT_CHI2},                                            \
      {.name = NULL}}
 static const vfy_check_spec steady4_checks[] = STEADY_CASE_CHECKS(0.953, 0.956, 0.956);
 static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 0.757);

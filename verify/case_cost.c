@@ -65,11 +65,8 @@
 #include "scene_refs.h"
 #include "steady.h"
 #include "table.h"
+#include "tolerances.h"
 
-#define ZMAX 4.5               /* |z| bound for exact expectations and fitted models */
-#define MODEL_FACTOR 2.0       /* measured Err within a factor 2 of the model */
-#define DOMINANCE 3.0          /* ... where one part is 3 times the other */
-#define SONINE_MODEL_RTOL 0.002  /* first-Sonine closure's own error (as grw-ex5) */
 #define PRED_N_MAX ((size_t)1 << 24)
 #define PRED_H_HALVINGS 12
 #define GRID_MAX 64            /* grid points of one case */
@@ -161,7 +158,7 @@ vfy_verdict vfy_cost_check_chi2(vfy_report *r, const char *name, double chi2, si
         vfy_skip(r, name, "no degrees of freedom left (as many rows as fitted parameters)");
         return VFY_SKIP;
     }
-    return vfy_check_range(r, name, chi2, 0.0, gsl_cdf_chisq_Qinv(1e-3, (double)dof));
+    return vfy_check_range(r, name, chi2, 0.0, gsl_cdf_chisq_Qinv(VFY_TOL_COST_CHI2_P, (double)dof));
 }
 
 /* ------------------------------------------------------------ helpers */
@@ -358,16 +355,16 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
         snprintf(name, sizeof name, "%s Conf(N=%.0f)/Conf(N=%.0f) over sqrt(%.0f/%.0f), pooled "
                  "over n", run->c->name, Ns[b - 1], Ns[b], Ns[b], Ns[b - 1]);
         vfy_cost_check_stat_scaling(r, name, c1, c2, nn, (size_t)Ns[b - 1], (size_t)Ns[b],
-                                    !vfy_external(run->o), ZMAX, &ratio);
+                                    !vfy_external(run->o), VFY_TOL_COST_Z, &ratio);
     }
-    /* Judged where one part dominates (by DOMINANCE): where the two are
+    /* Judged where one part dominates (by VFY_TOL_COST_DOMINANCE): where the two are
      * comparable, noise of the opposite sign can cancel the bias and Err
      * fall far below either, which no smooth model follows. */
     double worst, dom_err[GRID_MAX], dom_model[GRID_MAX];
     size_t ndom = 0;
     for (size_t i = 0; i < P; i++) {
         double a = g[G_SYS][i], b2 = k * g[G_CONF_FIT][i];
-        if (fmax(a, b2) >= DOMINANCE * fmin(a, b2)) {
+        if (fmax(a, b2) >= VFY_TOL_COST_DOMINANCE * fmin(a, b2)) {
             dom_err[ndom] = g[G_ERR][i];
             dom_model[ndom++] = g[G_MODEL][i];
         }
@@ -375,7 +372,8 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
     snprintf(name, sizeof name, "%s Err/model where one part dominates (%zu of %zu points)",
              run->c->name, ndom, P);
     if (ndom > 0)
-        vfy_cost_check_model(r, name, dom_err, dom_model, ndom, MODEL_FACTOR, &worst);
+        vfy_cost_check_model(r, name, dom_err, dom_model, ndom, VFY_TOL_COST_MODEL_FACTOR,
+                             &worst);
     else
         vfy_skip(r, name, "no grid point where one part dominates");
     snprintf(name, sizeof name, "%s majorant violations (all points)", run->c->name);
@@ -458,8 +456,8 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
      {NULL, NULL, NULL, NULL, 0}}
 #define COST_GRID_CHECKS(OBS, FINITE)                                                   \
     {{.name = "{case} n={n} N={N} " OBS " vs exact finite-n expectation",                \
-      .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1, .tol = ZMAX,  \
-      .out = "z"},                                                                      \
+      .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1,              \
+      .tol = VFY_TOL_ZMAX, .out = "z"},                                                 \
      {.name = NULL}}
 static const char grid_columns[] =
     "n:%.0f N:%.0f Err:%.3e Err_sys:%.3e Err_stat:%.3e Conf:%.3e z:%.2f Err_model:%.3e "
@@ -701,7 +699,7 @@ static void split_parts(vfy_case_run *run, split_fit *f, vfy_report *r)
     char name[200];
     snprintf(name, sizeof name, "%s every row vs the fitted model T_inf + b/n + splitting",
              run->c->name);
-    vfy_check_zscore(r, name, f->T, f->Tci, f->fit_mean, f->P, ZMAX, &zmax);
+    vfy_check_zscore(r, name, f->T, f->Tci, f->fit_mean, f->P, VFY_TOL_COST_Z, &zmax);
     vfy_values_set(&run->values, "zmax", zmax);
 
     double kappa_num = 0.0, kappa_den = 0.0, one[GRID_MAX], inv_h[GRID_MAX], per[GRID_MAX];
@@ -923,7 +921,7 @@ static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, 
         snprintf(name, sizeof name, "%s T_inf (n -> infinity) vs first-Sonine steady T",
                  run->c->name);
         vfy_check_absolute(r, name, f->T_inf, T_sonine,
-                           f->T_inf_ci + SONINE_MODEL_RTOL * T_sonine);
+                           f->T_inf_ci + VFY_TOL_SONINE_MODEL_RTOL * T_sonine);
         split_parts(run, f, r);
         split_predict(f, n_min, h_max, pr);
         char summary[900];

@@ -41,7 +41,7 @@ static const vfy_metric grw_metrics[] = {
 static const vfy_check_spec grw_checks[] = {
     {.name = "{case} n={n} Emax vs paper {paper}", .rule = vfy_rule_relative, .value = "Emax",
      .expected = "Emax_paper", .tol = VFY_TOL_GRW_PAPER_RTOL,
-     .guard = {vfy_guard_at_most, "n", NULL, 4096,
+     .guard = {vfy_guard_at_most, "n", NULL, VFY_TOL_GRW_PAPER_MAX_N,
                "n > 4096: the paper's own statistical error is comparable to its Emax"}},
     {.name = "{case} n={n} CF", .rule = vfy_rule_range, .value = "CF",
      .lo = VFY_TOL_GRW_CF_LO, .hi = VFY_TOL_GRW_CF_HI,

@@ -127,13 +127,13 @@ void vfy_hard_summarize(const sim_ensemble_result *res, double mass, vfy_hard_su
 double vfy_hard_momentum_bound(const vfy_hard_summary *s, double updates)
 {
     const double u = 0.5 * DBL_EPSILON;
-    return 6.0 * u * s->speed * (sqrt(2.0 * updates) / (double)s->n + 2.0);
+    return VFY_TOL_HARD_ROUNDING_SIGMAS * u * s->speed * (sqrt(2.0 * updates) / (double)s->n + 2.0);
 }
 
 double vfy_hard_energy_bound(const vfy_hard_summary *s, double collisions)
 {
     const double u = 0.5 * DBL_EPSILON, n = (double)s->n;
-    return 6.0 * u * (8.0 * sqrt(collisions) / n + 2.0 * sqrt(n));
+    return VFY_TOL_HARD_ROUNDING_SIGMAS * u * (8.0 * sqrt(collisions) / n + 2.0 * sqrt(n));
 }
 
 /* "<label> <what>" in buf (a check's name; checks.h keeps 95 characters). */
@@ -200,7 +200,7 @@ vfy_verdict vfy_hard_check_cooling_range(vfy_report *r, const char *label,
 {
     char name[128];
     const int ok = isfinite(s->T_min) && isfinite(s->T_max) && s->T_min > 0.0
-                   && s->T_max <= s->T_first * (1.0 + 1e-12);
+                   && s->T_max <= s->T_first * (1.0 + VFY_TOL_HARD_COOLING_RTOL);
     return vfy_check_true(r, check_name(name, sizeof name, label, "T in its physical range"),
                           ok, "T between %.6g and %.6g, T(0) = %.6g (allowed (0, T(0)]: no "
                           "heating)", s->T_min, s->T_max, s->T_first);

@@ -419,7 +419,7 @@ static void ms_tail_analyse(const vfy_row *row, double *c, double *f, double *fc
         G[k] = e * f[k];
         Gc[k] = e * fc[k];
         Gphi[k] = e * pow(M_PI, -1.5) * exp(-c[k] * c[k]);
-        if (c[k] >= 3.0 && f[k] > 0.0 && fc[k] < 0.5 * f[k]) {
+        if (c[k] >= VFY_TOL_MS_TAIL_C && f[k] > 0.0 && fc[k] < VFY_TOL_MS_TAIL_REL_CI * f[k]) {
             const double w = 1.0 / (Gc[k] * Gc[k]);
             K_num += w * G[k];
             K_den += w;
@@ -439,10 +439,11 @@ static void ms_tail_analyse(const vfy_row *row, double *c, double *f, double *fc
     const size_t k_lo = (size_t)floor(4.0 / (s->steady.c_max / (double)bins) - 0.5);
     const double t4 = (4.0 - c[k_lo]) / (c[k_lo + 1] - c[k_lo]);
     t->ratio4 = exp((1.0 - t4) * log(r_lo) + t4 * log(r_hi));
-    t->ratio4_ok = r_lo_ci < 0.5 * r_lo && isfinite(t->ratio4);
+    t->ratio4_ok = r_lo_ci < VFY_TOL_MS_TAIL_REL_CI * r_lo && isfinite(t->ratio4);
     double sd2, K2, K3;
     vfy_fit_tail(c, f, fc, bins, b, 2.0, SIM_LAMBDA_P, &t->A_fit2, &sd2, &K2);
-    t->used3 = vfy_fit_tail(c, f, fc, bins, b, 3.0, SIM_LAMBDA_P, &t->A_fit3, &t->A_sd3, &K3);
+    t->used3 = vfy_fit_tail(c, f, fc, bins, b, VFY_TOL_MS_TAIL_C, SIM_LAMBDA_P, &t->A_fit3,
+                            &t->A_sd3, &K3);
 }
 
 /* The tails need a histogram that reaches past c = 4 (ms_require first). */

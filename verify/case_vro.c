@@ -53,7 +53,8 @@ static const vfy_check_spec vro_checks[] = {
     /* Var_sampled = Var_conditional + E Var(increments): a factor at or below
      * 1 means the expectation was not taken. */
     {.name = "{case} n={n} variance reduction of T_raw (mean over t)", .rule = vfy_rule_range,
-     .value = "var_ratio_T_raw", .lo = 1.0 + 1e-9, .hi = INFINITY, .builtin_only = SAME_STREAMS},
+     .value = "var_ratio_T_raw", .lo = VFY_TOL_VRO_VAR_RATIO_MIN, .hi = INFINITY,
+     .builtin_only = SAME_STREAMS},
     {.name = NULL}};
 static const char vro_columns[] =
     "n:%.0f N:%.0f var_ratio_T_raw:%.3f var_ratio_T_raw_min:%.3f var_ratio_T:%.3f "
