@@ -133,13 +133,14 @@ static void test_sweeps(void **state)
 {
     (void)state;
     char v[32];
-    const vfy_sweep zipped = {.keys = {"particles.n", "particles.ensembles"},
-                              .values = {"64 256 1024", "10 20 30 40"}};
+    const vfy_sweep zipped = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL},
+                                               {"particles.ensembles", "10 20 30 40", NULL})};
     assert_int_equal(vfy_sweep_rows(&zipped), 3);   /* the shorter list */
     vfy_sweep_value(&zipped, 2, 1, v, sizeof v);
     assert_string_equal(v, "30");
-    const vfy_sweep grid = {.keys = {"particles.n", "particles.ensembles"},
-                            .values = {"64 256", "10 20 30"}, .grid = 1};
+    const vfy_sweep grid = {.keys = VFY_KEYS({"particles.n", "64 256", NULL},
+                                             {"particles.ensembles", "10 20 30", NULL}),
+                            .grid = 1};
     assert_int_equal(vfy_sweep_rows(&grid), 6);
     vfy_sweep_value(&grid, 4, 0, v, sizeof v);   /* the first key slowest */
     assert_string_equal(v, "256");
@@ -148,7 +149,7 @@ static void test_sweeps(void **state)
     static const char *const rows[] = {"a: x.y=1", "b: x.y=2", NULL};
     const vfy_sweep explicit_rows = {.rows = rows};
     assert_int_equal(vfy_sweep_rows(&explicit_rows), 2);
-    const vfy_sweep none = {.keys = {NULL}};
+    const vfy_sweep none = {.keys = NULL};
     assert_int_equal(vfy_sweep_rows(&none), 0);
 }
 
@@ -162,7 +163,7 @@ static void fake_run(vfy_case_run *run, vfy_row rows[2])
     memset(rows, 0, 2 * sizeof *rows);
     *run = (vfy_case_run){.c = &test_case, .d = &test_desc, .o = &test_options, .rows = rows,
                           .nrows = 2};
-    snprintf(run->comment, sizeof run->comment, "provenance");
+    run->comment = vfy_strdup("provenance");
     for (size_t i = 0; i < 2; i++) {
         rows[i].index = i;
         rows[i].run = run;
@@ -178,8 +179,8 @@ static void fake_run(vfy_case_run *run, vfy_row rows[2])
 static void free_run(vfy_case_run *run)
 {
     for (size_t i = 0; i < run->nrows; i++)
-        vfy_values_free(&run->rows[i].values);
-    vfy_values_free(&run->values);
+        vfy_row_free(&run->rows[i]);
+    vfy_run_free(run);
 }
 
 static void test_templates(void **state)
@@ -320,9 +321,7 @@ static void test_tail_fit_and_adapters(void **state)
     assert_close(absw.fn(&run, row, &absw), 0.3, 1e-15, 0);   /* quick: widened */
     vfy_values_set(&row->values, "mu2_1", 0.0);   /* the elastic limit: no ratio */
     assert_true(isnan(ratio.fn(&run, row, &ratio)));
-    snprintf(row->text_names[0], sizeof row->text_names[0], "relation");
-    snprintf(row->texts[0], sizeof row->texts[0], "mu2");
-    row->ntexts = 1;
+    assert_int_equal(vfy_row_set_text(row, "relation", "mu2"), 0);
     const vfy_metric named = {"n", vfy_metric_named_by_text, "relation", "_ci", 0};
     assert_close(named.fn(&run, row, &named), 0.05, 0, 0);
     free_run(&run);
@@ -410,7 +409,7 @@ static const vfy_check_spec e2e_checks[] = {
 static const char e2e_columns[] = "n:%.0f N:%.0f CF:%.2f z:%.2f";
 static const vfy_case_desc e2e_desc = {
     .scene = "grw-ex3",
-    .quick_rows = {.keys = {"particles.n"}, .values = {"16 64"},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "16 64", NULL}),
                    .sets = "particles.ensembles=400;scene.outputs=21"},
     .needs = e2e_needs, .needs_why = "Maxwell molecules", .metrics = e2e_metrics,
     .checks = e2e_checks, .columns = e2e_columns, .title = "{case}",
@@ -535,8 +534,8 @@ static const vfy_case_desc rows_desc = {
     .quick_rows = {.rows = rows_rows, .sets = "particles.ensembles=200;scene.outputs=11"},
     .needs = e2e_needs, .label = "{case} {label}", .variants = rows_variants,
     .adjust = rows_adjust, .checks = rows_checks, .columns = rows_columns,
-    .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
-                 .refs = {"T_exact"}}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
+                 .refs = VFY_LIST("T_exact")}),
     .title = "{case}", .notes = "notes"};
 static const vfy_case rows_case = {"driver-rows", "test", "", 0,
                                    &rows_desc};
@@ -616,13 +615,13 @@ static const vfy_check_spec batch_case_checks[] = {
 static const char batch_columns[] = "n:%.0f N:%.0f T_star:%.5f";
 static const vfy_case_desc batch_desc = {
     .scene = "grw-ex3",
-    .quick_rows = {.keys = {"particles.n"}, .values = {"16"},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "16", NULL}),
                    .sets = "particles.ensembles=300;scene.outputs=21"},
     .needs = e2e_needs, .variants = batch_variants, .adjust = batch_seed,
     .metrics = batch_metrics, .columns = batch_columns, .after_rows = batch_hook,
     .case_checks = batch_case_checks,
-    .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T_raw@*",
-                 .refs = {"T_raw_finite_n"}}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T_raw@*",
+                 .refs = VFY_LIST("T_raw_finite_n")}),
     .title = "{case}", .notes = "{rows} row"};
 static const vfy_case batch_case = {"driver-batches", "test", "", 0, &batch_desc};
 
@@ -667,7 +666,8 @@ static const vfy_case_desc grid_desc = {
     .scene = "grw-ex3",
     .quick_rows = {.rows = grid_rows, .sets = "particles.n=8;particles.ensembles=50"},
     .needs = e2e_needs, .label = "{case} {label}", .columns = "n:%.0f",
-    .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = {"T_exact"}}},
+    .figures = VFY_FIGURES(
+        {.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = VFY_LIST("T_exact")}),
     .title = "{case}", .notes = "notes"};
 static const vfy_case grid_case = {"driver-grids", "test", "", 0, &grid_desc};
 

@@ -410,7 +410,7 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
         vfy_values_set(&run->values, vnames[i], v[i][0]);
     run->second_suffix = "-targets";
     run->second_title = VFY_COST_TARGETS_TITLE;
-    snprintf(run->second_notes, sizeof run->second_notes,
+    if (vfy_run_second_notes(run,
              "grid: the cheapest measured point (least cpu_s) with Err <= target, or \"not "
              "reached in the grid\". predicted_*: the cheapest (n, N) by the model above "
              "(a prediction, not a measurement) over n = %.0f 2^j up to 2^24 and N among the "
@@ -421,7 +421,10 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
              "estimated (among powers of two several (n, N) cost the same; the one with the "
              "smaller Err is shown). The model assumes kappa stays constant as n grows beyond the grid "
              "(memory effects are not modelled). Summary: %s.",
-             ns[0], Ns[0], Ns[nN - 1], summary);
+             ns[0], Ns[0], Ns[nN - 1], summary) != 0) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
 
     vfy_wp_series series[AXIS_MAX];
     size_t idx[AXIS_MAX][AXIS_MAX];
@@ -485,10 +488,12 @@ static const char grid_columns[] =
 #define COST_GRID(SCENE, WHAT, OBS, FINITE, N_PAPER, N_QUICK, ...)                 \
     {.scene = SCENE,                                                                     \
      __VA_ARGS__,                                                                       \
-     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
-                    .values = {N_PAPER, "128 512 2048"}, .grid = 1},                     \
-     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
-                    .values = {N_QUICK, "64 256"}, .grid = 1},                           \
+     .paper_rows = {.keys = VFY_KEYS({"particles.n", N_PAPER, NULL},                      \
+                                     {"particles.ensembles", "128 512 2048", NULL}),      \
+                    .grid = 1},                                                           \
+     .quick_rows = {.keys = VFY_KEYS({"particles.n", N_QUICK, NULL},                      \
+                                     {"particles.ensembles", "64 256", NULL}),            \
+                    .grid = 1},                                                           \
      .needs = (const char *const[]){"T_exact", FINITE, NULL},                            \
      .needs_why = "the cost grid needs the exact expectation of the n-particle estimator", \
      .label = "{case} n={n} N={ensembles}",                                              \
@@ -948,8 +953,11 @@ static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, 
         vfy_run_set_text(run, "summary", summary);
         run->second_suffix = "-targets";
         run->second_title = VFY_COST_TARGETS_TITLE;
-        vfy_expand(run->second_notes, sizeof run->second_notes, SPLIT_TARGET_NOTES, run, NULL);
-        if (split_figure(run, f, &pred) != 0)
+        free(run->second_notes);
+        if ((run->second_notes = vfy_expand_alloc(SPLIT_TARGET_NOTES, run, NULL)) == NULL) {
+            snprintf(msg, msglen, "out of memory");
+            status = SIM_ENOMEM;
+        } else if (split_figure(run, f, &pred) != 0)
             status = vfy_io_error(run->c->name, msg, msglen);
     }
     free(f);

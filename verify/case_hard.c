@@ -780,10 +780,9 @@ static const char tails_columns[] = WHITE_COLUMNS_HEAD
 const vfy_case_desc vfy_hard_dissipation = {
     .must_fail = "heating.strength=1.05",
     .power_keys = "collisions.restitution=0.9",
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}},
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}, .sets = STEADY_QUICK_SETS},
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
+                   .sets = STEADY_QUICK_SETS},
     .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .derive = dissipation_beta,
     .adjust = white_require, .values = white_values, .metrics = dissipation_metrics,
     .checks = dissipation_checks, .columns = dissipation_columns,
@@ -803,8 +802,8 @@ static sim_status tails_c_max(vfy_case_run *run, vfy_report *r, char *msg, size_
 }
 const vfy_case_desc vfy_hard_tails = {
     .must_fail = "heating.strength=1.05",
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"}, .values = {"0.1"}},
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"}, .values = {"0.1"},
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"})},
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"}),
                    .sets = "particles.n=2000;particles.ensembles=16;steady.pairs=4000"},
     .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .adjust = white_require,
     .values = white_values, .metrics = tails_metrics, .checks = tails_checks,
@@ -871,10 +870,9 @@ static const char nongaussian_columns[] =
 const vfy_case_desc vfy_hard_nongaussian = {
     .must_fail = "heating.strength=1.05",
     .power_keys = "collisions.restitution=0.9",
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}},
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}, .sets = STEADY_QUICK_SETS},
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
+                   .sets = STEADY_QUICK_SETS},
     .label = WHITE_LABEL,
     .row_progress = WHITE_LABEL ": a2 = {a2:%.5f} (C.76 {a2_C76:%.5f}), f/phi(c < {delta:%g}) "
                                 "= {f_over_phi_0:%.3f}, max |V| {max_V:%.3g}",

@@ -236,19 +236,20 @@ static const char a2_columns[] =
     "temperature (the thermostat strength is set so that it is close to T0 = 1). "        \
     "ns_per_candidate = CPU time per candidate collision, everything included. Checks: "  \
     CHECKS "; " MS_T_NOTE " Total wall time {wall_total:%.1f} s."
-#define A2_SERIES {"a2", "(mu2-mu2_0)/mu2_1=mu2_ratio", "(mu4-mu4_0)/mu4_1=mu4_ratio"}
+#define A2_SERIES VFY_LIST("a2", "(mu2-mu2_0)/mu2_1=mu2_ratio", "(mu4-mu4_0)/mu4_1=mu4_ratio")
 #define A2_FIGURE(CURVE1, CURVE2, WHAT)                                                 \
-    {.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = A2_SERIES, .refs = {CURVE1, CURVE2}, \
+    {.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = A2_SERIES,                      \
+     .refs = VFY_LIST(CURVE1, CURVE2),                                                  \
      .x_lo = 0.2, .x_hi = 1.0, .title = "{case}: a2 against alpha, " WHAT, .xlabel = "alpha", \
      .ylabel = "a2"}
 #define MS_A2(STEM, QUICK_ALPHA)                                                        \
     .scene = STEM, .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength, \
     .adjust = ms_require, .values = a2_values, .columns = a2_columns,                   \
     .after_rows = ms_sizes,                                                             \
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},              \
-                   .values = {"0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"}},                  \
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},              \
-                   .values = {QUICK_ALPHA}, .sets = MS_QUICK_SETS}
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution",                          \
+                                     "0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0", "alpha"})},  \
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", QUICK_ALPHA, "alpha"}),  \
+                   .sets = MS_QUICK_SETS}
 
 const vfy_case_desc vfy_ms_white_noise = {
     .must_fail = "collisions.restitution=0.95 heating.strength=1.05",
@@ -256,8 +257,8 @@ const vfy_case_desc vfy_ms_white_noise = {
     .title = "{case}: paper C Figure 1, a2 against alpha, white noise (stochastic thermostat) "
              "({size} sizes)",
     .notes = A2_NOTES("|a2 - C10| <= 0.003 at every alpha < 1"),
-    .figures = {A2_FIGURE("a2 (C.10)=a2_C10", "a2 (C.32)=a2_C32",
-                          "white noise (stochastic thermostat) (paper C Figure 1)")}};
+    .figures = VFY_FIGURES(A2_FIGURE("a2 (C.10)=a2_C10", "a2 (C.32)=a2_C32",
+                          "white noise (stochastic thermostat) (paper C Figure 1)"))};
 
 const vfy_case_desc vfy_ms_gaussian = {
     .must_fail = "collisions.restitution=0.5",
@@ -266,11 +267,11 @@ const vfy_case_desc vfy_ms_gaussian = {
              "variables) ({size} sizes)",
     .notes = A2_NOTES("|a2 - C40| <= 0.004 at every alpha < 1; |a3| <= 0.01 for alpha >= 0.6 "
                       "and >= 0.03 for alpha <= 0.3 (Figure 6)"),
-    .figures = {A2_FIGURE("a2 (C.5)=a2_C5", "a2 (C.40)=a2_C40",
+    .figures = VFY_FIGURES(A2_FIGURE("a2 (C.5)=a2_C5", "a2 (C.40)=a2_C40",
                           "Gaussian thermostat (HCS in scaled variables) (paper C Figure 4)"),
-                {.kind = VFY_FIGURE_POINTS, .suffix = "-a3", .x = "alpha", .series = {"a3"},
+                {.kind = VFY_FIGURE_POINTS, .suffix = "-a3", .x = "alpha", .series = VFY_LIST("a3"),
                  .title = "{case}: a3 against alpha, Gaussian thermostat (paper C Figure 6)",
-                 .xlabel = "alpha", .ylabel = "a3"}}};
+                 .xlabel = "alpha", .ylabel = "a3"})};
 
 const vfy_case_desc vfy_ms_non_gaussian = {
     .must_fail = "collisions.restitution=0.95 heating.strength=1.05",
@@ -278,8 +279,8 @@ const vfy_case_desc vfy_ms_non_gaussian = {
     .title = "{case}: paper C Figure 8, a2 against alpha, non-Gaussian thermostat ({size} "
              "sizes)",
     .notes = A2_NOTES("a2 < 0 (with its ci) and within 25% of C76 for alpha < 1"),
-    .figures = {A2_FIGURE("a2 (C.50)=a2_C50", "a2 (C.76)=a2_C76",
-                          "non-Gaussian thermostat (paper C Figure 8)")}};
+    .figures = VFY_FIGURES(A2_FIGURE("a2 (C.50)=a2_C50", "a2 (C.76)=a2_C76",
+                          "non-Gaussian thermostat (paper C Figure 8)"))};
 
 /* ------------------------------------------------------------ Table 1 */
 

@@ -285,8 +285,6 @@ static const struct {
 static sim_status msg_linear(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
     (void)r;
-    (void)msg;
-    (void)msglen;
     static const char *const cols[] = {"alpha", "quantity", "eps_0.025", "ci_0.025", "eps_0.05",
                                        "ci_0.05", "linear", "linear_ci", "exact"};
     static const double alphas[] = {1.0, 0.3};
@@ -326,13 +324,16 @@ static sim_status msg_linear(vfy_case_run *run, vfy_report *r, char *msg, size_t
     run->second_suffix = "-linear";
     run->second_title = "The linear-response limit: eps* = 0.025, 0.05 and extrapolated in "
                         "eps*^2";
-    snprintf(run->second_notes, sizeof run->second_notes,
+    if (vfy_run_second_notes(run, "%s",
              "kappa = kappa'/kappa0, b1..b3 = b'_k (D Eq. 3.10), each per unit of the case's "
              "force with its Student half-width; linear = the eps* -> 0 limit through both "
              "strengths in eps*^2 (they are even in eps*); exact = the linearised elastic "
              "Boltzmann equation solved by a converged Sonine expansion (gdsmc sonine: "
              "*_elastic_exact). a2, even in eps* too, shows the departure from linear response "
-             "(its limit is the HCS a2: 0 at alpha = 1).");
+             "(its limit is the HCS a2: 0 at alpha = 1).") != 0) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
     return SIM_OK;
 }
 
@@ -570,12 +571,13 @@ const vfy_case_desc vfy_msg_kappa = {
                "kappa_prime_sonine:%.5f kappa_prime_modified:%.5f sonine_percent:%+.2f "
                "modified_percent:%+.2f below_sonine:%.1f kappa_sonine:%.5f "
                "mu_star_sonine:%.5f a2:%.5f a2_ci:%.5f violations:%.0f " VFY_COST_COLUMNS,
-    .figures = {{.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = {"DSMC=kappa"},
-                 .refs = {"first Sonine=kappa_prime_sonine",
-                          "modified first Sonine=kappa_prime_modified"},
-                 .x_lo = 0.3, .x_hi = 1.0,
-                 .title = "{case}: kappa'/kappa0 against alpha (paper D Fig. 3)",
-                 .xlabel = "alpha", .ylabel = "kappa'/kappa0"}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_POINTS, .x = "alpha",
+                            .series = VFY_LIST("DSMC=kappa"),
+                            .refs = VFY_LIST("first Sonine=kappa_prime_sonine",
+                                             "modified first Sonine=kappa_prime_modified"),
+                            .x_lo = 0.3, .x_hi = 1.0,
+                            .title = "{case}: kappa'/kappa0 against alpha (paper D Fig. 3)",
+                            .xlabel = "alpha", .ylabel = "kappa'/kappa0"}),
     .title = "{case}: paper D Fig. 3, the modified thermal conductivity kappa'/kappa0 "
              "against alpha ({size} sizes)",
     .notes =
@@ -606,10 +608,11 @@ const vfy_case_desc vfy_msg_sonine = {
                "b1_x_ci=b1xc_ci:%.4f b2_x=b2xc:%.4f b2_x_ci=b2xc_ci:%.4f b3_x=b3xc:%.4f "
                "b3_x_ci=b3xc_ci:%.4f z1:%.2f z2:%.2f z3:%.2f higher_over_b1:%.3f higher_low:%.3f "
                "violations:%.0f " VFY_COST_COLUMNS,
-    .figures = {{.kind = VFY_FIGURE_POINTS, .x = "alpha",
-                 .series = {"b'_1=b1c", "b'_2=b2c", "b'_3=b3c", "b'_2 from c_x=b2xc"},
-                 .title = "{case}: Sonine coefficients b'_k against alpha (paper D Fig. 4)",
-                 .xlabel = "alpha", .ylabel = "b'_k"}},
+    .figures = VFY_FIGURES(
+        {.kind = VFY_FIGURE_POINTS, .x = "alpha",
+         .series = VFY_LIST("b'_1=b1c", "b'_2=b2c", "b'_3=b3c", "b'_2 from c_x=b2xc"),
+         .title = "{case}: Sonine coefficients b'_k against alpha (paper D Fig. 4)",
+         .xlabel = "alpha", .ylabel = "b'_k"}),
     .title = "{case}: paper D Figs. 2, 4, the Sonine coefficients b'_1, b'_2, b'_3 against "
              "alpha ({size} sizes)",
     .notes =

@@ -77,9 +77,8 @@ static sim_status vro_smallest(vfy_case_run *run, vfy_report *r, char *msg, size
 const vfy_case_desc vfy_vro_grw_ex3 = {
     .must_fail = "heating.strength=1.05 collisions.constant=1.05",
     .scene = "grw-ex3",
-    .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024"}},
-    .quick_rows = {.keys = {"particles.n"},
-                   .values = {"64 256"},
+    .paper_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL})},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "64 256", NULL}),
                    .sets = "particles.ensembles=2000"},
     .needs = vro_needs, .needs_why = VFY_NEEDS_MAXWELL, .variants = vro_variants,
     .metrics = vro_metrics, .checks = vro_checks, .columns = vro_columns,
