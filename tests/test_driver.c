@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "driver.h"
+#include "figure.h"
 #include "metrics.h"
 #include "references.h"
 #include "scene_ini.h"
@@ -764,6 +765,40 @@ static void test_reference_registry(void **state)
     assert_true(isnan(vfy_reference_value("no_such", &s)));
 }
 
+/* One panel per row for every row (not the first four): six rows in three
+ * lines of two panels, each titled by its n. */
+static void test_curve_panels(void **state)
+{
+    (void)state;
+    enum { ROWS = 6, M = 3 };
+    const double t[M] = {0.0, 1.0, 2.0};
+    double mean[ROWS * M], ci[ROWS * M];
+    size_t n[ROWS];
+    for (size_t i = 0; i < ROWS; i++) {
+        n[i] = 4u << i;
+        for (size_t m = 0; m < M; m++) {
+            mean[i * M + m] = 1.0 + 0.1 * (double)m;
+            ci[i * M + m] = 0.01;
+        }
+    }
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_curves(&o, "driver-panels", "six rows", "comment", t, M, 0, NULL,
+                                      NULL, ROWS, n, NULL, mean, ci, "T", 0.0, 1),
+                     0);
+    char path[600], line[512];
+    snprintf(path, sizeof path, "%s/driver-panels.gp", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t panels = 0, layout = 0;
+    while (fgets(line, sizeof line, f) != NULL) {
+        panels += strncmp(line, "set title 'n = ", 15) == 0;
+        layout += strstr(line, "set multiplot layout 3,2 ") != NULL;
+    }
+    fclose(f);
+    assert_int_equal(panels, ROWS);
+    assert_int_equal(layout, 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -778,6 +813,7 @@ int main(void)
         cmocka_unit_test(test_batches_and_case_checks),
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
+        cmocka_unit_test(test_curve_panels),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

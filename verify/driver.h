@@ -257,7 +257,7 @@ typedef struct vfy_figure_spec {
                                         references, "LABEL=name" or "name"); VFY_LIST,
                                         or NULL for none */
     double x_from;                   /* the t axis starts here */
-    int panel_per_row;               /* one panel per row (the first four), or one plot */
+    int panel_per_row;               /* one panel per row (every row), or one plot */
     int extrapolated;                /* draw the hook's n = infinity curve too */
     /* POINTS: x is a row value; each series a value with its "_ci" ("LABEL=name"
        or "name"); a row where one of them is not finite is left out.  The
