@@ -206,10 +206,17 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
 
 const double vfy_wp_targets[VFY_WP_TARGETS] = {1e-2, 1e-3, 1e-4};
 
+void vfy_wp_prediction_free(vfy_wp_prediction *pred)
+{
+    for (size_t k = 0; k < pred->count; k++)
+        free(pred->label[k]);
+    *pred = (vfy_wp_prediction){0};
+}
+
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
                              const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
                              const double *cpu, const double *err, const double *model,
-                             char (*labels)[24], const vfy_wp_prediction *pred)
+                             const char *const *labels, const vfy_wp_prediction *pred)
 {
     char data[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[200];
     snprintf(file, sizeof file, "%s-points", name);
@@ -228,7 +235,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
     fprintf(f, "\n\n# the model's cheapest point per target (predictions)\n");
     for (size_t k = 0; k < pred->count; k++)
         fprintf(f, "%.6g,%.6g,%.6g,%s\n", pred->cpu[k], pred->err[k], pred->err[k],
-                pred->label[k]);
+                pred->label[k] ? pred->label[k] : "");
     if (vfy_file_commit(f, tmp, data, 1) != 0)
         return -1;
     f = begin_script(o, name, comment, name, 1100, 750, gp, tmp);
