@@ -799,6 +799,77 @@ static void test_curve_panels(void **state)
     assert_int_equal(layout, 1);
 }
 
+/* A description beyond every former cap: one row with a 134-character
+ * label, 12 texts (8 before) one of 600 characters (512), 5 swept keys (4),
+ * a check name of over 300 characters (95 kept), 5 figures (3), one of them
+ * points with 5 series (4).  Everything comes out whole. */
+#define X10 "xxxxxxxxxx"
+#define X100 X10 X10 X10 X10 X10 X10 X10 X10 X10 X10
+#define LONG_TEXT X100 X100 X100 X100 X100 X100
+#define ON "and on "
+#define LONG_LABEL                                                                     \
+    "a row whose label runs on " ON ON ON ON ON ON ON ON ON ON ON ON ON ON "to its end"
+static const char *const long_rows[] = {
+    LONG_LABEL ": $t1=a;$t2=b;$t3=c;$t4=d;$t5=e;$t6=f;$t7=g;$t8=h;$t9=i;$t10=j;$t11=k;"
+    "$long=" LONG_TEXT,
+    NULL};
+#define AT "a check named at length, "
+static const vfy_check_spec long_checks[] = {
+    {.name = "{case} {label} " AT AT AT AT AT AT AT AT AT AT AT AT "index {index}",
+     .rule = vfy_rule_range, .value = "index", .lo = 0.0, .hi = 0.0},
+    {.name = NULL}};
+#define LONG_CURVES(SUFFIX)                                                            \
+    {.kind = VFY_FIGURE_CURVES, .suffix = SUFFIX, .quantity = "T_raw",                 \
+     .refs = VFY_LIST("T_exact")}
+static const vfy_case_desc long_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {.rows = long_rows,
+                   .keys = VFY_KEYS({"particles.n", "6", NULL},
+                                    {"particles.ensembles", "40", NULL},
+                                    {"scene.outputs", "5", NULL}, {"scene.t_end", "1", NULL},
+                                    {"collisions.restitution", "0.5", "alpha"})},
+    .needs = e2e_needs, .label = "{case} {label}", .checks = long_checks,
+    .columns = "alpha:%.2f t11:%s long:%s",
+    .figures = VFY_FIGURES(LONG_CURVES("-a"), LONG_CURVES("-b"), LONG_CURVES("-c"),
+                           LONG_CURVES("-d"),
+                           {.kind = VFY_FIGURE_POINTS, .suffix = "-p", .x = "n",
+                            .series = VFY_LIST("index", "n", "N", "M", "alpha"),
+                            .x_lo = 0.0, .x_hi = 1.0, .title = "{case}", .xlabel = "n",
+                            .ylabel = "y"}),
+    .title = "{case}", .notes = "{label}"};
+static const vfy_case long_case = {"driver-long", "test", "", 0, &long_desc};
+
+static void test_long_description(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], path[600];
+    assert_int_equal(vfy_run_described(&long_case, &o, &r, msg, sizeof msg), SIM_OK);
+    assert_int_equal(r.count, 1);
+    assert_int_equal(r.checks[0].verdict, VFY_PASS);
+    assert_true(strlen(r.checks[0].name) > 300);
+    assert_string_equal(r.checks[0].row, "driver-long " LONG_LABEL);
+    vfy_report_free(&r);
+    static const char *const files[] = {"-a-curves.csv", "-b-curves.csv", "-c-curves.csv",
+                                        "-d-curves.csv", "-p-points.csv", ".csv"};
+    for (size_t k = 0; k < sizeof files / sizeof *files; k++) {
+        snprintf(path, sizeof path, "%s/driver-long%s", out_dir, files[k]);
+        FILE *f = fopen(path, "r");
+        assert_non_null(f);
+        char line[2048];
+        int found = 0;
+        while (fgets(line, sizeof line, f) != NULL)
+            found |= k < 4   ? strncmp(line, "t,T_exact,", 10) == 0
+                     : k == 4 ? strcmp(line, "n,index,index_ci,n,n_ci,N,N_ci,M,M_ci,alpha,"
+                                             "alpha_ci\n") == 0
+                              : strcmp(line, "0.50,k," LONG_TEXT "\n") == 0;
+        fclose(f);
+        assert_true(found);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -813,7 +884,7 @@ int main(void)
         cmocka_unit_test(test_batches_and_case_checks),
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
-        cmocka_unit_test(test_curve_panels),
+        cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -774,47 +774,126 @@ static const char transient_columns[] =
     "eta_bgk_04_08:%+.2f eta_bgk_08_16:%+.2f "
     "T_bgk_percent:%.2f T_bgk_at_s:%.2f s_ehs_percent:%+.2f violations:%.0f " VFY_COST_COLUMNS;
 
-/* The figures' curves: arrays owned here, freed together. */
+/* The figures' curves, as many as the rows make: each curve allocated (it
+ * stays where it is while more are added), its label, and the arrays the
+ * curves point into, freed together.  `failed`: memory ran out, and a curve
+ * or an array was left out. */
 typedef struct asx_plot {
-    vfy_xy_curve curves[48];
-    char labels[48][64];
-    double *own[48 * 5];
+    vfy_xy_curve **curves;
+    char **labels;   /* each curve's, allocated */
+    double **own;
     size_t ncurves, nown;
+    int failed;
 } asx_plot;
 
+/* Array a, owned by the plot from now on (NULL stays NULL: a series the row
+ * lacks). */
 static double *asx_own(asx_plot *pl, double *a)
 {
-    if (a != NULL && pl->nown == sizeof pl->own / sizeof pl->own[0]) {
+    double **grown = a != NULL ? realloc(pl->own, (pl->nown + 1) * sizeof *grown) : NULL;
+    if (a != NULL && grown == NULL) {
         free(a);
+        pl->failed = 1;
         return NULL;
     }
-    if (a != NULL)
+    if (a != NULL) {
+        pl->own = grown;
         pl->own[pl->nown++] = a;
+    }
     return a;
 }
 
-/* A new curve of `count` points labelled from the row, or NULL when full. */
-static vfy_xy_curve *asx_curve(asx_plot *pl, const vfy_row *row, const char *what,
-                               size_t count, int reference)
+/* A new curve of `count` points labelled `label` (allocated; the plot owns
+ * it), or NULL when out of memory. */
+static vfy_xy_curve *asx_new_curve(asx_plot *pl, char *label, size_t count, int reference)
 {
-    if (pl->ncurves == sizeof pl->curves / sizeof pl->curves[0])
+    vfy_xy_curve **curves = realloc(pl->curves, (pl->ncurves + 1) * sizeof *curves);
+    if (curves != NULL)
+        pl->curves = curves;
+    char **labels = curves ? realloc(pl->labels, (pl->ncurves + 1) * sizeof *labels) : NULL;
+    if (labels != NULL)
+        pl->labels = labels;
+    vfy_xy_curve *c = labels && label ? calloc(1, sizeof *c) : NULL;
+    if (c == NULL) {
+        free(label);
+        pl->failed = 1;
         return NULL;
-    vfy_xy_curve *c = &pl->curves[pl->ncurves];
-    memset(c, 0, sizeof *c);
-    snprintf(pl->labels[pl->ncurves], sizeof pl->labels[0], "%s%s alpha=%.1f a_tau0=%g",
-             what, vfy_row_text(row, "model") ? vfy_row_text(row, "model") : "",
-             vfy_values_get(&row->values, "alpha"), vfy_values_get(&row->values, "a_tau0"));
-    c->label = pl->labels[pl->ncurves++];
+    }
+    c->label = label;
     c->count = count;
     c->reference = reference;
+    pl->curves[pl->ncurves] = c;
+    pl->labels[pl->ncurves++] = label;
     return c;
 }
 
-static void asx_plot_free(asx_plot *pl)
+/* A new curve of `count` points labelled from the row, or NULL when out of
+ * memory. */
+static vfy_xy_curve *asx_curve(asx_plot *pl, const vfy_row *row, const char *what,
+                               size_t count, int reference)
+{
+    const char *model = vfy_row_text(row, "model");
+    return asx_new_curve(pl, vfy_aprintf("%s%s alpha=%.1f a_tau0=%g", what, model ? model : "",
+                                         vfy_values_get(&row->values, "alpha"),
+                                         vfy_values_get(&row->values, "a_tau0")),
+                         count, reference);
+}
+
+/* Label curve k of the plot `label` instead (allocated; NULL: out of memory,
+ * the old label stays). */
+static void asx_relabel(asx_plot *pl, size_t k, char *label)
+{
+    if (label == NULL) {
+        pl->failed = 1;
+        return;
+    }
+    free(pl->labels[k]);
+    pl->labels[k] = label;
+    pl->curves[k]->label = label;
+}
+
+/* The index of curve c in the plot. */
+static size_t asx_index(const asx_plot *pl, const vfy_xy_curve *c)
+{
+    size_t k = 0;
+    while (k < pl->ncurves && pl->curves[k] != c)
+        k++;
+    return k;
+}
+
+/* Figure f with the plot's curves (f's ncurves and curves set here);
+ * vfy_write_xy's 0 or -1. */
+static int asx_write(const vfy_options *o, vfy_xy_figure *f, asx_plot *pl)
+{
+    vfy_xy_curve *flat = malloc((pl->ncurves ? pl->ncurves : 1) * sizeof *flat);
+    if (flat == NULL) {
+        pl->failed = 1;
+        return 0;   /* reported as out of memory (asx_plot_free) */
+    }
+    for (size_t k = 0; k < pl->ncurves; k++)
+        flat[k] = *pl->curves[k];
+    f->ncurves = pl->ncurves;
+    f->curves = flat;
+    const int rc = vfy_write_xy(o, f);
+    free(flat);
+    return rc;
+}
+
+/* Free the plot; returns whether memory ran out while it was drawn. */
+static int asx_plot_free(asx_plot *pl)
 {
     for (size_t i = 0; i < pl->nown; i++)
         free(pl->own[i]);
+    for (size_t k = 0; k < pl->ncurves; k++) {
+        free(pl->labels[k]);
+        free(pl->curves[k]);
+    }
+    free(pl->own);
+    free(pl->labels);
+    free(pl->curves);
+    const int failed = pl->failed;
     memset(pl, 0, sizeof *pl);
+    return failed;
 }
 
 /* A DSMC curve of the row: x series scaled by 1/x_scale, the panels' series
@@ -873,10 +952,16 @@ static void asx_bgk(asx_plot *pl, const vfy_row *row, int x_s0, const char *kind
         c->y[p] = out + (1 + p) * M;
 }
 
-/* A hook's end: SIM_OK, or SIM_EIO with msg when a figure could not be written
- * (rc != 0, errno set). */
-static sim_status asx_figures_written(const vfy_case_run *run, int rc, char *msg, size_t msglen)
+/* A hook's end: SIM_OK, SIM_ENOMEM when memory ran out for a figure
+ * (nomem), or SIM_EIO with msg when a figure could not be written (rc != 0,
+ * errno set). */
+static sim_status asx_figures_written(const vfy_case_run *run, int rc, int nomem, char *msg,
+                                      size_t msglen)
 {
+    if (nomem) {
+        snprintf(msg, msglen, "%s: out of memory for the figures", run->c->name);
+        return SIM_ENOMEM;
+    }
     if (rc == 0)
         return SIM_OK;
     snprintf(msg, msglen, "%s: cannot write the figures: %s", run->c->name, strerror(errno));
@@ -892,7 +977,7 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     (void)r;
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
-    int rc = 0;
+    int rc = 0, nomem = 0;
     /* E Figs. 5-6: s/beta and s/s0 against t */
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
@@ -917,13 +1002,12 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     vfy_xy_figure f = {.name = "", .title = "paper E Figs. 5-6: collisions per particle s "
                        "(EHS: s'/beta) and s/s0 against t", .xlabel = "t/tau0",
                        .comment = run->comment, .npanels = 2,
-                       .ylabel = {"s, s'/beta", "s/s0"}, .ncurves = pl.ncurves,
-                       .curves = pl.curves};
+                       .ylabel = {"s, s'/beta", "s/s0"}};
     char name[96];
     snprintf(name, sizeof name, "%s-collisions", run->c->name);
     f.name = name;
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     /* E Figs. 7-8: T/T0, -Pxy/nT, (Pxx - Pyy)/nT against s */
     static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
@@ -938,10 +1022,9 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     f = (vfy_xy_figure){.name = name, .title = "paper E Figs. 7-8: T/T0 and the reduced "
                         "stresses against s (EHS: s'/beta), BGK against s0", .xlabel = "s",
                         .comment = run->comment, .logx = 1, .npanels = 3,
-                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"},
-                        .ncurves = pl.ncurves, .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     /* E Fig. 10: eta* against a* at alpha = 0.5, s in [2, 50] */
     for (size_t i = 0; i < run->nrows; i++) {
@@ -973,10 +1056,9 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     snprintf(name, sizeof name, "%s-viscosity", run->c->name);
     f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 10: eta* against a* at alpha = "
                         "0.5 (2 <= s <= 50)", .xlabel = "a*", .comment = run->comment,
-                        .npanels = 1, .ylabel = {"eta*"}, .ncurves = pl.ncurves,
-                        .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+                        .npanels = 1, .ylabel = {"eta*"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     /* E Figs. 11-13: <V12^3>/<V12^3>_0, a2, -a3 and R0..R3 against s */
     static const char *const cumulants[] = {"v12_ratio", "a2", "a3"};
@@ -988,10 +1070,9 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     f = (vfy_xy_figure){.name = name, .title = "paper E Figs. 11-12: <V12^3>/<V12^3>_0, a2 "
                         "and -a3 against s (EHS: s'/beta)", .xlabel = "s",
                         .comment = run->comment, .logx = 1, .npanels = 3,
-                        .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}, .ncurves = pl.ncurves,
-                        .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+                        .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     static const char *const shells[] = {"R0", "R1", "R2", "R3"};
     for (size_t i = 0; i < run->nrows; i++) {
@@ -1004,11 +1085,10 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 13: the shell ratios R0..R3 "
                         "against s at a tau0 = 4 (EHS: s'/beta)", .xlabel = "s",
                         .comment = run->comment, .logx = 1, .npanels = 4,
-                        .ylabel = {"R0", "R1", "R2", "R3"}, .ncurves = pl.ncurves,
-                        .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
-    return asx_figures_written(run, rc, msg, msglen);
+                        .ylabel = {"R0", "R1", "R2", "R3"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
+    return asx_figures_written(run, rc, nomem, msg, msglen);
 }
 
 static const char *const transient_needs[] = {"T_bgk", "Pxx_bgk", "Pyy_bgk", "Pzz_bgk",
@@ -1350,7 +1430,7 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
 {
     (void)r;
     static const double alphas[] = {0.9, 0.5};
-    int rc = 0;
+    int rc = 0, nomem = 0;
     for (size_t ia = 0; ia < 2; ia++) {
         asx_plot pl;
         memset(&pl, 0, sizeof pl);
@@ -1420,8 +1500,9 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
             /* one label for a model's two curves (the g panels' and F's), no row's */
             vfy_xy_curve *const models[] = {b, bf, e, ef};
             for (size_t j = 0; j < 4; j++)
-                snprintf(pl.labels[models[j] - pl.curves], sizeof pl.labels[0],
-                         j < 2 ? "BGK alpha=%.1f" : "equilibrium", alphas[ia]);
+                asx_relabel(&pl, asx_index(&pl, models[j]),
+                            j < 2 ? vfy_aprintf("BGK alpha=%.1f", alphas[ia])
+                                  : vfy_strdup("equilibrium"));
             b->x = x, b->y[0] = bx, b->y[1] = by;
             bf->x = xs, bf->y[2] = bF;
             e->x = x, e->y[0] = e->y[1] = mg;
@@ -1432,16 +1513,15 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
             snprintf(name, sizeof name, "%s-%.1f%s", run->c->name, alphas[ia], logy ? "-log" : "");
             snprintf(title, sizeof title, "paper E Fig. %d: the steady marginals at alpha = %.1f "
                      "(C in units of sqrt(2T/m))", logy ? 18 : 17, alphas[ia]);
-            const vfy_xy_figure f = {.name = name, .title = title,
+            vfy_xy_figure f = {.name = name, .title = title,
                                      .xlabel = "C_x (top), C_y (middle), C (bottom)",
                                      .comment = run->comment, .logy = logy, .npanels = 3,
-                                     .ylabel = {"g_x^(+)", "g_y^(+)", "F(C)"},
-                                     .ncurves = pl.ncurves, .curves = pl.curves};
-            rc |= vfy_write_xy(run->o, &f);
+                                     .ylabel = {"g_x^(+)", "g_y^(+)", "F(C)"}};
+            rc |= asx_write(run->o, &f, &pl);
         }
-        asx_plot_free(&pl);
+        nomem |= asx_plot_free(&pl);
     }
-    return asx_figures_written(run, rc, msg, msglen);
+    return asx_figures_written(run, rc, nomem, msg, msglen);
 }
 
 const vfy_case_desc vfy_as_distribution = {
@@ -1705,9 +1785,11 @@ static const char slab_columns[] =
 /* Relabel the plot's last curve: "ihs (3.5)" and what follows. */
 static void asl_label(asx_plot *pl, const vfy_row *row, const char *what)
 {
-    snprintf(pl->labels[pl->ncurves - 1], sizeof pl->labels[0], "%s (%g)%s",
-             vfy_row_text(row, "model") ? vfy_row_text(row, "model") : "",
-             vfy_values_get(&row->values, "initial"), what);
+    const char *model = vfy_row_text(row, "model");
+    if (pl->ncurves > 0)
+        asx_relabel(pl, pl->ncurves - 1,
+                    vfy_aprintf("%s (%g)%s", model ? model : "",
+                                vfy_values_get(&row->values, "initial"), what));
 }
 
 /* After the rows: E Figs. 1-4 of the slab. */
@@ -1716,7 +1798,7 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
     (void)r;
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
-    int rc = 0;
+    int rc = 0, nomem = 0;
     char name[96];
     /* E Fig. 1: s (EHS: s'/beta) against t, and s'/s */
     for (size_t i = 0; i < run->nrows; i++) {
@@ -1746,10 +1828,9 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
     vfy_xy_figure f = {.name = name, .title = "paper E Fig. 1: collisions per particle s (EHS: "
                        "s'/beta) against t, and s'/s", .xlabel = "t/tau0",
                        .comment = run->comment, .npanels = 2,
-                       .ylabel = {"s, s'/beta", "s'/s"}, .ncurves = pl.ncurves,
-                       .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+                       .ylabel = {"s, s'/beta", "s'/s"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     /* E Fig. 2: the profiles u_x/(U/2), n/n and T/T against y/L at five times */
     static const double times[] = {0.13, 0.5, 1.0, 1.5, 2.0};
@@ -1786,10 +1867,9 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
     snprintf(name, sizeof name, "%s-profiles", run->c->name);
     f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 2: the profiles at t/tau0 = 0.13, "
                         "0.5, 1, 1.5, 2", .xlabel = "y/L", .comment = run->comment,
-                        .npanels = 3, .ylabel = {"u_x/(U/2)", "n/n", "T/T"},
-                        .ncurves = pl.ncurves, .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+                        .npanels = 3, .ylabel = {"u_x/(U/2)", "n/n", "T/T"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     /* E Fig. 3: the four central and the three top layers against s */
     static const char *const centre[] = {"ux_centre", "n_centre", "T_centre"};
@@ -1807,10 +1887,9 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
     f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 3: u_x/(U/2), n/n and T/T of the "
                         "central and the top layers against s (EHS: s'/beta)", .xlabel = "s",
                         .comment = run->comment, .logx = 1, .npanels = 3,
-                        .ylabel = {"u_x/(U/2)", "n/n", "T/T"}, .ncurves = pl.ncurves,
-                        .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
+                        .ylabel = {"u_x/(U/2)", "n/n", "T/T"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
 
     /* E Fig. 4: T/T0 and the reduced stresses against s */
     static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
@@ -1823,11 +1902,10 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
     f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 4: T/T0 and the reduced stresses "
                         "against s (EHS: s'/beta)", .xlabel = "s", .comment = run->comment,
                         .logx = 1, .npanels = 3,
-                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"},
-                        .ncurves = pl.ncurves, .curves = pl.curves};
-    rc |= vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
-    return asx_figures_written(run, rc, msg, msglen);
+                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
+    rc |= asx_write(run->o, &f, &pl);
+    nomem |= asx_plot_free(&pl);
+    return asx_figures_written(run, rc, nomem, msg, msglen);
 }
 
 #define ASL_PROGRESS                                                                   \
@@ -1975,18 +2053,18 @@ static sim_status as_vs_after(vfy_case_run *run, vfy_report *r, char *msg, size_
     static const double plus[] = {1.0, 1.0, 1.0};
     for (size_t i = 0; i < run->nrows; i++) {
         asx_dsmc(&pl, &run->rows[i], "s", 1.0, stress, plus, 3);
-        snprintf(pl.labels[pl.ncurves - 1], sizeof pl.labels[0], "%.60s", run->rows[i].label);
+        if (pl.ncurves > 0)
+            asx_relabel(&pl, pl.ncurves - 1, vfy_strdup(run->rows[i].label));
     }
     char name[96];
     snprintf(name, sizeof name, "%s-stress", run->c->name);
     vfy_xy_figure f = {.name = name, .title = "paper E Fig. 9: T/T0 and the reduced stresses "
                        "against s, IHS at alpha = 0.9, a tau0 = 4: homogeneous and the slab",
                        .xlabel = "s", .comment = run->comment, .logx = 1, .npanels = 3,
-                       .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"},
-                       .ncurves = pl.ncurves, .curves = pl.curves};
-    const int rc = vfy_write_xy(run->o, &f);
-    asx_plot_free(&pl);
-    return asx_figures_written(run, rc, msg, msglen);
+                       .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
+    const int rc = asx_write(run->o, &f, &pl);
+    const int nomem = asx_plot_free(&pl);
+    return asx_figures_written(run, rc, nomem, msg, msglen);
 }
 
 const vfy_case_desc vfy_as_slab_vs_homogeneous = {

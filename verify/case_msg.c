@@ -445,10 +445,60 @@ static double laguerre_half(int k, double x)
  * particles (the case keeps every bin in its steady averages). */
 #define MSG_PHI_CX_MAX 3.0
 
-/* D Figs. 5-7 for each row: phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x at the bin
+/* D Figs. 5-6 for one row: phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x at the bin
  * centres beside its truncations phi_K = sum_{k <= K} b'_k L_k^{(1/2)}(c_x^2)
- * (the row's b'_k); beta_1/b'_1 at the bins' upper edges beside the first
- * Sonine's (8/(3 sqrt(pi))) int_0^c u^2 (3/2 - u^2)^2 e^{-u^2} du. */
+ * (the row's b'_k), in x, phi, phic and tr (3 bins) of `bins` each; the
+ * row's beta_1/b'_1 at the bins' upper edges into beta (their squares into
+ * bx). */
+static sim_status msg_phi_figure(const vfy_case_run *run, const vfy_row *row, size_t bins,
+                                 double *x, double *phi, double *phic, double *tr, double *bx,
+                                 double *beta, char *msg, size_t msglen)
+{
+    const sim_scene *s = &row->solver;
+    const long g1 = sim_steady_find(s, "g1_0"), b0 = sim_steady_find(s, "beta1_0");
+    const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength;
+    const double b1 = vfy_values_get(&row->values, "b1xc");
+    double b[3];
+    for (int k = 0; k < 3; k++) {
+        static const char *const bn[] = {"b1c", "b2c", "b3c"};
+        b[k] = vfy_values_get(&row->values, bn[k]);
+    }
+    for (size_t k = 0; k < bins; k++) {
+        const double c = sim_steady_bin_centre(s, k), c2 = c * c;
+        x[k] = c2;
+        phi[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
+        phic[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
+        double sum = 0.0;
+        for (int K = 0; K < 3; K++) {
+            sum += b[K] * laguerre_half(K + 1, c2);
+            tr[(size_t)K * bins + k] = sum;
+        }
+        const double edge = sim_steady_bin_lower(s, k + 1);
+        bx[k] = edge * edge;
+        beta[k] = f * row->res.steady_mean[(size_t)b0 + k] / b1;
+    }
+    char name[160], title[200];
+    snprintf(name, sizeof name, "%s-phi-%.1f", run->c->name,
+             vfy_values_get(&row->values, "alpha"));
+    snprintf(title, sizeof title, "%s: phi(c_x^2) and its truncations, alpha = %.1f "
+             "(paper D Figs. 5-6)", run->c->name, vfy_values_get(&row->values, "alpha"));
+    const char *phi_series[] = {"phi (DSMC)"};
+    const char *curves[] = {"phi_1", "phi_2", "phi_3"};
+    const double *ys[] = {phi}, *cs[] = {phic}, *yf[] = {tr, tr + bins, tr + 2 * bins};
+    size_t shown = 0;
+    while (shown < bins && sim_steady_bin_centre(s, shown) <= MSG_PHI_CX_MAX)
+        shown++;
+    const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
+                            .ylabel = "phi", .npoints = shown, .x = x, .nseries = 1,
+                            .series = phi_series, .y = ys, .ci = cs, .nfine = shown,
+                            .xfine = x, .ncurves = 3, .curves = curves, .yfine = yf,
+                            .comment = run->comment};
+    return vfy_write_points(run->o, &fig) != 0 ? vfy_io_error(name, msg, msglen) : SIM_OK;
+}
+
+/* D Figs. 5-7 for each row (msg_phi_figure); beta_1/b'_1 of every row in one
+ * figure beside the first Sonine's (8/(3 sqrt(pi))) int_0^c u^2 (3/2 -
+ * u^2)^2 e^{-u^2} du. */
 static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char *msg,
                                          size_t msglen)
 {
@@ -456,69 +506,33 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
     sim_status status = msg_sizes(run);
     const size_t bins = run->rows[0].solver.steady.bins, rows = run->nrows;
     double *buf = malloc((7 * bins + rows * bins) * sizeof *buf);
-    if (buf == NULL || status != SIM_OK) {
+    const double **betas = calloc(2 * rows, sizeof *betas);   /* then their error bars */
+    char **labels = calloc(rows, sizeof *labels);
+    if (buf == NULL || betas == NULL || labels == NULL || status != SIM_OK) {
         free(buf);
+        free(betas);
+        free(labels);
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
     double *x = buf, *phi = x + bins, *phic = phi + bins, *tr = phic + bins;  /* tr: 3 bins */
     double *bx = buf + 6 * bins, *beta = bx + bins;   /* beta: rows x bins */
-    const double *betas[8], *betacs[8];
-    char labels[8][48];
-    const char *series[8];
-    for (size_t i = 0; i < rows && i < 8 && status == SIM_OK; i++) {
+    const double **betacs = betas + rows;
+    for (size_t i = 0; i < rows && status == SIM_OK; i++) {
         const vfy_row *row = &run->rows[i];
-        const sim_scene *s = &row->solver;
-        if (s->steady.bins != bins) {
+        if (row->solver.steady.bins != bins) {
             snprintf(msg, msglen, "%s: the rows differ in steady.bins", run->c->name);
             status = SIM_EINVAL;
             break;
         }
-        const long g1 = sim_steady_find(s, "g1_0"), b0 = sim_steady_find(s, "beta1_0");
-        const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength;
-        const double b1 = vfy_values_get(&row->values, "b1xc");
-        double b[3];
-        for (int k = 0; k < 3; k++) {
-            static const char *const bn[] = {"b1c", "b2c", "b3c"};
-            b[k] = vfy_values_get(&row->values, bn[k]);
+        status = msg_phi_figure(run, row, bins, x, phi, phic, tr, bx, beta + i * bins, msg,
+                                msglen);
+        labels[i] = vfy_aprintf("alpha = %.1f", vfy_values_get(&row->values, "alpha"));
+        if (status == SIM_OK && labels[i] == NULL) {
+            snprintf(msg, msglen, "out of memory");
+            status = SIM_ENOMEM;
         }
-        for (size_t k = 0; k < bins; k++) {
-            const double c = sim_steady_bin_centre(s, k), c2 = c * c;
-            x[k] = c2;
-            phi[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
-            phic[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
-            double sum = 0.0;
-            for (int K = 0; K < 3; K++) {
-                sum += b[K] * laguerre_half(K + 1, c2);
-                tr[(size_t)K * bins + k] = sum;
-            }
-            const double edge = sim_steady_bin_lower(s, k + 1);
-            bx[k] = edge * edge;
-            beta[i * bins + k] = f * row->res.steady_mean[(size_t)b0 + k] / b1;
-        }
-        char name[160], title[200];
-        snprintf(name, sizeof name, "%s-phi-%.1f", run->c->name,
-                 vfy_values_get(&row->values, "alpha"));
-        snprintf(title, sizeof title, "%s: phi(c_x^2) and its truncations, alpha = %.1f "
-                 "(paper D Figs. 5-6)", run->c->name, vfy_values_get(&row->values, "alpha"));
-        const char *phi_series[] = {"phi (DSMC)"};
-        const char *curves[] = {"phi_1", "phi_2", "phi_3"};
-        const double *ys[] = {phi}, *cs[] = {phic}, *yf[] = {tr, tr + bins, tr + 2 * bins};
-        size_t shown = 0;
-        while (shown < bins && sim_steady_bin_centre(s, shown) <= MSG_PHI_CX_MAX)
-            shown++;
-        const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
-                                .ylabel = "phi", .npoints = shown, .x = x, .nseries = 1,
-                                .series = phi_series, .y = ys, .ci = cs, .nfine = shown,
-                                .xfine = x, .ncurves = 3, .curves = curves, .yfine = yf,
-                                .comment = run->comment};
-        if (vfy_write_points(run->o, &fig) != 0)
-            status = vfy_io_error(name, msg, msglen);
-        snprintf(labels[i], sizeof labels[i], "alpha = %.1f",
-                 vfy_values_get(&row->values, "alpha"));
-        series[i] = labels[i];
         betas[i] = beta + i * bins;
-        betacs[i] = NULL;
     }
     if (status == SIM_OK) {
         /* the first Sonine's beta_1/b'_1 at the same edges (midpoint rule, 64 steps a
@@ -536,7 +550,7 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
         double *zero = phic;   /* beta_1's error bars: none drawn (phic's storage) */
         for (size_t k = 0; k < bins; k++)
             zero[k] = 0.0;
-        for (size_t i = 0; i < rows && i < 8; i++)
+        for (size_t i = 0; i < rows; i++)
             betacs[i] = zero;
         char name[160], title[200];
         snprintf(name, sizeof name, "%s-beta1", run->c->name);
@@ -545,12 +559,17 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
         const double *yf[] = {sonine};
         const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
                                 .ylabel = "beta_1/b'_1", .npoints = bins, .x = bx,
-                                .nseries = rows < 8 ? rows : 8, .series = series, .y = betas,
-                                .ci = betacs, .nfine = bins, .xfine = bx, .ncurves = 1,
-                                .curves = curves, .yfine = yf, .comment = run->comment};
+                                .nseries = rows, .series = (const char *const *)labels,
+                                .y = betas, .ci = betacs, .nfine = bins, .xfine = bx,
+                                .ncurves = 1, .curves = curves, .yfine = yf,
+                                .comment = run->comment};
         if (vfy_write_points(run->o, &fig) != 0)
             status = vfy_io_error(name, msg, msglen);
     }
+    for (size_t i = 0; i < rows; i++)
+        free(labels[i]);
+    free(labels);
+    free(betas);
     free(buf);
     return status;
 }
