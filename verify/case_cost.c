@@ -173,7 +173,7 @@ static double conf_model(const double AB[2], double n, double N)
 static int fit_conf(size_t count, const double *n, const double *N, const double *conf,
                     double AB[2])
 {
-    double *buf = malloc(4 * (count ? count : 1) * sizeof *buf);
+    double *buf = calloc(4 * (count ? count : 1), sizeof *buf);
     if (buf == NULL)
         return -1;
     double *x1 = buf, *x2 = x1 + count, *y = x2 + count, *w = y + count;
