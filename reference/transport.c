@@ -11,7 +11,8 @@
 #include <gsl/gsl_integration.h>
 
 #include "message.h"
-#include "sonine.h"
+#include "sonine_a2.h" /* the a2 of (C.40) and the domain; not sonine.h, whose listing
+                          * lists these coefficients */
 
 static const double PI = 3.14159265358979323846;
 

@@ -39,7 +39,7 @@
  * conductivity) for kappa and kappa', and mu* = n mu/(T kappa0).
  *
  * Domain of the (alpha, d) functions: alpha in [0, 1] and d finite with
- * REF_SONINE_D_MIN <= d <= REF_SONINE_D_MAX (sonine.h; d need not be an
+ * REF_SONINE_D_MIN <= d <= REF_SONINE_D_MAX (sonine_a2.h; d need not be an
  * integer).  Anything else, NaN included, returns NaN.  They are pure and
  * thread-safe.  The elastic functions are d = 3 only and documented below.
  */

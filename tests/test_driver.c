@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "driver.h"
+#include "figure.h"
 #include "metrics.h"
 #include "references.h"
 #include "scene_ini.h"
@@ -133,13 +134,14 @@ static void test_sweeps(void **state)
 {
     (void)state;
     char v[32];
-    const vfy_sweep zipped = {.keys = {"particles.n", "particles.ensembles"},
-                              .values = {"64 256 1024", "10 20 30 40"}};
+    const vfy_sweep zipped = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL},
+                                               {"particles.ensembles", "10 20 30 40", NULL})};
     assert_int_equal(vfy_sweep_rows(&zipped), 3);   /* the shorter list */
     vfy_sweep_value(&zipped, 2, 1, v, sizeof v);
     assert_string_equal(v, "30");
-    const vfy_sweep grid = {.keys = {"particles.n", "particles.ensembles"},
-                            .values = {"64 256", "10 20 30"}, .grid = 1};
+    const vfy_sweep grid = {.keys = VFY_KEYS({"particles.n", "64 256", NULL},
+                                             {"particles.ensembles", "10 20 30", NULL}),
+                            .grid = 1};
     assert_int_equal(vfy_sweep_rows(&grid), 6);
     vfy_sweep_value(&grid, 4, 0, v, sizeof v);   /* the first key slowest */
     assert_string_equal(v, "256");
@@ -148,7 +150,7 @@ static void test_sweeps(void **state)
     static const char *const rows[] = {"a: x.y=1", "b: x.y=2", NULL};
     const vfy_sweep explicit_rows = {.rows = rows};
     assert_int_equal(vfy_sweep_rows(&explicit_rows), 2);
-    const vfy_sweep none = {.keys = {NULL}};
+    const vfy_sweep none = {.keys = NULL};
     assert_int_equal(vfy_sweep_rows(&none), 0);
 }
 
@@ -162,7 +164,7 @@ static void fake_run(vfy_case_run *run, vfy_row rows[2])
     memset(rows, 0, 2 * sizeof *rows);
     *run = (vfy_case_run){.c = &test_case, .d = &test_desc, .o = &test_options, .rows = rows,
                           .nrows = 2};
-    snprintf(run->comment, sizeof run->comment, "provenance");
+    run->comment = vfy_strdup("provenance");
     for (size_t i = 0; i < 2; i++) {
         rows[i].index = i;
         rows[i].run = run;
@@ -178,8 +180,8 @@ static void fake_run(vfy_case_run *run, vfy_row rows[2])
 static void free_run(vfy_case_run *run)
 {
     for (size_t i = 0; i < run->nrows; i++)
-        vfy_values_free(&run->rows[i].values);
-    vfy_values_free(&run->values);
+        vfy_row_free(&run->rows[i]);
+    vfy_run_free(run);
 }
 
 static void test_templates(void **state)
@@ -320,9 +322,7 @@ static void test_tail_fit_and_adapters(void **state)
     assert_close(absw.fn(&run, row, &absw), 0.3, 1e-15, 0);   /* quick: widened */
     vfy_values_set(&row->values, "mu2_1", 0.0);   /* the elastic limit: no ratio */
     assert_true(isnan(ratio.fn(&run, row, &ratio)));
-    snprintf(row->text_names[0], sizeof row->text_names[0], "relation");
-    snprintf(row->texts[0], sizeof row->texts[0], "mu2");
-    row->ntexts = 1;
+    assert_int_equal(vfy_row_set_text(row, "relation", "mu2"), 0);
     const vfy_metric named = {"n", vfy_metric_named_by_text, "relation", "_ci", 0};
     assert_close(named.fn(&run, row, &named), 0.05, 0, 0);
     free_run(&run);
@@ -410,7 +410,7 @@ static const vfy_check_spec e2e_checks[] = {
 static const char e2e_columns[] = "n:%.0f N:%.0f CF:%.2f z:%.2f";
 static const vfy_case_desc e2e_desc = {
     .scene = "grw-ex3",
-    .quick_rows = {.keys = {"particles.n"}, .values = {"16 64"},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "16 64", NULL}),
                    .sets = "particles.ensembles=400;scene.outputs=21"},
     .needs = e2e_needs, .needs_why = "Maxwell molecules", .metrics = e2e_metrics,
     .checks = e2e_checks, .columns = e2e_columns, .title = "{case}",
@@ -535,8 +535,8 @@ static const vfy_case_desc rows_desc = {
     .quick_rows = {.rows = rows_rows, .sets = "particles.ensembles=200;scene.outputs=11"},
     .needs = e2e_needs, .label = "{case} {label}", .variants = rows_variants,
     .adjust = rows_adjust, .checks = rows_checks, .columns = rows_columns,
-    .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
-                 .refs = {"T_exact"}}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
+                 .refs = VFY_LIST("T_exact")}),
     .title = "{case}", .notes = "notes"};
 static const vfy_case rows_case = {"driver-rows", "test", "", 0,
                                    &rows_desc};
@@ -616,13 +616,13 @@ static const vfy_check_spec batch_case_checks[] = {
 static const char batch_columns[] = "n:%.0f N:%.0f T_star:%.5f";
 static const vfy_case_desc batch_desc = {
     .scene = "grw-ex3",
-    .quick_rows = {.keys = {"particles.n"}, .values = {"16"},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "16", NULL}),
                    .sets = "particles.ensembles=300;scene.outputs=21"},
     .needs = e2e_needs, .variants = batch_variants, .adjust = batch_seed,
     .metrics = batch_metrics, .columns = batch_columns, .after_rows = batch_hook,
     .case_checks = batch_case_checks,
-    .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T_raw@*",
-                 .refs = {"T_raw_finite_n"}}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T_raw@*",
+                 .refs = VFY_LIST("T_raw_finite_n")}),
     .title = "{case}", .notes = "{rows} row"};
 static const vfy_case batch_case = {"driver-batches", "test", "", 0, &batch_desc};
 
@@ -667,7 +667,8 @@ static const vfy_case_desc grid_desc = {
     .scene = "grw-ex3",
     .quick_rows = {.rows = grid_rows, .sets = "particles.n=8;particles.ensembles=50"},
     .needs = e2e_needs, .label = "{case} {label}", .columns = "n:%.0f",
-    .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = {"T_exact"}}},
+    .figures = VFY_FIGURES(
+        {.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = VFY_LIST("T_exact")}),
     .title = "{case}", .notes = "notes"};
 static const vfy_case grid_case = {"driver-grids", "test", "", 0, &grid_desc};
 
@@ -764,6 +765,111 @@ static void test_reference_registry(void **state)
     assert_true(isnan(vfy_reference_value("no_such", &s)));
 }
 
+/* One panel per row for every row (not the first four): six rows in three
+ * lines of two panels, each titled by its n. */
+static void test_curve_panels(void **state)
+{
+    (void)state;
+    enum { ROWS = 6, M = 3 };
+    const double t[M] = {0.0, 1.0, 2.0};
+    double mean[ROWS * M], ci[ROWS * M];
+    size_t n[ROWS];
+    for (size_t i = 0; i < ROWS; i++) {
+        n[i] = 4u << i;
+        for (size_t m = 0; m < M; m++) {
+            mean[i * M + m] = 1.0 + 0.1 * (double)m;
+            ci[i * M + m] = 0.01;
+        }
+    }
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_curves(&o, "driver-panels", "six rows", "comment", t, M, 0, NULL,
+                                      NULL, ROWS, n, NULL, mean, ci, "T", 0.0, 1),
+                     0);
+    char path[600], line[512];
+    snprintf(path, sizeof path, "%s/driver-panels.gp", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t panels = 0, layout = 0;
+    while (fgets(line, sizeof line, f) != NULL) {
+        panels += strncmp(line, "set title 'n = ", 15) == 0;
+        layout += strstr(line, "set multiplot layout 3,2 ") != NULL;
+    }
+    fclose(f);
+    assert_int_equal(panels, ROWS);
+    assert_int_equal(layout, 1);
+}
+
+/* A description beyond every former cap: one row with a 134-character
+ * label, 12 texts (8 before) one of 600 characters (512), 5 swept keys (4),
+ * a check name of over 300 characters (95 kept), 5 figures (3), one of them
+ * points with 5 series (4).  Everything comes out whole. */
+#define X10 "xxxxxxxxxx"
+#define X100 X10 X10 X10 X10 X10 X10 X10 X10 X10 X10
+#define LONG_TEXT X100 X100 X100 X100 X100 X100
+#define ON "and on "
+#define LONG_LABEL                                                                     \
+    "a row whose label runs on " ON ON ON ON ON ON ON ON ON ON ON ON ON ON "to its end"
+static const char *const long_rows[] = {
+    LONG_LABEL ": $t1=a;$t2=b;$t3=c;$t4=d;$t5=e;$t6=f;$t7=g;$t8=h;$t9=i;$t10=j;$t11=k;"
+    "$long=" LONG_TEXT,
+    NULL};
+#define AT "a check named at length, "
+static const vfy_check_spec long_checks[] = {
+    {.name = "{case} {label} " AT AT AT AT AT AT AT AT AT AT AT AT "index {index}",
+     .rule = vfy_rule_range, .value = "index", .lo = 0.0, .hi = 0.0},
+    {.name = NULL}};
+#define LONG_CURVES(SUFFIX)                                                            \
+    {.kind = VFY_FIGURE_CURVES, .suffix = SUFFIX, .quantity = "T_raw",                 \
+     .refs = VFY_LIST("T_exact")}
+static const vfy_case_desc long_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {.rows = long_rows,
+                   .keys = VFY_KEYS({"particles.n", "6", NULL},
+                                    {"particles.ensembles", "40", NULL},
+                                    {"scene.outputs", "5", NULL}, {"scene.t_end", "1", NULL},
+                                    {"collisions.restitution", "0.5", "alpha"})},
+    .needs = e2e_needs, .label = "{case} {label}", .checks = long_checks,
+    .columns = "alpha:%.2f t11:%s long:%s",
+    .figures = VFY_FIGURES(LONG_CURVES("-a"), LONG_CURVES("-b"), LONG_CURVES("-c"),
+                           LONG_CURVES("-d"),
+                           {.kind = VFY_FIGURE_POINTS, .suffix = "-p", .x = "n",
+                            .series = VFY_LIST("index", "n", "N", "M", "alpha"),
+                            .x_lo = 0.0, .x_hi = 1.0, .title = "{case}", .xlabel = "n",
+                            .ylabel = "y"}),
+    .title = "{case}", .notes = "{label}"};
+static const vfy_case long_case = {"driver-long", "test", "", 0, &long_desc};
+
+static void test_long_description(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], path[600];
+    assert_int_equal(vfy_run_described(&long_case, &o, &r, msg, sizeof msg), SIM_OK);
+    assert_int_equal(r.count, 1);
+    assert_int_equal(r.checks[0].verdict, VFY_PASS);
+    assert_true(strlen(r.checks[0].name) > 300);
+    assert_string_equal(r.checks[0].row, "driver-long " LONG_LABEL);
+    vfy_report_free(&r);
+    static const char *const files[] = {"-a-curves.csv", "-b-curves.csv", "-c-curves.csv",
+                                        "-d-curves.csv", "-p-points.csv", ".csv"};
+    for (size_t k = 0; k < sizeof files / sizeof *files; k++) {
+        snprintf(path, sizeof path, "%s/driver-long%s", out_dir, files[k]);
+        FILE *f = fopen(path, "r");
+        assert_non_null(f);
+        char line[2048];
+        int found = 0;
+        while (fgets(line, sizeof line, f) != NULL)
+            found |= k < 4   ? strncmp(line, "t,T_exact,", 10) == 0
+                     : k == 4 ? strcmp(line, "n,index,index_ci,n,n_ci,N,N_ci,M,M_ci,alpha,"
+                                             "alpha_ci\n") == 0
+                              : strcmp(line, "0.50,k," LONG_TEXT "\n") == 0;
+        fclose(f);
+        assert_true(found);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -778,6 +884,7 @@ int main(void)
         cmocka_unit_test(test_batches_and_case_checks),
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
+        cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

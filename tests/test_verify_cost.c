@@ -5,6 +5,8 @@
 #include "case_cost.h"
 #include "test_verify_util.h"
 
+#include "driver.h"
+
 /* The cheapest point reaching a target: least cost among err <= target; a
  * tie in cost goes to the smaller error; none: count. */
 static void test_cheapest(void **state)
@@ -166,6 +168,41 @@ static void test_cost_split_ex5(void **state)
     assert_true(run_case("cost-split-ex5", wrong, 1, NULL) >= 2);
 }
 
+/* A grid larger than the hook once allowed (64 points, 8 values an axis):
+ * 9 values of n by 8 of N, tiny systems, runs and draws one curve per N. */
+extern const vfy_case_desc vfy_cost_grw_ex3;
+static void test_big_grid(void **state)
+{
+    (void)state;
+    vfy_case_desc d = vfy_cost_grw_ex3;
+    d.quick_rows = (vfy_sweep){
+        .keys = VFY_KEYS({"particles.n", "2 3 4 5 6 7 8 9 10", NULL},
+                         {"particles.ensembles", "8 16 24 32 40 48 56 64", NULL}),
+        .grid = 1, .sets = "scene.outputs=5"};
+    const vfy_case c = {"cost-big-grid", "cost", "", 0, &d};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], path[600], line[512];
+    const sim_status st = vfy_run_described(&c, &o, &r, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("%s\n", msg);
+    assert_int_equal(st, SIM_OK);
+    size_t scaling = 0;
+    for (size_t i = 0; i < r.count; i++)
+        scaling += strstr(r.checks[i].name, "pooled over n") != NULL;
+    assert_int_equal(scaling, 7);   /* one per step of N */
+    vfy_report_free(&r);
+    snprintf(path, sizeof path, "%s/cost-big-grid-points.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t curves = 0;
+    while (fgets(line, sizeof line, f) != NULL)
+        curves += strncmp(line, "# N = ", 6) == 0;
+    fclose(f);
+    assert_int_equal(curves, 8);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -177,6 +214,7 @@ int main(void)
         cmocka_unit_test(test_cost_grw_ex3),
         cmocka_unit_test(test_cost_brs_ex2),
         cmocka_unit_test(test_cost_split_ex5),
+        cmocka_unit_test(test_big_grid),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

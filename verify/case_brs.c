@@ -107,17 +107,18 @@ static const char conv_notes[] =
 #define BRS_CONVERGENCE(LABEL, PAPER, CHECKS, ...)                                  \
     {.paper = LABEL,                                                                      \
      __VA_ARGS__,                                                                        \
-     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
-                    .values = {"4 16 64 256 1024", "64 256 1024 4096 16384"}},           \
-     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                       \
-                    .values = {"4 16 64", "64 256 1024"}},                               \
+     .paper_rows = {.keys = VFY_KEYS({"particles.n", "4 16 64 256 1024", NULL},           \
+                                     {"particles.ensembles", "64 256 1024 4096 16384",    \
+                                      NULL})},                                            \
+     .quick_rows = {.keys = VFY_KEYS({"particles.n", "4 16 64", NULL},                    \
+                                     {"particles.ensembles", "64 256 1024", NULL})},      \
      .needs = conv_needs, .needs_why = VFY_NEEDS_BRS_MAXWELL, .paper_columns = PAPER,    \
      .observes = BRS_OBSERVES,                                                            \
      .metrics = conv_metrics, .checks = CHECKS, .columns = conv_columns,                 \
-     .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T",               \
-                  .refs = {"T_exact"}, .panel_per_row = 1},                                 \
-                 {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy",             \
-                  .refs = {"uy_exact"}, .panel_per_row = 1}},                               \
+     .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T",  \
+                             .refs = VFY_LIST("T_exact"), .panel_per_row = 1},            \
+                            {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy",\
+                             .refs = VFY_LIST("uy_exact"), .panel_per_row = 1}),          \
      .title = "{case}: paper B {paper} ({size} sizes)", .notes = conv_notes}
 /* Paper B Ex 1 (its Table 1) and Ex 2 (Table 2): rows n = 4 ... 1024. */
 static const vfy_paper_column brs_table1[] = {
@@ -255,11 +256,12 @@ static sim_status steady_extrapolate(vfy_case_run *run, vfy_report *r, char *msg
      /* the closures have relaxed by t_end (so the DSMC average over the second \
       * half is a steady value too, the closures relaxing on the same scale) */ \
      {.name = "{case} Grad closure at t_end vs its T*", .rule = vfy_rule_absolute,       \
-      .value = "T_grad_end", .expected = "T_star_grad", .tol = 1e-6},                    \
+      .value = "T_grad_end", .expected = "T_star_grad",                                   \
+      .tol = VFY_TOL_BRS_CLOSURE_RELAXED},                                                \
      /* the O(1/n) model describes the rows: chi^2 with 1 degree of freedom     \
       * below its 0.999 quantile */                                              \
      {.name = "{case} O(1/n) fit of T* chi^2", .rule = vfy_rule_range, .value = "chi2",  \
-      .lo = 0.0, .hi = 10.8},                                                            \
+      .lo = 0.0, .hi = VFY_TOL_BRS_FIT_CHI2},                                            \
      {.name = NULL}}
 static const vfy_check_spec steady4_checks[] = STEADY_CASE_CHECKS(0.953, 0.956, 0.956);
 static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 0.757);
@@ -281,20 +283,20 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
     "{wall_total:%.1f} s."
 #define BRS_STEADY(CHECKS, NOTES, ...)                                             \
     {__VA_ARGS__,                                                                        \
-     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
-                    .values = {"64 256 1024", "1024 256 64"}},                           \
-     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
-                    .values = {"16 64 256", "32 8 2"}},                                  \
+     .paper_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL},                \
+                                     {"particles.ensembles", "1024 256 64", NULL})},      \
+     .quick_rows = {.keys = VFY_KEYS({"particles.n", "16 64 256", NULL},                  \
+                                     {"particles.ensembles", "32 8 2", NULL})},           \
      .label = "{case} n={n} batch", .variants = steady_batches, .adjust = batch_seed,    \
      .needs = steady_needs, .observes = BRS_OBSERVES,                                    \
      .needs_why = "paper B's closures need collisions.kernel = hard-spheres and "        \
                   "background.kernel = hard-spheres",                                    \
      .values = steady_values, .metrics = steady_metrics, .checks = steady_checks,        \
      .columns = steady_columns, .after_rows = steady_extrapolate, .case_checks = CHECKS, \
-     .figures = {{.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T@*",          \
-                  .refs = {"T_le", "T_grad"}, .extrapolated = 1},                        \
-                 {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy@*",        \
-                  .refs = {"uy_le", "uy_grad"}}},                                        \
+     .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T@*",\
+                             .refs = VFY_LIST("T_le", "T_grad"), .extrapolated = 1},      \
+                            {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy@*",\
+                             .refs = VFY_LIST("uy_le", "uy_grad")}),                      \
      .title = "{case}: paper B, hard spheres, steady temperature ({size} sizes)",       \
      .notes = NOTES}
 const vfy_case_desc vfy_brs_ex4 =

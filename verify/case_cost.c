@@ -65,16 +65,11 @@
 #include "scene_refs.h"
 #include "steady.h"
 #include "table.h"
+#include "tolerances.h"
 
-#define ZMAX 4.5               /* |z| bound for exact expectations and fitted models */
-#define MODEL_FACTOR 2.0       /* measured Err within a factor 2 of the model */
-#define DOMINANCE 3.0          /* ... where one part is 3 times the other */
-#define SONINE_MODEL_RTOL 0.002  /* first-Sonine closure's own error (as grw-ex5) */
 #define PRED_N_MAX ((size_t)1 << 24)
 #define PRED_H_HALVINGS 12
-#define GRID_MAX 64            /* grid points of one case */
 #define VFY_COST_TARGETS_TITLE "Cheapest grid point per target, and the model's prediction"
-#define AXIS_MAX 8             /* values of n or N on one axis */
 
 
 /* ------------------------------------------------------------ shared pieces */
@@ -161,7 +156,7 @@ vfy_verdict vfy_cost_check_chi2(vfy_report *r, const char *name, double chi2, si
         vfy_skip(r, name, "no degrees of freedom left (as many rows as fitted parameters)");
         return VFY_SKIP;
     }
-    return vfy_check_range(r, name, chi2, 0.0, gsl_cdf_chisq_Qinv(1e-3, (double)dof));
+    return vfy_check_range(r, name, chi2, 0.0, gsl_cdf_chisq_Qinv(VFY_TOL_COST_CHI2_P, (double)dof));
 }
 
 /* ------------------------------------------------------------ helpers */
@@ -173,11 +168,15 @@ static double conf_model(const double AB[2], double n, double N)
 }
 
 /* Fit Conf^2 N = A/n + B/n^2 to the points (relative least squares); keep
- * B = 0 if the fit would make the variance negative at the smallest n. */
-static void fit_conf(size_t count, const double *n, const double *N, const double *conf,
-                     double AB[2])
+ * B = 0 if the fit would make the variance negative at the smallest n.
+ * Returns 0, or -1 when out of memory. */
+static int fit_conf(size_t count, const double *n, const double *N, const double *conf,
+                    double AB[2])
 {
-    double x1[GRID_MAX] = {0}, x2[GRID_MAX] = {0}, y[GRID_MAX] = {0}, w[GRID_MAX] = {0};
+    double *buf = calloc(4 * (count ? count : 1), sizeof *buf);
+    if (buf == NULL)
+        return -1;
+    double *x1 = buf, *x2 = x1 + count, *y = x2 + count, *w = y + count;
     double n_min = INFINITY;
     for (size_t i = 0; i < count; i++) {
         x1[i] = 1.0 / n[i];
@@ -194,6 +193,8 @@ static void fit_conf(size_t count, const double *n, const double *N, const doubl
         AB[0] = s / (double)count;
         AB[1] = 0.0;
     }
+    free(buf);
+    return 0;
 }
 
 /* The targets table's cells for one point, or empty cells. */
@@ -239,66 +240,273 @@ static sim_status exact_sys(const char *exact_name, const char *finite_name,
     return status;
 }
 
-/* The grid's axes: its distinct n (slowest) and N, in order. */
-static size_t grid_axis(const vfy_case_run *run, const char *name, double *axis)
+/* The grid's distinct values of `name` (n, the slowest, or N), in order: an
+ * array the caller frees (NULL when out of memory), *count of them. */
+static double *grid_axis(const vfy_case_run *run, const char *name, size_t *count)
 {
-    size_t count = 0;
-    for (size_t i = 0; i < run->nrows; i++) {
+    double *axis = malloc((run->nrows ? run->nrows : 1) * sizeof *axis);
+    *count = 0;
+    for (size_t i = 0; axis != NULL && i < run->nrows; i++) {
         const double v = vfy_values_get(&run->rows[i].values, name);
         size_t k = 0;
-        while (k < count && axis[k] != v)
+        while (k < *count && axis[k] != v)
             k++;
-        if (k == count && count < AXIS_MAX)
-            axis[count++] = v;
+        if (k == *count)
+            axis[(*count)++] = v;
     }
-    return count;
+    return axis;
+}
+
+/* One target's words of the notes' summary ("1e-02: n = ..."). */
+static void summary_target(vfy_text *summary, size_t t, double target, int measured,
+                           int predicted, double n, double N, double cpu)
+{
+    const char *sep = t ? "; " : "";
+    if (measured)
+        vfy_text_printf(summary, "%s%.0e: n = %.0f, N = %.0f (%.3g CPU s)", sep, target, n, N,
+                        cpu);
+    else if (predicted)
+        vfy_text_printf(summary, "%s%.0e: not in the grid; predicted n = %.0f, N = %.0f "
+                        "(%.3g CPU s)", sep, target, n, N, cpu);
+    else
+        vfy_text_printf(summary, "%s%.0e: not in the grid nor below n = 2^24", sep, target);
+}
+
+/* The Maxwell grid of grid_model: its axes, its points as arrays in row
+ * order, and the model's predictions. */
+enum { G_N, G_NN, G_ERR, G_SYS, G_STAT, G_CONF, G_CPU, G_MODEL, G_CONF_FIT, G_ARRAYS };
+typedef struct grid {
+    size_t P, nn, nN;
+    double *ns, *Ns;           /* the distinct n (slowest) and N, in order */
+    double *g[G_ARRAYS];       /* P each, one allocation (g[0]) */
+    double violations;         /* NaN where a solver did not report them */
+    double AB[2], k, kappa, lo, hi, cpu_dev;
+    size_t np;                 /* predictions: n = n_min 2^j up to 2^24, N among the grid's */
+    double *pn, *pN, *perr, *pcost;   /* np each, one allocation (pn) */
+} grid;
+
+static void grid_free(grid *gr)
+{
+    free(gr->ns);
+    free(gr->Ns);
+    free(gr->g[0]);
+    free(gr->pn);
+    *gr = (grid){0};
 }
 
 /* The targets table: the cheapest measured point and the model's
- * prediction per target, and the summary line of the notes. */
-static void grid_targets(vfy_case_run *run, size_t P, const double *gn, const double *gN,
-                         const double *err, const double *cpu, size_t np, const double *pn,
-                         const double *pN, const double *perr, const double *pcost,
-                         vfy_wp_prediction *pred, char *summary, size_t len)
+ * prediction per target, the figure's predictions and the summary line of
+ * the notes. */
+static void grid_targets(vfy_case_run *run, const grid *gr, vfy_wp_prediction *pred,
+                         vfy_text *summary)
 {
     static const char *const tcols[] = {
         "target", "grid", "n", "N", "Err", "cpu_s", "predicted_n", "predicted_N",
         "predicted_Err", "predicted_cpu_s"};
     vfy_table *tg = &run->second;
     vfy_table_init(tg, sizeof tcols / sizeof *tcols, tcols);
-    summary[0] = '\0';
+    const size_t P = gr->P, np = gr->np;
+    const double *gn = gr->g[G_N], *gN = gr->g[G_NN], *err = gr->g[G_ERR], *cpu = gr->g[G_CPU];
     for (size_t t = 0; t < VFY_WP_TARGETS; t++) {
         const double target = vfy_wp_targets[t];
         size_t i = vfy_cost_cheapest(err, cpu, P, target);
-        size_t j = vfy_cost_cheapest(perr, pcost, np, target);
+        size_t j = vfy_cost_cheapest(gr->perr, gr->pcost, np, target);
         if (j < np) {
-            pred->cpu[pred->count] = pcost[j];
-            pred->err[pred->count] = perr[j];
-            snprintf(pred->label[pred->count++], sizeof pred->label[0], "%.0e: n=%.0f N=%.0f",
-                     target, pn[j], pN[j]);
+            pred->cpu[pred->count] = gr->pcost[j];
+            pred->err[pred->count] = gr->perr[j];
+            pred->label[pred->count++] = vfy_aprintf("%.0e: n=%.0f N=%.0f", target, gr->pn[j],
+                                                     gr->pN[j]);
         }
         vfy_table_cell(tg, "%.0e", target);
         vfy_table_cell(tg, "%s", i < P ? "reached" : "not reached in the grid");
         target_cells(tg, i < P, NULL, i < P ? (size_t)gn[i] : 0, i < P ? (size_t)gN[i] : 0, 0.0,
                      i < P ? err[i] : NAN, i < P ? cpu[i] : NAN);
-        target_cells(tg, j < np, NULL, j < np ? (size_t)pn[j] : 0, j < np ? (size_t)pN[j] : 0,
-                     0.0, j < np ? perr[j] : NAN, j < np ? pcost[j] : NAN);
-        char line[200];
+        target_cells(tg, j < np, NULL, j < np ? (size_t)gr->pn[j] : 0,
+                     j < np ? (size_t)gr->pN[j] : 0, 0.0, j < np ? gr->perr[j] : NAN,
+                     j < np ? gr->pcost[j] : NAN);
         if (i < P)
-            snprintf(line, sizeof line, "%s%.0e: n = %.0f, N = %.0f (%.3g CPU s)", t ? "; " : "",
-                     target, gn[i], gN[i], cpu[i]);
-        else if (j < np)
-            snprintf(line, sizeof line, "%s%.0e: not in the grid; predicted n = %.0f, N = %.0f "
-                     "(%.3g CPU s)", t ? "; " : "", target, pn[j], pN[j], pcost[j]);
+            summary_target(summary, t, target, 1, 0, gn[i], gN[i], cpu[i]);
         else
-            snprintf(line, sizeof line, "%s%.0e: not in the grid nor below n = 2^24", t ? "; "
-                     : "", target);
-        strncat(summary, line, len - strlen(summary) - 1);
+            summary_target(summary, t, target, 0, j < np, j < np ? gr->pn[j] : 0.0,
+                           j < np ? gr->pN[j] : 0.0, j < np ? gr->pcost[j] : 0.0);
     }
 }
 
-/* Grid points as arrays, in row order. */
-enum { G_N, G_NN, G_ERR, G_SYS, G_STAT, G_CONF, G_CPU, G_MODEL, G_CONF_FIT, G_ARRAYS };
+/* The grid's points from the rows, with its axes; SIM_EINVAL when it is not
+ * every n with every N. */
+static sim_status grid_load(const vfy_case_run *run, grid *gr, char *msg, size_t msglen)
+{
+    const size_t P = gr->P = run->nrows;
+    gr->ns = grid_axis(run, "n", &gr->nn);
+    gr->Ns = grid_axis(run, "N", &gr->nN);
+    gr->g[0] = calloc(G_ARRAYS * (P ? P : 1), sizeof *gr->g[0]);
+    if (gr->ns == NULL || gr->Ns == NULL || gr->g[0] == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    if (gr->nn * gr->nN != P) {
+        snprintf(msg, msglen, "%s: grid of %zu points is not %zu x %zu (every n with every N)",
+                 run->c->name, P, gr->nn, gr->nN);
+        return SIM_EINVAL;
+    }
+    for (size_t k = 1; k < G_ARRAYS; k++)
+        gr->g[k] = gr->g[0] + k * P;
+    static const char *const names[] = {"n", "N", "Err", "Err_sys", "Err_stat", "Conf",
+                                        "cpu_s"};
+    for (size_t i = 0; i < P; i++) {
+        for (size_t k = 0; k < sizeof names / sizeof *names; k++)
+            gr->g[k][i] = vfy_values_get(&run->rows[i].values, names[k]);
+        gr->violations += vfy_values_get(&run->rows[i].values, "violations");
+    }
+    return SIM_OK;
+}
+
+/* The model over the grid (grid_model) into gr and the rows' values:
+ * Conf_fit, k, Err_model, kappa and how far the CPU times stray from it. */
+static int grid_fit(vfy_case_run *run, grid *gr)
+{
+    double **g = gr->g, lk = 0.0, work = 0.0, cpu_sum = 0.0;
+    const size_t P = gr->P;
+    if (fit_conf(P, g[G_N], g[G_NN], g[G_CONF], gr->AB) != 0)
+        return -1;
+    for (size_t i = 0; i < P; i++) {
+        g[G_CONF_FIT][i] = conf_model(gr->AB, g[G_N][i], g[G_NN][i]);
+        lk += log(g[G_STAT][i] / g[G_CONF_FIT][i]);
+        work += g[G_N][i] * g[G_NN][i];
+        cpu_sum += g[G_CPU][i];
+    }
+    const double k = gr->k = exp(lk / (double)P), kappa = gr->kappa = cpu_sum / work;
+    gr->cpu_dev = 0.0;
+    gr->lo = INFINITY;
+    gr->hi = 0.0;
+    for (size_t i = 0; i < P; i++) {
+        const double model = hypot(g[G_SYS][i], k * g[G_CONF_FIT][i]);
+        g[G_MODEL][i] = model;
+        vfy_values_set(&run->rows[i].values, "Err_model", model);
+        vfy_values_set(&run->rows[i].values, "Err_over_model", g[G_ERR][i] / model);
+        gr->lo = fmin(gr->lo, g[G_ERR][i] / model);
+        gr->hi = fmax(gr->hi, g[G_ERR][i] / model);
+        if (g[G_CPU][i] >= 1.0)   /* shorter runs are dominated by start-up */
+            gr->cpu_dev = fmax(gr->cpu_dev,
+                               fabs(g[G_CPU][i] / (kappa * g[G_N][i] * g[G_NN][i]) - 1.0));
+    }
+    return 0;
+}
+
+/* Checks: the 1/sqrt(N) law of the statistical part, pooled over n for each
+ * step of N; the model against the grid; no violations.  0, or -1 when out
+ * of memory. */
+static int grid_checks(vfy_case_run *run, const grid *gr, vfy_report *r)
+{
+    const size_t P = gr->P, nn = gr->nn, nN = gr->nN;
+    double *const *g = gr->g;
+    double *buf = malloc(2 * (P + nn) * sizeof *buf);
+    if (buf == NULL)
+        return -1;
+    double *c1 = buf, *c2 = c1 + nn, *dom_err = c2 + nn, *dom_model = dom_err + P, ratio, worst;
+    char *name;
+    for (size_t b = 1; b < nN; b++) {
+        for (size_t a = 0; a < nn; a++) {
+            c1[a] = g[G_CONF][a * nN + b - 1];
+            c2[a] = g[G_CONF][a * nN + b];
+        }
+        name = vfy_aprintf("%s Conf(N=%.0f)/Conf(N=%.0f) over sqrt(%.0f/%.0f), pooled over n",
+                           run->c->name, gr->Ns[b - 1], gr->Ns[b], gr->Ns[b], gr->Ns[b - 1]);
+        vfy_cost_check_stat_scaling(r, name ? name : run->c->name, c1, c2, nn,
+                                    (size_t)gr->Ns[b - 1], (size_t)gr->Ns[b],
+                                    !vfy_external(run->o), VFY_TOL_COST_Z, &ratio);
+        free(name);
+    }
+    /* Judged where one part dominates (by VFY_TOL_COST_DOMINANCE): where the two are
+     * comparable, noise of the opposite sign can cancel the bias and Err
+     * fall far below either, which no smooth model follows. */
+    size_t ndom = 0;
+    for (size_t i = 0; i < P; i++) {
+        double a = g[G_SYS][i], b2 = gr->k * g[G_CONF_FIT][i];
+        if (fmax(a, b2) >= VFY_TOL_COST_DOMINANCE * fmin(a, b2)) {
+            dom_err[ndom] = g[G_ERR][i];
+            dom_model[ndom++] = g[G_MODEL][i];
+        }
+    }
+    name = vfy_aprintf("%s Err/model where one part dominates (%zu of %zu points)",
+                       run->c->name, ndom, P);
+    if (ndom > 0)
+        vfy_cost_check_model(r, name ? name : run->c->name, dom_err, dom_model, ndom,
+                             VFY_TOL_COST_MODEL_FACTOR, &worst);
+    else
+        vfy_skip(r, name ? name : run->c->name, "no grid point where one part dominates");
+    free(name);
+    name = vfy_aprintf("%s majorant violations (all points)", run->c->name);
+    vfy_check_zero(r, name ? name : run->c->name, gr->violations);
+    free(name);
+    free(buf);
+    return 0;
+}
+
+/* The model's predictions: n = n_min 2^j up to 2^24, N among the grid's. */
+static sim_status grid_predict(const vfy_case_run *run, grid *gr, char *msg, size_t msglen)
+{
+    const char *exact = run->d->needs[0], *finite = run->d->needs[1];
+    size_t nvalues = 0;
+    for (size_t n = (size_t)gr->ns[0]; n <= PRED_N_MAX; n *= 2)
+        nvalues++;
+    const size_t max = nvalues * gr->nN;
+    if ((gr->pn = malloc(4 * (max ? max : 1) * sizeof *gr->pn)) == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    gr->pN = gr->pn + max;
+    gr->perr = gr->pN + max;
+    gr->pcost = gr->perr + max;
+    sim_status status = SIM_OK;
+    for (size_t n = (size_t)gr->ns[0]; n <= PRED_N_MAX && status == SIM_OK; n *= 2) {
+        double s;
+        status = exact_sys(exact, finite, &run->rows[0].scene, n, &s, msg, msglen);
+        for (size_t b = 0; b < gr->nN && status == SIM_OK; b++, gr->np++) {
+            const size_t q = gr->np;
+            gr->pn[q] = (double)n;
+            gr->pN[q] = gr->Ns[b];
+            gr->perr[q] = hypot(s, gr->k * conf_model(gr->AB, gr->pn[q], gr->pN[q]));
+            gr->pcost[q] = gr->kappa * gr->pn[q] * gr->pN[q];
+        }
+    }
+    return status;
+}
+
+/* The work-precision figure: one curve per N (n grows). */
+static int grid_figure(const vfy_case_run *run, const grid *gr, const vfy_wp_prediction *pred)
+{
+    const size_t P = gr->P, nn = gr->nn, nN = gr->nN;
+    vfy_wp_series *series = calloc(nN ? nN : 1, sizeof *series);
+    size_t *idx = malloc((P ? P : 1) * sizeof *idx);
+    char **titles = calloc(nN + 1, sizeof *titles), **labels = calloc(P + 1, sizeof *labels);
+    char *ftitle = vfy_aprintf("%s: Err against CPU time, %s", run->c->name,
+                               run->d->checks[0].value);
+    int rc = series && idx && titles && labels && ftitle ? 0 : -1;
+    for (size_t b = 0; b < nN && rc == 0; b++) {
+        rc = (titles[b] = vfy_aprintf("N = %.0f (n grows)", gr->Ns[b])) ? 0 : -1;
+        series[b] = (vfy_wp_series){.title = titles[b], .idx = idx + b * nn, .count = nn};
+        for (size_t a = 0; a < nn; a++)
+            idx[b * nn + a] = a * nN + b;
+    }
+    for (size_t i = 0; i < P && rc == 0; i++)
+        rc = (labels[i] = vfy_aprintf("n=%.0f", gr->g[G_N][i])) ? 0 : -1;
+    if (rc == 0)
+        rc = vfy_write_work_precision(run->o, run->c->name, ftitle, run->comment,
+                                      "Err (relative, max norm over the output times)", series,
+                                      nN, gr->g[G_CPU], gr->g[G_ERR], gr->g[G_MODEL],
+                                      (const char *const *)labels, pred);
+    for (size_t b = 0; titles && b < nN; b++)
+        free(titles[b]);
+    for (size_t i = 0; labels && i < P; i++)
+        free(labels[i]);
+    free(series);
+    free(idx);
+    free(titles);
+    free(labels);
+    free(ftitle);
+    return rc;
+}
 
 /* After the grid (vfy_hook_fn): the model Err_model = sqrt(Err_sys^2 + (k
  * Conf_fit)^2) with Conf_fit^2 N = A/n + B/n^2 and k the geometric mean of
@@ -306,113 +514,33 @@ enum { G_N, G_NN, G_ERR, G_SYS, G_STAT, G_CONF, G_CPU, G_MODEL, G_CONF_FIT, G_AR
  * the work-precision figure. */
 static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
-    const char *exact = run->d->needs[0], *finite = run->d->needs[1];
-    const char *obs = run->d->checks[0].value;
-    const size_t P = run->nrows;
-    double ns[AXIS_MAX], Ns[AXIS_MAX];
-    const size_t nn = grid_axis(run, "n", ns), nN = grid_axis(run, "N", Ns);
-    if (P > GRID_MAX || nn * nN != P) {
-        snprintf(msg, msglen, "%s: grid of %zu points, %zu x %zu (allowed up to %d, %d x %d)",
-                 run->c->name, P, nn, nN, GRID_MAX, AXIS_MAX, AXIS_MAX);
-        return SIM_EINVAL;
-    }
-    double g[G_ARRAYS][GRID_MAX] = {{0}};   /* rows 0 .. P - 1 are set below */
-    double violations = 0.0;   /* NaN where a solver did not report them */
-    static const char *const names[] = {"n", "N", "Err", "Err_sys", "Err_stat", "Conf",
-                                        "cpu_s"};
-    for (size_t i = 0; i < P; i++) {
-        for (size_t k = 0; k < sizeof names / sizeof *names; k++)
-            g[k][i] = vfy_values_get(&run->rows[i].values, names[k]);
-        violations += vfy_values_get(&run->rows[i].values, "violations");
-    }
-    double AB[2], lk = 0.0, work = 0.0, cpu_sum = 0.0;
-    fit_conf(P, g[G_N], g[G_NN], g[G_CONF], AB);
-    for (size_t i = 0; i < P; i++) {
-        g[G_CONF_FIT][i] = conf_model(AB, g[G_N][i], g[G_NN][i]);
-        lk += log(g[G_STAT][i] / g[G_CONF_FIT][i]);
-        work += g[G_N][i] * g[G_NN][i];
-        cpu_sum += g[G_CPU][i];
-    }
-    const double k = exp(lk / (double)P), kappa = cpu_sum / work;
-    double cpu_dev = 0.0, lo = INFINITY, hi = 0.0;
-    for (size_t i = 0; i < P; i++) {
-        const double model = hypot(g[G_SYS][i], k * g[G_CONF_FIT][i]);
-        g[G_MODEL][i] = model;
-        vfy_values_set(&run->rows[i].values, "Err_model", model);
-        vfy_values_set(&run->rows[i].values, "Err_over_model", g[G_ERR][i] / model);
-        lo = fmin(lo, g[G_ERR][i] / model);
-        hi = fmax(hi, g[G_ERR][i] / model);
-        if (g[G_CPU][i] >= 1.0)   /* shorter runs are dominated by start-up */
-            cpu_dev = fmax(cpu_dev, fabs(g[G_CPU][i] / (kappa * g[G_N][i] * g[G_NN][i]) - 1.0));
-    }
-
-    /* Checks: the 1/sqrt(N) law of the statistical part, pooled over n for
-     * each step of N; the model against the grid; no violations. */
-    char name[200];
-    for (size_t b = 1; b < nN; b++) {
-        double c1[AXIS_MAX], c2[AXIS_MAX], ratio;
-        for (size_t a = 0; a < nn; a++) {
-            c1[a] = g[G_CONF][a * nN + b - 1];
-            c2[a] = g[G_CONF][a * nN + b];
-        }
-        snprintf(name, sizeof name, "%s Conf(N=%.0f)/Conf(N=%.0f) over sqrt(%.0f/%.0f), pooled "
-                 "over n", run->c->name, Ns[b - 1], Ns[b], Ns[b], Ns[b - 1]);
-        vfy_cost_check_stat_scaling(r, name, c1, c2, nn, (size_t)Ns[b - 1], (size_t)Ns[b],
-                                    !vfy_external(run->o), ZMAX, &ratio);
-    }
-    /* Judged where one part dominates (by DOMINANCE): where the two are
-     * comparable, noise of the opposite sign can cancel the bias and Err
-     * fall far below either, which no smooth model follows. */
-    double worst, dom_err[GRID_MAX], dom_model[GRID_MAX];
-    size_t ndom = 0;
-    for (size_t i = 0; i < P; i++) {
-        double a = g[G_SYS][i], b2 = k * g[G_CONF_FIT][i];
-        if (fmax(a, b2) >= DOMINANCE * fmin(a, b2)) {
-            dom_err[ndom] = g[G_ERR][i];
-            dom_model[ndom++] = g[G_MODEL][i];
-        }
-    }
-    snprintf(name, sizeof name, "%s Err/model where one part dominates (%zu of %zu points)",
-             run->c->name, ndom, P);
-    if (ndom > 0)
-        vfy_cost_check_model(r, name, dom_err, dom_model, ndom, MODEL_FACTOR, &worst);
-    else
-        vfy_skip(r, name, "no grid point where one part dominates");
-    snprintf(name, sizeof name, "%s majorant violations (all points)", run->c->name);
-    vfy_check_zero(r, name, violations);
-
-    /* Predictions: n = n_min 2^j up to 2^24, N among the grid's. */
-    enum { PRED_MAX = 32 * AXIS_MAX };
-    double perr[PRED_MAX], pcost[PRED_MAX], pn[PRED_MAX], pN[PRED_MAX];
-    size_t np = 0;
-    sim_status status = SIM_OK;
-    for (size_t n = (size_t)ns[0]; n <= PRED_N_MAX && status == SIM_OK; n *= 2) {
-        double s;
-        status = exact_sys(exact, finite, &run->rows[0].scene, n, &s, msg, msglen);
-        for (size_t b = 0; b < nN && np < PRED_MAX && status == SIM_OK; b++, np++) {
-            pn[np] = (double)n;
-            pN[np] = Ns[b];
-            perr[np] = hypot(s, k * conf_model(AB, pn[np], pN[np]));
-            pcost[np] = kappa * pn[np] * pN[np];
-        }
-    }
-    if (status != SIM_OK)
-        return status;
-    char summary[600];
+    grid gr = {0};
     vfy_wp_prediction pred = {0};
-    grid_targets(run, P, g[G_N], g[G_NN], g[G_ERR], g[G_CPU], np, pn, pN, perr, pcost, &pred,
-                 summary, sizeof summary);
-    if (run->o->progress)
-        fprintf(run->o->progress, "   %s: cheapest per target: %s\n", run->c->name, summary);
-    const double v[][2] = {{AB[0], 0}, {AB[1], 0}, {k, 0}, {lo, 0}, {hi, 0},
-                           {1e6 * kappa, 0}, {100.0 * cpu_dev, 0}};
-    static const char *const vnames[] = {"A", "B", "k", "ratio_lo", "ratio_hi", "kappa_us",
-                                         "cpu_dev_percent"};
-    for (size_t i = 0; i < sizeof vnames / sizeof *vnames; i++)
-        vfy_values_set(&run->values, vnames[i], v[i][0]);
-    run->second_suffix = "-targets";
-    run->second_title = VFY_COST_TARGETS_TITLE;
-    snprintf(run->second_notes, sizeof run->second_notes,
+    vfy_text summary = {0};
+    sim_status status = grid_load(run, &gr, msg, msglen);
+    if (status == SIM_OK && (grid_fit(run, &gr) != 0 || grid_checks(run, &gr, r) != 0)) {
+        snprintf(msg, msglen, "out of memory");
+        status = SIM_ENOMEM;
+    }
+    if (status == SIM_OK)
+        status = grid_predict(run, &gr, msg, msglen);
+    if (status == SIM_OK) {
+        grid_targets(run, &gr, &pred, &summary);
+        if (run->o->progress)
+            fprintf(run->o->progress, "   %s: cheapest per target: %s\n", run->c->name,
+                    vfy_text_str(&summary));
+        const double v[] = {gr.AB[0], gr.AB[1], gr.k, gr.lo, gr.hi, 1e6 * gr.kappa,
+                            100.0 * gr.cpu_dev};
+        static const char *const vnames[] = {"A", "B", "k", "ratio_lo", "ratio_hi", "kappa_us",
+                                             "cpu_dev_percent"};
+        for (size_t i = 0; i < sizeof vnames / sizeof *vnames; i++)
+            vfy_values_set(&run->values, vnames[i], v[i]);
+        run->second_suffix = "-targets";
+        run->second_title = VFY_COST_TARGETS_TITLE;
+    }
+    if (status == SIM_OK
+        && (summary.failed
+            || vfy_run_second_notes(run,
              "grid: the cheapest measured point (least cpu_s) with Err <= target, or \"not "
              "reached in the grid\". predicted_*: the cheapest (n, N) by the model above "
              "(a prediction, not a measurement) over n = %.0f 2^j up to 2^24 and N among the "
@@ -423,26 +551,16 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
              "estimated (among powers of two several (n, N) cost the same; the one with the "
              "smaller Err is shown). The model assumes kappa stays constant as n grows beyond the grid "
              "(memory effects are not modelled). Summary: %s.",
-             ns[0], Ns[0], Ns[nN - 1], summary);
-
-    vfy_wp_series series[AXIS_MAX];
-    size_t idx[AXIS_MAX][AXIS_MAX];
-    char labels[GRID_MAX][24], ftitle[200];
-    for (size_t b = 0; b < nN; b++) {
-        snprintf(series[b].title, sizeof series[b].title, "N = %.0f (n grows)", Ns[b]);
-        series[b].count = nn;
-        series[b].idx = idx[b];
-        for (size_t a = 0; a < nn; a++)
-            idx[b][a] = a * nN + b;
+             gr.ns[0], gr.Ns[0], gr.Ns[gr.nN - 1], vfy_text_str(&summary)) != 0)) {
+        snprintf(msg, msglen, "out of memory");
+        status = SIM_ENOMEM;
     }
-    for (size_t i = 0; i < P; i++)
-        snprintf(labels[i], sizeof labels[i], "n=%.0f", g[G_N][i]);
-    snprintf(ftitle, sizeof ftitle, "%s: Err against CPU time, %s", run->c->name, obs);
-    if (vfy_write_work_precision(run->o, run->c->name, ftitle, run->comment,
-                                 "Err (relative, max norm over the output times)", series, nN,
-                                 g[G_CPU], g[G_ERR], g[G_MODEL], labels, &pred) != 0)
-        return vfy_io_error(run->c->name, msg, msglen);
-    return SIM_OK;
+    if (status == SIM_OK && grid_figure(run, &gr, &pred) != 0)
+        status = vfy_io_error(run->c->name, msg, msglen);
+    vfy_wp_prediction_free(&pred);
+    vfy_text_free(&summary);
+    grid_free(&gr);
+    return status;
 }
 
 /* Paper A Ex 3 with Table 1's estimator (uncentred T_raw against A.13); paper
@@ -458,8 +576,8 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
      {NULL, NULL, NULL, NULL, 0}}
 #define COST_GRID_CHECKS(OBS, FINITE)                                                   \
     {{.name = "{case} n={n} N={N} " OBS " vs exact finite-n expectation",                \
-      .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1, .tol = ZMAX,  \
-      .out = "z"},                                                                      \
+      .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1,              \
+      .tol = VFY_TOL_ZMAX, .out = "z"},                                                 \
      {.name = NULL}}
 static const char grid_columns[] =
     "n:%.0f N:%.0f Err:%.3e Err_sys:%.3e Err_stat:%.3e Conf:%.3e z:%.2f Err_model:%.3e "
@@ -487,10 +605,12 @@ static const char grid_columns[] =
 #define COST_GRID(SCENE, WHAT, OBS, FINITE, N_PAPER, N_QUICK, ...)                 \
     {.scene = SCENE,                                                                     \
      __VA_ARGS__,                                                                       \
-     .paper_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
-                    .values = {N_PAPER, "128 512 2048"}, .grid = 1},                     \
-     .quick_rows = {.keys = {"particles.n", "particles.ensembles"},                      \
-                    .values = {N_QUICK, "64 256"}, .grid = 1},                           \
+     .paper_rows = {.keys = VFY_KEYS({"particles.n", N_PAPER, NULL},                      \
+                                     {"particles.ensembles", "128 512 2048", NULL}),      \
+                    .grid = 1},                                                           \
+     .quick_rows = {.keys = VFY_KEYS({"particles.n", N_QUICK, NULL},                      \
+                                     {"particles.ensembles", "64 256", NULL}),            \
+                    .grid = 1},                                                           \
      .needs = (const char *const[]){"T_exact", FINITE, NULL},                            \
      .needs_why = "the cost grid needs the exact expectation of the n-particle estimator", \
      .label = "{case} n={n} N={ensembles}",                                              \
@@ -592,18 +712,45 @@ static double split_model(const double c[2], int scheme, double h)
     "time step pays off only where its step is large enough to be cheaper and small "      \
     "enough for the target. Summary: {summary}."
 
-/* Everything the cost-split hook derives from the rows. */
+/* Everything the cost-split hook derives from the rows: P of each array,
+ * the doubles in one allocation (n), zeroed. */
 typedef struct split_fit {
     size_t P;
-    int scheme[GRID_MAX];
-    double n[GRID_MAX], N[GRID_MAX], h[GRID_MAX], T[GRID_MAX], Tci[GRID_MAX], cpu[GRID_MAX];
+    int *scheme;
+    double *n, *N, *h, *T, *Tci, *cpu;
     double T_inf, b, cov00, cov01, cov11, T_inf_ci;   /* T̄_jump(n) = T̄_inf + b/n */
     double csplit[2][2];                               /* Euler, Strang */
     int have_split[2];
-    double dsplit[GRID_MAX], dsplit_ci[GRID_MAX];      /* time-step rows: measured */
-    double err[GRID_MAX], err_hi[GRID_MAX], model[GRID_MAX], fit_mean[GRID_MAX];
+    double *dsplit, *dsplit_ci;                        /* time-step rows: measured */
+    double *err, *err_hi, *model, *fit_mean;
     double AB[2], kappa, ag[2];                        /* Conf model; CPU models */
 } split_fit;
+
+/* f's arrays for P rows; 0, or -1 when out of memory (nothing held). */
+static int split_fit_alloc(split_fit *f, size_t P)
+{
+    double **arrays[] = {&f->n,      &f->N,         &f->h,   &f->T,      &f->Tci,
+                         &f->cpu,    &f->dsplit,    &f->dsplit_ci,       &f->err,
+                         &f->err_hi, &f->model,     &f->fit_mean};
+    const size_t count = sizeof arrays / sizeof *arrays, rows = P ? P : 1;
+    *f = (split_fit){.P = P};
+    f->scheme = calloc(rows, sizeof *f->scheme);
+    double *block = calloc(count * rows, sizeof *block);
+    if (f->scheme == NULL || block == NULL) {
+        free(f->scheme);
+        free(block);
+        return -1;
+    }
+    for (size_t k = 0; k < count; k++)
+        *arrays[k] = block + k * rows;
+    return 0;
+}
+
+static void split_fit_free(split_fit *f)
+{
+    free(f->scheme);
+    free(f->n);   /* the block of every double array */
+}
 
 /* The reference T̄_inf + b/n from the jump rows (its chi^2 judged) and each
  * splitting's error c1 h^p + c2 h^(p+1) fitted to its rows' difference from
@@ -611,9 +758,15 @@ typedef struct split_fit {
 static sim_status split_fits(vfy_case_run *run, split_fit *f, vfy_report *r, char *msg,
                              size_t msglen)
 {
-    double x[GRID_MAX], y[GRID_MAX], w[GRID_MAX], chi2_jump;
+    double *buf = malloc(7 * (f->P ? f->P : 1) * sizeof *buf), chi2_jump;
+    if (buf == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    double *x = buf, *y = x + f->P, *w = y + f->P, *x1 = w + f->P, *x2 = x1 + f->P;
+    double *ds = x2 + f->P, *ws = ds + f->P;
     size_t nj = 0;
-    char name[200];
+    char *name;
     for (size_t i = 0; i < f->P; i++) {
         if (f->scheme[i] != SCHEME_JUMP)
             continue;
@@ -626,20 +779,22 @@ static sim_status split_fits(vfy_case_run *run, split_fit *f, vfy_report *r, cha
                                   &f->cov11, &chi2_jump) != 0) {
         snprintf(msg, msglen, "%s: the O(1/n) fit needs jump rows at two n at least",
                  run->c->name);
+        free(buf);
         return SIM_EINVAL;
     }
     for (size_t k = 0; k < nj; k++)   /* gsl passes over NaN weights: no chi^2 of them */
         if (!isfinite(y[k]) || !isfinite(w[k]))
             chi2_jump = NAN;
     f->T_inf_ci = SIM_LAMBDA_P * sqrt(f->cov00);
-    snprintf(name, sizeof name, "%s jump rows: O(1/n) fit chi^2 (%zu rows)", run->c->name, nj);
-    vfy_cost_check_chi2(r, name, chi2_jump, nj - 2);
+    name = vfy_aprintf("%s jump rows: O(1/n) fit chi^2 (%zu rows)", run->c->name, nj);
+    vfy_cost_check_chi2(r, name ? name : run->c->name, chi2_jump, nj - 2);
+    free(name);
     vfy_values_set(&run->values, "nj", (double)nj);
     vfy_values_set(&run->values, "chi2_jump", chi2_jump);
     for (int sp = 0; sp < 2; sp++) {
         const int scheme = sp ? SCHEME_STRANG : SCHEME_EULER;
         const double p = sp ? 2.0 : 1.0;
-        double x1[GRID_MAX], x2[GRID_MAX], ds[GRID_MAX], ws[GRID_MAX], chi2;
+        double chi2;
         size_t m = 0;
         for (size_t i = 0; i < f->P; i++) {
             if (f->scheme[i] != scheme)
@@ -655,26 +810,36 @@ static sim_status split_fits(vfy_case_run *run, split_fit *f, vfy_report *r, cha
         }
         if (m == 0)
             continue;
-        snprintf(name, sizeof name, "%s %s: splitting-error fit c1 h^%g + c2 h^%g, chi^2 "
-                 "(%zu rows)", run->c->name, scheme_names[scheme], p, p + 1.0, m);
+        name = vfy_aprintf("%s %s: splitting-error fit c1 h^%g + c2 h^%g, chi^2 (%zu rows)",
+                           run->c->name, scheme_names[scheme], p, p + 1.0, m);
         if (vfy_cost_lsq2(m, x1, x2, ds, ws, f->csplit[sp], &chi2) != 0) {
-            vfy_skip(r, name, "fewer than two distinct steps: no fit");
-            continue;
+            vfy_skip(r, name ? name : run->c->name, "fewer than two distinct steps: no fit");
+        } else {
+            f->have_split[sp] = 1;
+            vfy_cost_check_chi2(r, name ? name : run->c->name, chi2, m - 2);
         }
-        f->have_split[sp] = 1;
-        vfy_cost_check_chi2(r, name, chi2, m - 2);
+        free(name);
     }
+    free(buf);
     return SIM_OK;
 }
 
 /* Each row's parts of Err, the model, the residual z-test, and the CPU
- * models: kappa n N (jump rows), n N (a + g/h) (time-step rows). */
-static void split_parts(vfy_case_run *run, split_fit *f, vfy_report *r)
+ * models: kappa n N (jump rows), n N (a + g/h) (time-step rows).  0, or -1
+ * when out of memory. */
+static int split_parts(vfy_case_run *run, split_fit *f, vfy_report *r)
 {
-    double conf[GRID_MAX] = {0};
+    double *buf = calloc(5 * (f->P ? f->P : 1), sizeof *buf);
+    if (buf == NULL)
+        return -1;
+    double *conf = buf, *one = conf + f->P, *inv_h = one + f->P, *per = inv_h + f->P;
+    double *wc = per + f->P;
     for (size_t i = 0; i < f->P; i++)
         conf[i] = f->Tci[i] / f->T_inf;
-    fit_conf(f->P, f->n, f->N, conf, f->AB);
+    if (fit_conf(f->P, f->n, f->N, conf, f->AB) != 0) {
+        free(buf);
+        return -1;
+    }
     const double k_scalar = sqrt(2.0 / M_PI) / SIM_LAMBDA_P;   /* E|Z| in units of Conf */
     for (size_t i = 0; i < f->P; i++) {
         vfy_row *row = &run->rows[i];
@@ -698,14 +863,14 @@ static void split_parts(vfy_case_run *run, split_fit *f, vfy_report *r)
             vfy_values_set(&row->values, names[k], v[k]);
     }
     double zmax;
-    char name[200];
-    snprintf(name, sizeof name, "%s every row vs the fitted model T_inf + b/n + splitting",
-             run->c->name);
-    vfy_check_zscore(r, name, f->T, f->Tci, f->fit_mean, f->P, ZMAX, &zmax);
+    char *name = vfy_aprintf("%s every row vs the fitted model T_inf + b/n + splitting",
+                             run->c->name);
+    vfy_check_zscore(r, name ? name : run->c->name, f->T, f->Tci, f->fit_mean, f->P,
+                     VFY_TOL_COST_Z, &zmax);
+    free(name);
     vfy_values_set(&run->values, "zmax", zmax);
 
-    double kappa_num = 0.0, kappa_den = 0.0, one[GRID_MAX], inv_h[GRID_MAX], per[GRID_MAX];
-    double wc[GRID_MAX];
+    double kappa_num = 0.0, kappa_den = 0.0;
     size_t m = 0;
     f->ag[0] = NAN;
     f->ag[1] = 0.0;
@@ -730,39 +895,65 @@ static void split_parts(vfy_case_run *run, split_fit *f, vfy_report *r)
         f->ag[1] = 0.0;
     }
     f->kappa = kappa_num / kappa_den;
+    free(buf);
+    return 0;
 }
 
 /* The model's predictions: n = n_min 2^j up to 2^24, N among the grid's,
- * the jump scheme or a splitting at h = h_max 2^-j. */
+ * the jump scheme or a splitting at h = h_max 2^-j; count of each array,
+ * the doubles in one allocation (err). */
 typedef struct split_predictions {
     size_t count;
-    double err[4096], cost[4096], n[4096], N[4096], h[4096];
-    int scheme[4096];
+    double *err, *cost, *n, *N, *h;
+    int *scheme;
 } split_predictions;
 
-static void split_predict(const split_fit *f, double n_min, double h_max,
-                          split_predictions *pr)
+static void split_predictions_free(split_predictions *pr)
 {
-    double Nvals[GRID_MAX];
-    size_t nNv = 0;
-    for (size_t i = 0; i < f->P; i++) {
+    free(pr->err);
+    free(pr->scheme);
+    *pr = (split_predictions){0};
+}
+
+/* 0, or -1 when out of memory. */
+static int split_predict(const split_fit *f, double n_min, double h_max,
+                         split_predictions *pr)
+{
+    double *Nvals = malloc((f->P ? f->P : 1) * sizeof *Nvals);
+    size_t nNv = 0, nvalues = 0;
+    for (size_t i = 0; Nvals != NULL && i < f->P; i++) {
         size_t v = 0;
         while (v < nNv && Nvals[v] != f->N[i])
             v++;
         if (v == nNv)
             Nvals[nNv++] = f->N[i];
     }
-    const size_t max = sizeof pr->err / sizeof *pr->err;
+    for (double n = n_min; n <= (double)PRED_N_MAX; n *= 2.0)
+        nvalues++;
+    const size_t per_point = 1 + (size_t)(f->have_split[0] + f->have_split[1])
+                                     * (PRED_H_HALVINGS + 1);
+    const size_t max = nvalues * nNv * per_point + 1;
+    *pr = (split_predictions){0};
+    pr->err = malloc(5 * max * sizeof *pr->err);
+    pr->scheme = malloc(max * sizeof *pr->scheme);
+    if (Nvals == NULL || pr->err == NULL || pr->scheme == NULL) {
+        free(Nvals);
+        split_predictions_free(pr);
+        return -1;
+    }
+    pr->cost = pr->err + max;
+    pr->n = pr->cost + max;
+    pr->N = pr->n + max;
+    pr->h = pr->N + max;
     const double k_scalar = sqrt(2.0 / M_PI) / SIM_LAMBDA_P;
-    pr->count = 0;
     for (double n = n_min; n <= (double)PRED_N_MAX; n *= 2.0) {
         for (size_t v = 0; v < nNv; v++) {
             const double N = Nvals[v], cstat = k_scalar * conf_model(f->AB, n, N);
             const double sys_n = fabs(f->b / n) / f->T_inf;
-            for (int sch = 0; sch < 3 && pr->count < max; sch++) {
+            for (int sch = 0; sch < 3; sch++) {
                 if (sch > 0 && !f->have_split[sch - 1])
                     continue;
-                for (int j = 0; j <= (sch ? PRED_H_HALVINGS : 0) && pr->count < max; j++) {
+                for (int j = 0; j <= (sch ? PRED_H_HALVINGS : 0); j++) {
                     const size_t q = pr->count++;
                     double h = sch ? h_max / (double)(1u << j) : 0.0;
                     double s = sch ? fabs(split_model(f->csplit[sch - 1], sch, h)) / f->T_inf
@@ -777,13 +968,15 @@ static void split_predict(const split_fit *f, double n_min, double h_max,
             }
         }
     }
+    free(Nvals);
+    return 0;
 }
 
 /* The targets table (the cheapest measured row whose Err_hi reaches each
  * target, and the model's prediction), the figure's predictions and the
  * summary line. */
 static void split_targets(vfy_case_run *run, const split_fit *f, const split_predictions *pr,
-                          vfy_wp_prediction *pred, char *summary, size_t len)
+                          vfy_wp_prediction *pred, vfy_text *summary)
 {
     static const char *const tcols[] = {
         "target", "grid", "scheme", "n", "N", "h", "Err_hi", "cpu_s", "predicted_scheme",
@@ -791,7 +984,6 @@ static void split_targets(vfy_case_run *run, const split_fit *f, const split_pre
     vfy_table *tg = &run->second;
     vfy_table_init(tg, sizeof tcols / sizeof *tcols, tcols);
     const size_t P = f->P, np = pr->count;
-    summary[0] = '\0';
     for (size_t t = 0; t < VFY_WP_TARGETS; t++) {
         const double target = vfy_wp_targets[t];
         size_t i = vfy_cost_cheapest(f->err_hi, f->cpu, P, target);
@@ -800,12 +992,12 @@ static void split_targets(vfy_case_run *run, const split_fit *f, const split_pre
             pred->cpu[pred->count] = pr->cost[j];
             pred->err[pred->count] = pr->err[j];
             if (pr->scheme[j])
-                snprintf(pred->label[pred->count++], sizeof pred->label[0], "%.0e: %s n=%.0f "
-                         "N=%.0f h=%g", target, scheme_names[pr->scheme[j]], pr->n[j], pr->N[j],
-                         pr->h[j]);
+                pred->label[pred->count++] = vfy_aprintf("%.0e: %s n=%.0f N=%.0f h=%g", target,
+                                                         scheme_names[pr->scheme[j]], pr->n[j],
+                                                         pr->N[j], pr->h[j]);
             else
-                snprintf(pred->label[pred->count++], sizeof pred->label[0], "%.0e: jump n=%.0f "
-                         "N=%.0f", target, pr->n[j], pr->N[j]);
+                pred->label[pred->count++] = vfy_aprintf("%.0e: jump n=%.0f N=%.0f", target,
+                                                         pr->n[j], pr->N[j]);
         }
         vfy_table_cell(tg, "%.0e", target);
         vfy_table_cell(tg, "%s", i < P ? "reached" : "not reached in the grid");
@@ -817,24 +1009,72 @@ static void split_targets(vfy_case_run *run, const split_fit *f, const split_pre
                      j < np ? (size_t)pr->n[j] : 0, j < np ? (size_t)pr->N[j] : 0,
                      j < np ? pr->h[j] : 0.0, j < np ? pr->err[j] : NAN,
                      j < np ? pr->cost[j] : NAN);
-        char hs[32] = "", line[240];
+        char hs[40] = "";   /* ", h = " and one %g */
         if (i < P && f->scheme[i])
             snprintf(hs, sizeof hs, ", h = %g", f->h[i]);
         else if (i == P && j < np && pr->h[j] > 0.0)
             snprintf(hs, sizeof hs, ", h = %g", pr->h[j]);
+        const char *sep = t ? "; " : "";
         if (i < P)
-            snprintf(line, sizeof line, "%s%.0e: %s n = %.0f, N = %.0f%s (%.3g CPU s)",
-                     t ? "; " : "", target, scheme_names[f->scheme[i]], f->n[i], f->N[i], hs,
-                     f->cpu[i]);
+            vfy_text_printf(summary, "%s%.0e: %s n = %.0f, N = %.0f%s (%.3g CPU s)", sep, target,
+                            scheme_names[f->scheme[i]], f->n[i], f->N[i], hs, f->cpu[i]);
         else if (j < np)
-            snprintf(line, sizeof line, "%s%.0e: not in the grid; predicted %s n = %.0f, "
-                     "N = %.0f%s (%.3g CPU s)", t ? "; " : "", target,
-                     scheme_names[pr->scheme[j]], pr->n[j], pr->N[j], hs, pr->cost[j]);
+            vfy_text_printf(summary, "%s%.0e: not in the grid; predicted %s n = %.0f, N = "
+                            "%.0f%s (%.3g CPU s)", sep, target, scheme_names[pr->scheme[j]],
+                            pr->n[j], pr->N[j], hs, pr->cost[j]);
         else
-            snprintf(line, sizeof line, "%s%.0e: not in the grid nor below n = 2^24",
-                     t ? "; " : "", target);
-        strncat(summary, line, len - strlen(summary) - 1);
+            vfy_text_printf(summary, "%s%.0e: not in the grid nor below n = 2^24", sep,
+                            target);
     }
+}
+
+/* Whether rows q and i of the fit draw as one curve: jump rows of the same
+ * N, or time-step rows of the same splitting, n and N. */
+static int same_series(const split_fit *f, size_t q, size_t i)
+{
+    return (f->scheme[q] == SCHEME_JUMP) == (f->scheme[i] == SCHEME_JUMP) && f->N[q] == f->N[i]
+           && (f->scheme[q] == SCHEME_JUMP
+               || (f->scheme[q] == f->scheme[i] && f->n[q] == f->n[i]));
+}
+
+/* The figure's series, in the order their first rows come: idx holds each
+ * series' rows in row order (offsets in series[s].idx), titles their
+ * titles, labels each row's label; returns the count of series, or 0 when
+ * out of memory. */
+static size_t split_series(const split_fit *f, vfy_wp_series *series, size_t *idx,
+                           size_t *first, size_t *of, char **titles, char **labels)
+{
+    size_t nseries = 0;
+    for (size_t i = 0; i < f->P; i++) {   /* each row's series, and each series' first row */
+        size_t s = 0;
+        while (s < nseries && !same_series(f, first[s], i))
+            s++;
+        if (s == nseries) {
+            first[nseries++] = i;
+            titles[s] = f->scheme[i] == SCHEME_JUMP
+                            ? vfy_aprintf("jump, N = %.0f (n grows)", f->N[i])
+                            : vfy_aprintf("%s, n = %.0f, N = %.0f (h shrinks)",
+                                          scheme_names[f->scheme[i]], f->n[i], f->N[i]);
+            series[s] = (vfy_wp_series){.title = titles[s]};
+            if (titles[s] == NULL)
+                return 0;
+        }
+        of[i] = s;
+        series[s].count++;
+        labels[i] = f->scheme[i] == SCHEME_JUMP ? vfy_aprintf("n=%.0f", f->n[i])
+                                                : vfy_aprintf("h=%g", f->h[i]);
+        if (labels[i] == NULL)
+            return 0;
+    }
+    size_t at = 0;
+    for (size_t s = 0; s < nseries; s++) {
+        series[s].idx = idx + at;
+        at += series[s].count;
+        series[s].count = 0;
+    }
+    for (size_t i = 0; i < f->P; i++)
+        idx[series[of[i]].idx - idx + series[of[i]].count++] = i;
+    return nseries;
 }
 
 /* The figure: the jump rows by N (n grows), the time-step rows by
@@ -842,60 +1082,38 @@ static void split_targets(vfy_case_run *run, const split_fit *f, const split_pre
 static int split_figure(const vfy_case_run *run, const split_fit *f,
                         const vfy_wp_prediction *pred)
 {
-    vfy_wp_series series[GRID_MAX];
-    size_t idx[GRID_MAX][GRID_MAX], nseries = 0;
-    char labels[GRID_MAX][24], ftitle[200];
+    const size_t P = f->P ? f->P : 1;
+    vfy_wp_series *series = calloc(P, sizeof *series);
+    size_t *idx = malloc(3 * P * sizeof *idx);
+    char **titles = calloc(P, sizeof *titles), **labels = calloc(P, sizeof *labels);
+    char *ftitle = vfy_aprintf("%s: Err of the time-averaged T against CPU time",
+                               run->c->name);
+    int rc = -1;
+    size_t nseries = 0;
+    if (series && idx && titles && labels && ftitle
+        && (nseries = split_series(f, series, idx, idx + P, idx + 2 * P, titles, labels)) > 0)
+        rc = vfy_write_work_precision(run->o, run->c->name, ftitle, run->comment,
+                                      "Err = |T - T_inf| / T_inf (time-averaged T)", series,
+                                      nseries, f->cpu, f->err, f->model,
+                                      (const char *const *)labels, pred);
     for (size_t i = 0; i < f->P; i++) {
-        size_t s = 0;
-        for (; s < nseries; s++) {
-            const size_t q = idx[s][0];
-            if ((f->scheme[q] == SCHEME_JUMP) == (f->scheme[i] == SCHEME_JUMP)
-                && f->N[q] == f->N[i]
-                && (f->scheme[q] == SCHEME_JUMP
-                    || (f->scheme[q] == f->scheme[i] && f->n[q] == f->n[i])))
-                break;
-        }
-        if (s == nseries) {
-            series[s].count = 0;
-            series[s].idx = idx[s];
-            if (f->scheme[i] == SCHEME_JUMP)
-                snprintf(series[s].title, sizeof series[s].title, "jump, N = %.0f (n grows)",
-                         f->N[i]);
-            else
-                snprintf(series[s].title, sizeof series[s].title, "%s, n = %.0f, N = %.0f "
-                         "(h shrinks)", scheme_names[f->scheme[i]], f->n[i], f->N[i]);
-            nseries++;
-        }
-        idx[s][series[s].count++] = i;
-        if (f->scheme[i] == SCHEME_JUMP)
-            snprintf(labels[i], sizeof labels[i], "n=%.0f", f->n[i]);
-        else
-            snprintf(labels[i], sizeof labels[i], "h=%g", f->h[i]);
+        free(titles ? titles[i] : NULL);
+        free(labels ? labels[i] : NULL);
     }
-    snprintf(ftitle, sizeof ftitle, "%s: Err of the time-averaged T against CPU time",
-             run->c->name);
-    return vfy_write_work_precision(run->o, run->c->name, ftitle, run->comment,
-                                    "Err = |T - T_inf| / T_inf (time-averaged T)", series,
-                                    nseries, f->cpu, f->err, f->model, labels, pred);
+    free(series);
+    free(idx);
+    free(titles);
+    free(labels);
+    free(ftitle);
+    return rc;
 }
 
-/* After the rows (vfy_hook_fn): the reference, the fits, each row's parts
- * and model, the CPU models, the targets and the figure. */
-static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+/* The rows into the fit's arrays; the violations summed, the candidates and
+ * collisions by kind of row (jump, time step), the smallest n and the
+ * largest h. */
+static void split_load(const vfy_case_run *run, split_fit *f, double *violations,
+                       double cand[2], double coll[2], double *n_min, double *h_max)
 {
-    split_fit *f = calloc(1, sizeof *f);
-    split_predictions *pr = malloc(sizeof *pr);
-    sim_status status = SIM_OK;
-    if (f == NULL || pr == NULL || run->nrows > GRID_MAX) {
-        free(f);
-        free(pr);
-        snprintf(msg, msglen, run->nrows > GRID_MAX ? "%s: more than 64 rows" : "out of memory",
-                 run->c->name);
-        return run->nrows > GRID_MAX ? SIM_EINVAL : SIM_ENOMEM;
-    }
-    f->P = run->nrows;
-    double violations = 0.0;   /* NaN where a solver did not report them */
-    double cand[2] = {0, 0}, coll[2] = {0, 0}, n_min = INFINITY, h_max = 0.0;
     for (size_t i = 0; i < f->P; i++) {
         const vfy_row *row = &run->rows[i];
         const char *scheme = vfy_row_text(row, "scheme");
@@ -908,54 +1126,91 @@ static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, 
         f->T[i] = vfy_values_get(&row->values, "T");
         f->Tci[i] = vfy_values_get(&row->values, "T_ci");
         f->cpu[i] = vfy_values_get(&row->values, "cpu_s");
-        violations += vfy_values_get(&row->values, "violations");
+        *violations += vfy_values_get(&row->values, "violations");
         cand[f->scheme[i] != SCHEME_JUMP] += vfy_values_get(&row->values, "events");
         coll[f->scheme[i] != SCHEME_JUMP] += vfy_values_get(&row->values, "collisions");
-        n_min = fmin(n_min, f->n[i]);
+        *n_min = fmin(*n_min, f->n[i]);
         if (f->scheme[i] != SCHEME_JUMP)
-            h_max = fmax(h_max, f->h[i]);
+            *h_max = fmax(*h_max, f->h[i]);
     }
-    char name[200];
-    snprintf(name, sizeof name, "%s majorant violations (all rows)", run->c->name);
-    vfy_check_zero(r, name, violations);
-    if ((status = split_fits(run, f, r, msg, msglen)) == SIM_OK) {
+}
+
+/* The case values the notes name, and its texts: the summary and the
+ * second table's notes.  0, or -1 when out of memory. */
+static int split_notes(vfy_case_run *run, const split_fit *f, double T_sonine,
+                       const double cand[2], const double coll[2], double n_min, double h_max,
+                       const char *summary)
+{
+    const double H = (double)(1u << PRED_H_HALVINGS);
+    const double v[] = {f->T_inf, f->T_inf_ci, f->b, T_sonine, f->csplit[0][0],
+                        f->csplit[0][1], f->csplit[1][0], f->csplit[1][1], f->AB[0],
+                        f->AB[1], f->T_inf_ci / f->T_inf, 1e6 * f->kappa, 1e6 * f->ag[0],
+                        1e6 * f->ag[1], cand[0] / coll[0], cand[1] / coll[1], n_min, h_max,
+                        1e6 * (f->ag[0] + f->ag[1] / h_max),
+                        1e6 * (f->ag[0] + f->ag[1] * H / h_max), h_max / H,
+                        run->rows[0].solver.steady.from, run->rows[0].solver.t_end};
+    static const char *const names[] = {
+        "T_inf", "T_inf_ci", "b", "T_sonine", "c1_euler", "c2_euler", "c1_strang",
+        "c2_strang", "A", "B", "T_inf_rel_ci", "kappa_us", "a_us", "g_us",
+        "cand_per_coll_jump", "cand_per_coll_ts", "n_min", "h_max", "per_h_max_us",
+        "per_h_min_us", "h_min", "steady_from", "t_end"};
+    for (size_t k = 0; k < sizeof names / sizeof *names; k++)
+        vfy_values_set(&run->values, names[k], v[k]);
+    if (vfy_run_set_text(run, "summary", summary) != 0)
+        return -1;
+    run->second_suffix = "-targets";
+    run->second_title = VFY_COST_TARGETS_TITLE;
+    free(run->second_notes);
+    run->second_notes = vfy_expand_alloc(SPLIT_TARGET_NOTES, run, NULL);
+    return run->second_notes != NULL ? 0 : -1;
+}
+
+/* After the rows (vfy_hook_fn): the reference, the fits, each row's parts
+ * and model, the CPU models, the targets and the figure. */
+static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    split_fit f;
+    split_predictions pr = {0};
+    vfy_wp_prediction pred = {0};
+    vfy_text summary = {0};
+    if (split_fit_alloc(&f, run->nrows) != 0) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    double violations = 0.0;   /* NaN where a solver did not report them */
+    double cand[2] = {0, 0}, coll[2] = {0, 0}, n_min = INFINITY, h_max = 0.0;
+    split_load(run, &f, &violations, cand, coll, &n_min, &h_max);
+    char *name = vfy_aprintf("%s majorant violations (all rows)", run->c->name);
+    vfy_check_zero(r, name ? name : run->c->name, violations);
+    free(name);
+    sim_status status = split_fits(run, &f, r, msg, msglen);
+    if (status == SIM_OK) {
         const double T_sonine = vfy_reference_value("T_steady_sonine", &run->rows[0].scene);
-        snprintf(name, sizeof name, "%s T_inf (n -> infinity) vs first-Sonine steady T",
-                 run->c->name);
-        vfy_check_absolute(r, name, f->T_inf, T_sonine,
-                           f->T_inf_ci + SONINE_MODEL_RTOL * T_sonine);
-        split_parts(run, f, r);
-        split_predict(f, n_min, h_max, pr);
-        char summary[900];
-        vfy_wp_prediction pred = {0};
-        split_targets(run, f, pr, &pred, summary, sizeof summary);
-        if (run->o->progress)
-            fprintf(run->o->progress, "   %s: T_inf = %.6f ± %.6f (Sonine %.6f); cheapest per "
-                    "target: %s\n", run->c->name, f->T_inf, f->T_inf_ci, T_sonine, summary);
-        const double H = (double)(1u << PRED_H_HALVINGS);
-        const double v[] = {f->T_inf, f->T_inf_ci, f->b, T_sonine, f->csplit[0][0],
-                            f->csplit[0][1], f->csplit[1][0], f->csplit[1][1], f->AB[0],
-                            f->AB[1], f->T_inf_ci / f->T_inf, 1e6 * f->kappa, 1e6 * f->ag[0],
-                            1e6 * f->ag[1], cand[0] / coll[0], cand[1] / coll[1], n_min, h_max,
-                            1e6 * (f->ag[0] + f->ag[1] / h_max),
-                            1e6 * (f->ag[0] + f->ag[1] * H / h_max), h_max / H,
-                            run->rows[0].solver.steady.from, run->rows[0].solver.t_end};
-        static const char *const names[] = {
-            "T_inf", "T_inf_ci", "b", "T_sonine", "c1_euler", "c2_euler", "c1_strang",
-            "c2_strang", "A", "B", "T_inf_rel_ci", "kappa_us", "a_us", "g_us",
-            "cand_per_coll_jump", "cand_per_coll_ts", "n_min", "h_max", "per_h_max_us",
-            "per_h_min_us", "h_min", "steady_from", "t_end"};
-        for (size_t k = 0; k < sizeof names / sizeof *names; k++)
-            vfy_values_set(&run->values, names[k], v[k]);
-        vfy_run_set_text(run, "summary", summary);
-        run->second_suffix = "-targets";
-        run->second_title = VFY_COST_TARGETS_TITLE;
-        vfy_expand(run->second_notes, sizeof run->second_notes, SPLIT_TARGET_NOTES, run, NULL);
-        if (split_figure(run, f, &pred) != 0)
+        name = vfy_aprintf("%s T_inf (n -> infinity) vs first-Sonine steady T", run->c->name);
+        vfy_check_absolute(r, name ? name : run->c->name, f.T_inf, T_sonine,
+                           f.T_inf_ci + VFY_TOL_SONINE_MODEL_RTOL * T_sonine);
+        free(name);
+        if (split_parts(run, &f, r) != 0 || split_predict(&f, n_min, h_max, &pr) != 0)
+            status = SIM_ENOMEM;
+        if (status == SIM_OK) {
+            split_targets(run, &f, &pr, &pred, &summary);
+            if (run->o->progress)
+                fprintf(run->o->progress, "   %s: T_inf = %.6f ± %.6f (Sonine %.6f); cheapest "
+                        "per target: %s\n", run->c->name, f.T_inf, f.T_inf_ci, T_sonine,
+                        vfy_text_str(&summary));
+            if (summary.failed || split_notes(run, &f, T_sonine, cand, coll, n_min, h_max,
+                                              vfy_text_str(&summary)) != 0)
+                status = SIM_ENOMEM;
+        }
+        if (status == SIM_ENOMEM)
+            snprintf(msg, msglen, "out of memory");
+        else if (split_figure(run, &f, &pred) != 0)
             status = vfy_io_error(run->c->name, msg, msglen);
     }
-    free(f);
-    free(pr);
+    vfy_wp_prediction_free(&pred);
+    vfy_text_free(&summary);
+    split_predictions_free(&pr);
+    split_fit_free(&f);
     return status;
 }
 

@@ -36,7 +36,7 @@ int vfy_cost_lsq2(size_t count, const double *x1, const double *x2, const double
 /* The statistical part scales as 1/sqrt(N) (docs/theory.md §1.3: c = lambda_p sqrt(Var/N)):
  * for `count` particle numbers, conf1[i] at N1 ensembles and conf2[i] at
  * N2 > N1.  The pooled ratio R = exp(mean_i ln(conf1[i]/conf2[i])) /
- * sqrt(N2/N1) must lie within 1 ± ZMAX s, where s^2 = ((2 + kurtosis)/4)
+ * sqrt(N2/N1) must lie within 1 ± zmax s, where s^2 = ((2 + kurtosis)/4)
  * (1/N1 - 1/N2)/count is the variance of ln of the ratio of two nested
  * standard-deviation estimates (nested: the N2 run contains the N1 run's
  * ensembles, as the built-in engine's streams make it), or with 1/N1 +
@@ -53,9 +53,10 @@ vfy_verdict vfy_cost_check_model(vfy_report *r, const char *name, const double *
                                  const double *model, size_t count, double factor,
                                  double *worst);
 
-/* A chi^2 with `dof` degrees of freedom below its 1 - p quantile (p = 0.001):
- * a fitted model (the O(1/n) bias, the splitting error) describes the rows
- * within their standard errors.  Skipped (with the reason) when dof < 1. */
+/* A chi^2 with `dof` degrees of freedom below its 1 - p quantile (p =
+ * VFY_TOL_COST_CHI2_P = 0.001, tolerances.h): a fitted model (the O(1/n)
+ * bias, the splitting error) describes the rows within their standard
+ * errors.  Skipped (with the reason) when dof < 1. */
 vfy_verdict vfy_cost_check_chi2(vfy_report *r, const char *name, double chi2, size_t dof);
 
 #endif

@@ -41,7 +41,7 @@ static const vfy_metric grw_metrics[] = {
 static const vfy_check_spec grw_checks[] = {
     {.name = "{case} n={n} Emax vs paper {paper}", .rule = vfy_rule_relative, .value = "Emax",
      .expected = "Emax_paper", .tol = VFY_TOL_GRW_PAPER_RTOL,
-     .guard = {vfy_guard_at_most, "n", NULL, 4096,
+     .guard = {vfy_guard_at_most, "n", NULL, VFY_TOL_GRW_PAPER_MAX_N,
                "n > 4096: the paper's own statistical error is comparable to its Emax"}},
     {.name = "{case} n={n} CF", .rule = vfy_rule_range, .value = "CF",
      .lo = VFY_TOL_GRW_CF_LO, .hi = VFY_TOL_GRW_CF_HI,
@@ -61,14 +61,14 @@ static const char grw_columns[] =
 #define GRW_TABLE(LABEL, PAPER, ...)                                            \
     {.paper = LABEL,                                                                  \
      __VA_ARGS__,                                                                    \
-     .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096 16384"}},   \
-     .quick_rows = {.keys = {"particles.n"},                                          \
-                    .values = {"64 256 1024"},                                        \
-                    .sets = "particles.ensembles=2000"},                              \
-     .needs = grw_needs, .needs_why = VFY_NEEDS_MAXWELL, .paper_columns = PAPER,      \
-     .metrics = grw_metrics, .checks = grw_checks, .columns = grw_columns,           \
-     .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T_raw", .refs = {"T_exact"},  \
-                  .x_from = 2.0, .panel_per_row = 1}},                                \
+     .paper_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024 4096 16384", NULL})},\
+     .quick_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL}),            \
+                    .sets = "particles.ensembles=2000"},                               \
+     .needs = grw_needs, .needs_why = VFY_NEEDS_MAXWELL, .paper_columns = PAPER,       \
+     .metrics = grw_metrics, .checks = grw_checks, .columns = grw_columns,             \
+     .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .quantity = "T_raw",           \
+                             .refs = VFY_LIST("T_exact"), .x_from = 2.0,               \
+                             .panel_per_row = 1}),                                     \
      .title = "{case}: paper A {paper} reproduced ({size} sizes)", .notes = grw_notes}
 static const char grw_notes[] =
     "{comment}.\n\nEmax = max over the {outputs} output times of |T(t) - eta1(t)|/T(t), with "
@@ -186,13 +186,13 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
 
 const vfy_case_desc vfy_grw_ex5 = {
     .must_fail = "heating.strength=1.05 collisions.restitution=0.95 collisions.constant=1.05",
-    .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024 4096"}},
-    .quick_rows = {.keys = {"particles.n"},
-                   .values = {"64 256 1024"},
+    .paper_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024 4096", NULL})},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL}),
                    .sets = "particles.ensembles=300"},
     .metrics = ex5_metrics, .checks = ex5_checks, .columns = ex5_columns,
-    .figures = {{.kind = VFY_FIGURE_CURVES, .quantity = "T",
-                 .refs = {"T_maxwell_closure", "T_sonine_closure"}, .extrapolated = 1}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .quantity = "T",
+                            .refs = VFY_LIST("T_maxwell_closure", "T_sonine_closure"),
+                            .extrapolated = 1}),
     .after_rows = ex5_extrapolate,
     .title = "{case}: paper A Ex 5, heated hard spheres ({size} sizes)",
     .notes = "{comment}.\n\nNo exact solution exists. T is the centred temperature; dev_* = "
@@ -591,8 +591,8 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
 #define TAILS_CASE(EX, NEEDS, WHY, CHECKS, ...)                                        \
     {.paper = EX, .needs = NEEDS, .needs_why = WHY,                                     \
      __VA_ARGS__,                                                                      \
-     .paper_rows = {.keys = {"particles.n"}, .values = {"10000000"}},                   \
-     .quick_rows = {.keys = {"particles.n"}, .values = {"25000"},                       \
+     .paper_rows = {.keys = VFY_KEYS({"particles.n", "10000000", NULL})},                   \
+     .quick_rows = {.keys = VFY_KEYS({"particles.n", "25000", NULL}),                       \
                     .sets = "particles.ensembles=16"},                                  \
      .metrics = tails_metrics, .checks = CHECKS, .columns = tails_columns,              \
      .after_rows = tails_figures,                                                       \

@@ -127,13 +127,13 @@ void vfy_hard_summarize(const sim_ensemble_result *res, double mass, vfy_hard_su
 double vfy_hard_momentum_bound(const vfy_hard_summary *s, double updates)
 {
     const double u = 0.5 * DBL_EPSILON;
-    return 6.0 * u * s->speed * (sqrt(2.0 * updates) / (double)s->n + 2.0);
+    return VFY_TOL_HARD_ROUNDING_SIGMAS * u * s->speed * (sqrt(2.0 * updates) / (double)s->n + 2.0);
 }
 
 double vfy_hard_energy_bound(const vfy_hard_summary *s, double collisions)
 {
     const double u = 0.5 * DBL_EPSILON, n = (double)s->n;
-    return 6.0 * u * (8.0 * sqrt(collisions) / n + 2.0 * sqrt(n));
+    return VFY_TOL_HARD_ROUNDING_SIGMAS * u * (8.0 * sqrt(collisions) / n + 2.0 * sqrt(n));
 }
 
 /* "<label> <what>" in buf (a check's name; checks.h keeps 95 characters). */
@@ -200,7 +200,7 @@ vfy_verdict vfy_hard_check_cooling_range(vfy_report *r, const char *label,
 {
     char name[128];
     const int ok = isfinite(s->T_min) && isfinite(s->T_max) && s->T_min > 0.0
-                   && s->T_max <= s->T_first * (1.0 + 1e-12);
+                   && s->T_max <= s->T_first * (1.0 + VFY_TOL_HARD_COOLING_RTOL);
     return vfy_check_true(r, check_name(name, sizeof name, label, "T in its physical range"),
                           ok, "T between %.6g and %.6g, T(0) = %.6g (allowed (0, T(0)]: no "
                           "heating)", s->T_min, s->T_max, s->T_first);
@@ -780,10 +780,9 @@ static const char tails_columns[] = WHITE_COLUMNS_HEAD
 const vfy_case_desc vfy_hard_dissipation = {
     .must_fail = "heating.strength=1.05",
     .power_keys = "collisions.restitution=0.9",
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}},
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}, .sets = STEADY_QUICK_SETS},
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
+                   .sets = STEADY_QUICK_SETS},
     .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .derive = dissipation_beta,
     .adjust = white_require, .values = white_values, .metrics = dissipation_metrics,
     .checks = dissipation_checks, .columns = dissipation_columns,
@@ -803,8 +802,8 @@ static sim_status tails_c_max(vfy_case_run *run, vfy_report *r, char *msg, size_
 }
 const vfy_case_desc vfy_hard_tails = {
     .must_fail = "heating.strength=1.05",
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"}, .values = {"0.1"}},
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"}, .values = {"0.1"},
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"})},
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"}),
                    .sets = "particles.n=2000;particles.ensembles=16;steady.pairs=4000"},
     .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .adjust = white_require,
     .values = white_values, .metrics = tails_metrics, .checks = tails_checks,
@@ -871,10 +870,9 @@ static const char nongaussian_columns[] =
 const vfy_case_desc vfy_hard_nongaussian = {
     .must_fail = "heating.strength=1.05",
     .power_keys = "collisions.restitution=0.9",
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}},
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},
-                   .values = {"0.05 0.1"}, .sets = STEADY_QUICK_SETS},
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
+                   .sets = STEADY_QUICK_SETS},
     .label = WHITE_LABEL,
     .row_progress = WHITE_LABEL ": a2 = {a2:%.5f} (C.76 {a2_C76:%.5f}), f/phi(c < {delta:%g}) "
                                 "= {f_over_phi_0:%.3f}, max |V| {max_V:%.3g}",

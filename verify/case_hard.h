@@ -54,7 +54,8 @@ void vfy_hard_summarize(const sim_ensemble_result *res, double mass, vfy_hard_su
  * so after U updates |P - P(0)| has standard deviation <= u s sqrt(2U); the
  * observation's own sum adds a few u s.  Bound:
  *     6 u s (sqrt(2 U) / n + 2),
- * six standard deviations, with s = summary->speed. */
+ * six standard deviations (VFY_TOL_HARD_ROUNDING_SIGMAS, tolerances.h), with
+ * s = summary->speed. */
 double vfy_hard_momentum_bound(const vfy_hard_summary *s, double updates);
 
 /* Round-off bound on |T(t)/T(0) - 1| of the ensemble mean for a system whose
@@ -66,7 +67,7 @@ double vfy_hard_momentum_bound(const vfy_hard_summary *s, double updates);
  * 6 T/m, relative to the total 3 n T/m that is 8 u/n per collision, a random
  * walk of 8 u sqrt(C)/n; the observation's sum of n positive terms has a
  * relative error of standard deviation about u sqrt(n), twice (T(0), T(t)).
- * Bound: 6 u (8 sqrt(C)/n + 2 sqrt(n)). */
+ * Bound: 6 u (8 sqrt(C)/n + 2 sqrt(n)), six standard deviations as above. */
 double vfy_hard_energy_bound(const vfy_hard_summary *s, double collisions);
 
 /* "<label> no NaN or infinity": every inspected value finite. */

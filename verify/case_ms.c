@@ -236,19 +236,20 @@ static const char a2_columns[] =
     "temperature (the thermostat strength is set so that it is close to T0 = 1). "        \
     "ns_per_candidate = CPU time per candidate collision, everything included. Checks: "  \
     CHECKS "; " MS_T_NOTE " Total wall time {wall_total:%.1f} s."
-#define A2_SERIES {"a2", "(mu2-mu2_0)/mu2_1=mu2_ratio", "(mu4-mu4_0)/mu4_1=mu4_ratio"}
+#define A2_SERIES VFY_LIST("a2", "(mu2-mu2_0)/mu2_1=mu2_ratio", "(mu4-mu4_0)/mu4_1=mu4_ratio")
 #define A2_FIGURE(CURVE1, CURVE2, WHAT)                                                 \
-    {.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = A2_SERIES, .refs = {CURVE1, CURVE2}, \
+    {.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = A2_SERIES,                      \
+     .refs = VFY_LIST(CURVE1, CURVE2),                                                  \
      .x_lo = 0.2, .x_hi = 1.0, .title = "{case}: a2 against alpha, " WHAT, .xlabel = "alpha", \
      .ylabel = "a2"}
 #define MS_A2(STEM, QUICK_ALPHA)                                                        \
     .scene = STEM, .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength, \
     .adjust = ms_require, .values = a2_values, .columns = a2_columns,                   \
     .after_rows = ms_sizes,                                                             \
-    .paper_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},              \
-                   .values = {"0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"}},                  \
-    .quick_rows = {.keys = {"collisions.restitution"}, .names = {"alpha"},              \
-                   .values = {QUICK_ALPHA}, .sets = MS_QUICK_SETS}
+    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution",                          \
+                                     "0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0", "alpha"})},  \
+    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", QUICK_ALPHA, "alpha"}),  \
+                   .sets = MS_QUICK_SETS}
 
 const vfy_case_desc vfy_ms_white_noise = {
     .must_fail = "collisions.restitution=0.95 heating.strength=1.05",
@@ -256,8 +257,8 @@ const vfy_case_desc vfy_ms_white_noise = {
     .title = "{case}: paper C Figure 1, a2 against alpha, white noise (stochastic thermostat) "
              "({size} sizes)",
     .notes = A2_NOTES("|a2 - C10| <= 0.003 at every alpha < 1"),
-    .figures = {A2_FIGURE("a2 (C.10)=a2_C10", "a2 (C.32)=a2_C32",
-                          "white noise (stochastic thermostat) (paper C Figure 1)")}};
+    .figures = VFY_FIGURES(A2_FIGURE("a2 (C.10)=a2_C10", "a2 (C.32)=a2_C32",
+                          "white noise (stochastic thermostat) (paper C Figure 1)"))};
 
 const vfy_case_desc vfy_ms_gaussian = {
     .must_fail = "collisions.restitution=0.5",
@@ -266,11 +267,11 @@ const vfy_case_desc vfy_ms_gaussian = {
              "variables) ({size} sizes)",
     .notes = A2_NOTES("|a2 - C40| <= 0.004 at every alpha < 1; |a3| <= 0.01 for alpha >= 0.6 "
                       "and >= 0.03 for alpha <= 0.3 (Figure 6)"),
-    .figures = {A2_FIGURE("a2 (C.5)=a2_C5", "a2 (C.40)=a2_C40",
+    .figures = VFY_FIGURES(A2_FIGURE("a2 (C.5)=a2_C5", "a2 (C.40)=a2_C40",
                           "Gaussian thermostat (HCS in scaled variables) (paper C Figure 4)"),
-                {.kind = VFY_FIGURE_POINTS, .suffix = "-a3", .x = "alpha", .series = {"a3"},
+                {.kind = VFY_FIGURE_POINTS, .suffix = "-a3", .x = "alpha", .series = VFY_LIST("a3"),
                  .title = "{case}: a3 against alpha, Gaussian thermostat (paper C Figure 6)",
-                 .xlabel = "alpha", .ylabel = "a3"}}};
+                 .xlabel = "alpha", .ylabel = "a3"})};
 
 const vfy_case_desc vfy_ms_non_gaussian = {
     .must_fail = "collisions.restitution=0.95 heating.strength=1.05",
@@ -278,8 +279,8 @@ const vfy_case_desc vfy_ms_non_gaussian = {
     .title = "{case}: paper C Figure 8, a2 against alpha, non-Gaussian thermostat ({size} "
              "sizes)",
     .notes = A2_NOTES("a2 < 0 (with its ci) and within 25% of C76 for alpha < 1"),
-    .figures = {A2_FIGURE("a2 (C.50)=a2_C50", "a2 (C.76)=a2_C76",
-                          "non-Gaussian thermostat (paper C Figure 8)")}};
+    .figures = VFY_FIGURES(A2_FIGURE("a2 (C.50)=a2_C50", "a2 (C.76)=a2_C76",
+                          "non-Gaussian thermostat (paper C Figure 8)"))};
 
 /* ------------------------------------------------------------ Table 1 */
 
@@ -419,7 +420,7 @@ static void ms_tail_analyse(const vfy_row *row, double *c, double *f, double *fc
         G[k] = e * f[k];
         Gc[k] = e * fc[k];
         Gphi[k] = e * pow(M_PI, -1.5) * exp(-c[k] * c[k]);
-        if (c[k] >= 3.0 && f[k] > 0.0 && fc[k] < 0.5 * f[k]) {
+        if (c[k] >= VFY_TOL_MS_TAIL_C && f[k] > 0.0 && fc[k] < VFY_TOL_MS_TAIL_REL_CI * f[k]) {
             const double w = 1.0 / (Gc[k] * Gc[k]);
             K_num += w * G[k];
             K_den += w;
@@ -439,10 +440,11 @@ static void ms_tail_analyse(const vfy_row *row, double *c, double *f, double *fc
     const size_t k_lo = (size_t)floor(4.0 / (s->steady.c_max / (double)bins) - 0.5);
     const double t4 = (4.0 - c[k_lo]) / (c[k_lo + 1] - c[k_lo]);
     t->ratio4 = exp((1.0 - t4) * log(r_lo) + t4 * log(r_hi));
-    t->ratio4_ok = r_lo_ci < 0.5 * r_lo && isfinite(t->ratio4);
+    t->ratio4_ok = r_lo_ci < VFY_TOL_MS_TAIL_REL_CI * r_lo && isfinite(t->ratio4);
     double sd2, K2, K3;
     vfy_fit_tail(c, f, fc, bins, b, 2.0, SIM_LAMBDA_P, &t->A_fit2, &sd2, &K2);
-    t->used3 = vfy_fit_tail(c, f, fc, bins, b, 3.0, SIM_LAMBDA_P, &t->A_fit3, &t->A_sd3, &K3);
+    t->used3 = vfy_fit_tail(c, f, fc, bins, b, VFY_TOL_MS_TAIL_C, SIM_LAMBDA_P, &t->A_fit3,
+                            &t->A_sd3, &K3);
 }
 
 /* The tails need a histogram that reaches past c = 4 (ms_require first). */

@@ -40,6 +40,7 @@
 #include "metrics.h"
 #include "references.h"
 #include "steady.h"
+#include "tolerances.h"
 
 /* Quick sizes (CI): n = 50000, N = 16, relaxation to t = 6 tau (7 collisions
  * per particle), then 21 samples half a tau apart: kappa' to about 6%.  With
@@ -101,15 +102,15 @@ static double msg_half_widths_below(const vfy_case_run *run, const vfy_row *row,
 }
 
 /* How many half-widths more than required kappa' lies below the first
- * Sonine value: below_sonine - 5 at paper sizes ("dramatically"), - 1 at
- * quick sizes, where kappa' is known to about 8%: one half-width (Student's
- * t at 0.999, two-sided) makes "below" significant at 0.9995.  The quick
- * margin was 2, which a right solver missed in 2 of the first 4 --seeds runs
- * (1.4 and 1.7 half-widths below; docs/verdicts.md). */
+ * Sonine value: below_sonine less VFY_TOL_MSG_BELOW_SONINE_PAPER (5,
+ * "dramatically") or, at quick sizes, VFY_TOL_MSG_BELOW_SONINE_QUICK (1;
+ * tolerances.h says why). */
 static double msg_below_margin(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)m;
-    return vfy_values_get(&row->values, "below_sonine") - (run->o->size == VFY_QUICK ? 1.0 : 5.0);
+    return vfy_values_get(&row->values, "below_sonine")
+           - (run->o->size == VFY_QUICK ? VFY_TOL_MSG_BELOW_SONINE_QUICK
+                                        : VFY_TOL_MSG_BELOW_SONINE_PAPER);
 }
 
 /* |a - b| over the quadrature sum of their half-widths a_ci_t, b_ci_t. */
@@ -197,7 +198,8 @@ static const vfy_check_spec kappa_checks[] = {
      .guard = {vfy_guard_only_at_most, "alpha", NULL, 0.5 + 1e-12, NULL}},
     /* ... and "does a good job" above it: within 5% (plus the half-width) */
     {.name = MSG_NAME "kappa' within 5% of first Sonine", .rule = vfy_rule_absolute,
-     .value = "kappa", .expected = "kappa_prime_sonine", .rtol = 0.05, .plus = "kappa_ci_t",
+     .value = "kappa", .expected = "kappa_prime_sonine",
+     .rtol = VFY_TOL_MSG_SONINE_RTOL, .plus = "kappa_ci_t",
      .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.7 - 1e-12, NULL}},
     {.name = NULL}};
 
@@ -211,19 +213,19 @@ static const vfy_check_spec sonine_checks[] = {
      * which paper D's eps* = 0.025 stands for; eps* = 0.05 probes the departure
      * from it, where they need not agree (reported) */
     {.name = MSG_NAME "b'_1 estimators agree", .rule = vfy_rule_range, .value = "z1",
-     .lo = 0.0, .hi = 1.0, .guard = LINEAR_ONLY("z1")},
+     .lo = 0.0, .hi = VFY_TOL_MSG_ESTIMATORS_Z, .guard = LINEAR_ONLY("z1")},
     {.name = MSG_NAME "b'_2 estimators agree", .rule = vfy_rule_range, .value = "z2",
-     .lo = 0.0, .hi = 1.0, .guard = LINEAR_ONLY("z2")},
+     .lo = 0.0, .hi = VFY_TOL_MSG_ESTIMATORS_Z, .guard = LINEAR_ONLY("z2")},
     {.name = MSG_NAME "b'_3 estimators agree", .rule = vfy_rule_range, .value = "z3",
-     .lo = 0.0, .hi = 1.0, .guard = LINEAR_ONLY("z3")},
+     .lo = 0.0, .hi = VFY_TOL_MSG_ESTIMATORS_Z, .guard = LINEAR_ONLY("z3")},
     /* D Fig. 4: b'_2, b'_3 "practically negligible" for alpha >= 0.7 (within
      * their intervals) ... */
     {.name = MSG_NAME "|b'_2|, |b'_3| <= 0.15 b'_1 (- half-width)", .rule = vfy_rule_range,
-     .value = "higher_low", .lo = -INFINITY, .hi = 0.15,
+     .value = "higher_low", .lo = -INFINITY, .hi = VFY_TOL_MSG_HIGHER_NEGLIGIBLE,
      .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.7 - 1e-12, NULL}},
     /* ... "comparable to the first" at strong dissipation (beyond them) */
     {.name = MSG_NAME "max(|b'_2|, |b'_3|) >= 0.3 b'_1 (- half-width)", .rule = vfy_rule_range,
-     .value = "higher_low", .lo = 0.3, .hi = INFINITY,
+     .value = "higher_low", .lo = VFY_TOL_MSG_HIGHER_COMPARABLE, .hi = INFINITY,
      .guard = {vfy_guard_only_at_most, "alpha", NULL, 0.3 + 1e-12, NULL}},
     {.name = NULL}};
 
@@ -232,7 +234,8 @@ static const vfy_check_spec distribution_checks[] = {
     /* D §4: 87% (alpha = 1) and 66% (alpha = 0.3) of the heat flux from
      * c_x^2 <= 6, printed to the percent: half a percent of reading */
     {.name = MSG_NAME "heat flux from c_x^2 <= 6 vs paper D ({inner_paper:%.2f})",
-     .rule = vfy_rule_absolute, .value = "inner", .expected = "inner_paper", .tol = 0.005,
+     .rule = vfy_rule_absolute, .value = "inner", .expected = "inner_paper",
+     .tol = VFY_TOL_MSG_INNER_READ,
      .plus = "inner_ci_t"},
     {.name = NULL}};
 
@@ -282,8 +285,6 @@ static const struct {
 static sim_status msg_linear(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
     (void)r;
-    (void)msg;
-    (void)msglen;
     static const char *const cols[] = {"alpha", "quantity", "eps_0.025", "ci_0.025", "eps_0.05",
                                        "ci_0.05", "linear", "linear_ci", "exact"};
     static const double alphas[] = {1.0, 0.3};
@@ -323,13 +324,16 @@ static sim_status msg_linear(vfy_case_run *run, vfy_report *r, char *msg, size_t
     run->second_suffix = "-linear";
     run->second_title = "The linear-response limit: eps* = 0.025, 0.05 and extrapolated in "
                         "eps*^2";
-    snprintf(run->second_notes, sizeof run->second_notes,
+    if (vfy_run_second_notes(run, "%s",
              "kappa = kappa'/kappa0, b1..b3 = b'_k (D Eq. 3.10), each per unit of the case's "
              "force with its Student half-width; linear = the eps* -> 0 limit through both "
              "strengths in eps*^2 (they are even in eps*); exact = the linearised elastic "
              "Boltzmann equation solved by a converged Sonine expansion (gdsmc sonine: "
              "*_elastic_exact). a2, even in eps* too, shows the departure from linear response "
-             "(its limit is the HCS a2: 0 at alpha = 1).");
+             "(its limit is the HCS a2: 0 at alpha = 1).") != 0) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
     return SIM_OK;
 }
 
@@ -441,10 +445,60 @@ static double laguerre_half(int k, double x)
  * particles (the case keeps every bin in its steady averages). */
 #define MSG_PHI_CX_MAX 3.0
 
-/* D Figs. 5-7 for each row: phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x at the bin
+/* D Figs. 5-6 for one row: phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x at the bin
  * centres beside its truncations phi_K = sum_{k <= K} b'_k L_k^{(1/2)}(c_x^2)
- * (the row's b'_k); beta_1/b'_1 at the bins' upper edges beside the first
- * Sonine's (8/(3 sqrt(pi))) int_0^c u^2 (3/2 - u^2)^2 e^{-u^2} du. */
+ * (the row's b'_k), in x, phi, phic and tr (3 bins) of `bins` each; the
+ * row's beta_1/b'_1 at the bins' upper edges into beta (their squares into
+ * bx). */
+static sim_status msg_phi_figure(const vfy_case_run *run, const vfy_row *row, size_t bins,
+                                 double *x, double *phi, double *phic, double *tr, double *bx,
+                                 double *beta, char *msg, size_t msglen)
+{
+    const sim_scene *s = &row->solver;
+    const long g1 = sim_steady_find(s, "g1_0"), b0 = sim_steady_find(s, "beta1_0");
+    const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength;
+    const double b1 = vfy_values_get(&row->values, "b1xc");
+    double b[3];
+    for (int k = 0; k < 3; k++) {
+        static const char *const bn[] = {"b1c", "b2c", "b3c"};
+        b[k] = vfy_values_get(&row->values, bn[k]);
+    }
+    for (size_t k = 0; k < bins; k++) {
+        const double c = sim_steady_bin_centre(s, k), c2 = c * c;
+        x[k] = c2;
+        phi[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
+        phic[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
+        double sum = 0.0;
+        for (int K = 0; K < 3; K++) {
+            sum += b[K] * laguerre_half(K + 1, c2);
+            tr[(size_t)K * bins + k] = sum;
+        }
+        const double edge = sim_steady_bin_lower(s, k + 1);
+        bx[k] = edge * edge;
+        beta[k] = f * row->res.steady_mean[(size_t)b0 + k] / b1;
+    }
+    char name[160], title[200];
+    snprintf(name, sizeof name, "%s-phi-%.1f", run->c->name,
+             vfy_values_get(&row->values, "alpha"));
+    snprintf(title, sizeof title, "%s: phi(c_x^2) and its truncations, alpha = %.1f "
+             "(paper D Figs. 5-6)", run->c->name, vfy_values_get(&row->values, "alpha"));
+    const char *phi_series[] = {"phi (DSMC)"};
+    const char *curves[] = {"phi_1", "phi_2", "phi_3"};
+    const double *ys[] = {phi}, *cs[] = {phic}, *yf[] = {tr, tr + bins, tr + 2 * bins};
+    size_t shown = 0;
+    while (shown < bins && sim_steady_bin_centre(s, shown) <= MSG_PHI_CX_MAX)
+        shown++;
+    const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
+                            .ylabel = "phi", .npoints = shown, .x = x, .nseries = 1,
+                            .series = phi_series, .y = ys, .ci = cs, .nfine = shown,
+                            .xfine = x, .ncurves = 3, .curves = curves, .yfine = yf,
+                            .comment = run->comment};
+    return vfy_write_points(run->o, &fig) != 0 ? vfy_io_error(name, msg, msglen) : SIM_OK;
+}
+
+/* D Figs. 5-7 for each row (msg_phi_figure); beta_1/b'_1 of every row in one
+ * figure beside the first Sonine's (8/(3 sqrt(pi))) int_0^c u^2 (3/2 -
+ * u^2)^2 e^{-u^2} du. */
 static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char *msg,
                                          size_t msglen)
 {
@@ -452,69 +506,33 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
     sim_status status = msg_sizes(run);
     const size_t bins = run->rows[0].solver.steady.bins, rows = run->nrows;
     double *buf = malloc((7 * bins + rows * bins) * sizeof *buf);
-    if (buf == NULL || status != SIM_OK) {
+    const double **betas = calloc(2 * rows, sizeof *betas);   /* then their error bars */
+    char **labels = calloc(rows, sizeof *labels);
+    if (buf == NULL || betas == NULL || labels == NULL || status != SIM_OK) {
         free(buf);
+        free(betas);
+        free(labels);
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
     double *x = buf, *phi = x + bins, *phic = phi + bins, *tr = phic + bins;  /* tr: 3 bins */
     double *bx = buf + 6 * bins, *beta = bx + bins;   /* beta: rows x bins */
-    const double *betas[8], *betacs[8];
-    char labels[8][48];
-    const char *series[8];
-    for (size_t i = 0; i < rows && i < 8 && status == SIM_OK; i++) {
+    const double **betacs = betas + rows;
+    for (size_t i = 0; i < rows && status == SIM_OK; i++) {
         const vfy_row *row = &run->rows[i];
-        const sim_scene *s = &row->solver;
-        if (s->steady.bins != bins) {
+        if (row->solver.steady.bins != bins) {
             snprintf(msg, msglen, "%s: the rows differ in steady.bins", run->c->name);
             status = SIM_EINVAL;
             break;
         }
-        const long g1 = sim_steady_find(s, "g1_0"), b0 = sim_steady_find(s, "beta1_0");
-        const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength;
-        const double b1 = vfy_values_get(&row->values, "b1xc");
-        double b[3];
-        for (int k = 0; k < 3; k++) {
-            static const char *const bn[] = {"b1c", "b2c", "b3c"};
-            b[k] = vfy_values_get(&row->values, bn[k]);
+        status = msg_phi_figure(run, row, bins, x, phi, phic, tr, bx, beta + i * bins, msg,
+                                msglen);
+        labels[i] = vfy_aprintf("alpha = %.1f", vfy_values_get(&row->values, "alpha"));
+        if (status == SIM_OK && labels[i] == NULL) {
+            snprintf(msg, msglen, "out of memory");
+            status = SIM_ENOMEM;
         }
-        for (size_t k = 0; k < bins; k++) {
-            const double c = sim_steady_bin_centre(s, k), c2 = c * c;
-            x[k] = c2;
-            phi[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
-            phic[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
-            double sum = 0.0;
-            for (int K = 0; K < 3; K++) {
-                sum += b[K] * laguerre_half(K + 1, c2);
-                tr[(size_t)K * bins + k] = sum;
-            }
-            const double edge = sim_steady_bin_lower(s, k + 1);
-            bx[k] = edge * edge;
-            beta[i * bins + k] = f * row->res.steady_mean[(size_t)b0 + k] / b1;
-        }
-        char name[160], title[200];
-        snprintf(name, sizeof name, "%s-phi-%.1f", run->c->name,
-                 vfy_values_get(&row->values, "alpha"));
-        snprintf(title, sizeof title, "%s: phi(c_x^2) and its truncations, alpha = %.1f "
-                 "(paper D Figs. 5-6)", run->c->name, vfy_values_get(&row->values, "alpha"));
-        const char *phi_series[] = {"phi (DSMC)"};
-        const char *curves[] = {"phi_1", "phi_2", "phi_3"};
-        const double *ys[] = {phi}, *cs[] = {phic}, *yf[] = {tr, tr + bins, tr + 2 * bins};
-        size_t shown = 0;
-        while (shown < bins && sim_steady_bin_centre(s, shown) <= MSG_PHI_CX_MAX)
-            shown++;
-        const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
-                                .ylabel = "phi", .npoints = shown, .x = x, .nseries = 1,
-                                .series = phi_series, .y = ys, .ci = cs, .nfine = shown,
-                                .xfine = x, .ncurves = 3, .curves = curves, .yfine = yf,
-                                .comment = run->comment};
-        if (vfy_write_points(run->o, &fig) != 0)
-            status = vfy_io_error(name, msg, msglen);
-        snprintf(labels[i], sizeof labels[i], "alpha = %.1f",
-                 vfy_values_get(&row->values, "alpha"));
-        series[i] = labels[i];
         betas[i] = beta + i * bins;
-        betacs[i] = NULL;
     }
     if (status == SIM_OK) {
         /* the first Sonine's beta_1/b'_1 at the same edges (midpoint rule, 64 steps a
@@ -532,7 +550,7 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
         double *zero = phic;   /* beta_1's error bars: none drawn (phic's storage) */
         for (size_t k = 0; k < bins; k++)
             zero[k] = 0.0;
-        for (size_t i = 0; i < rows && i < 8; i++)
+        for (size_t i = 0; i < rows; i++)
             betacs[i] = zero;
         char name[160], title[200];
         snprintf(name, sizeof name, "%s-beta1", run->c->name);
@@ -541,12 +559,17 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
         const double *yf[] = {sonine};
         const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
                                 .ylabel = "beta_1/b'_1", .npoints = bins, .x = bx,
-                                .nseries = rows < 8 ? rows : 8, .series = series, .y = betas,
-                                .ci = betacs, .nfine = bins, .xfine = bx, .ncurves = 1,
-                                .curves = curves, .yfine = yf, .comment = run->comment};
+                                .nseries = rows, .series = (const char *const *)labels,
+                                .y = betas, .ci = betacs, .nfine = bins, .xfine = bx,
+                                .ncurves = 1, .curves = curves, .yfine = yf,
+                                .comment = run->comment};
         if (vfy_write_points(run->o, &fig) != 0)
             status = vfy_io_error(name, msg, msglen);
     }
+    for (size_t i = 0; i < rows; i++)
+        free(labels[i]);
+    free(labels);
+    free(betas);
     free(buf);
     return status;
 }
@@ -567,12 +590,13 @@ const vfy_case_desc vfy_msg_kappa = {
                "kappa_prime_sonine:%.5f kappa_prime_modified:%.5f sonine_percent:%+.2f "
                "modified_percent:%+.2f below_sonine:%.1f kappa_sonine:%.5f "
                "mu_star_sonine:%.5f a2:%.5f a2_ci:%.5f violations:%.0f " VFY_COST_COLUMNS,
-    .figures = {{.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = {"DSMC=kappa"},
-                 .refs = {"first Sonine=kappa_prime_sonine",
-                          "modified first Sonine=kappa_prime_modified"},
-                 .x_lo = 0.3, .x_hi = 1.0,
-                 .title = "{case}: kappa'/kappa0 against alpha (paper D Fig. 3)",
-                 .xlabel = "alpha", .ylabel = "kappa'/kappa0"}},
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_POINTS, .x = "alpha",
+                            .series = VFY_LIST("DSMC=kappa"),
+                            .refs = VFY_LIST("first Sonine=kappa_prime_sonine",
+                                             "modified first Sonine=kappa_prime_modified"),
+                            .x_lo = 0.3, .x_hi = 1.0,
+                            .title = "{case}: kappa'/kappa0 against alpha (paper D Fig. 3)",
+                            .xlabel = "alpha", .ylabel = "kappa'/kappa0"}),
     .title = "{case}: paper D Fig. 3, the modified thermal conductivity kappa'/kappa0 "
              "against alpha ({size} sizes)",
     .notes =
@@ -603,10 +627,11 @@ const vfy_case_desc vfy_msg_sonine = {
                "b1_x_ci=b1xc_ci:%.4f b2_x=b2xc:%.4f b2_x_ci=b2xc_ci:%.4f b3_x=b3xc:%.4f "
                "b3_x_ci=b3xc_ci:%.4f z1:%.2f z2:%.2f z3:%.2f higher_over_b1:%.3f higher_low:%.3f "
                "violations:%.0f " VFY_COST_COLUMNS,
-    .figures = {{.kind = VFY_FIGURE_POINTS, .x = "alpha",
-                 .series = {"b'_1=b1c", "b'_2=b2c", "b'_3=b3c", "b'_2 from c_x=b2xc"},
-                 .title = "{case}: Sonine coefficients b'_k against alpha (paper D Fig. 4)",
-                 .xlabel = "alpha", .ylabel = "b'_k"}},
+    .figures = VFY_FIGURES(
+        {.kind = VFY_FIGURE_POINTS, .x = "alpha",
+         .series = VFY_LIST("b'_1=b1c", "b'_2=b2c", "b'_3=b3c", "b'_2 from c_x=b2xc"),
+         .title = "{case}: Sonine coefficients b'_k against alpha (paper D Fig. 4)",
+         .xlabel = "alpha", .ylabel = "b'_k"}),
     .title = "{case}: paper D Figs. 2, 4, the Sonine coefficients b'_1, b'_2, b'_3 against "
              "alpha ({size} sizes)",
     .notes =

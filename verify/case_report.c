@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "figure.h"
@@ -40,14 +41,21 @@ sim_status vfy_write_case_tables(const vfy_options *o, const char *name, const v
 sim_status vfy_write_rows_so_far(const vfy_options *o, const char *name, const vfy_table *table,
                                  const sim_scene *scene, char *msg, size_t msglen)
 {
-    char path[1024], comment[800];
-    size_t used = strlen(vfy_run_comment(scene, comment, sizeof comment));
-    snprintf(comment + used, sizeof comment - used, "\nin progress: %zu finished rows so far",
+    char path[1024];
+    /* the scene's path, and room for the version, the numbers and the words */
+    const size_t len = strlen(vfy_display_path(scene->file)) + strlen(GDSMC_VERSION) + 256;
+    char *comment = malloc(len);
+    if (comment == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    size_t used = strlen(vfy_run_comment(scene, comment, len));
+    snprintf(comment + used, len - used, "\nin progress: %zu finished rows so far",
              vfy_table_rows(table));
-    if (vfy_table_write_csv(table, vfy_report_path(o, name, ".csv", path, sizeof path),
-                            comment) != 0)
-        return vfy_io_error(path, msg, msglen);
-    return SIM_OK;
+    const int rc = vfy_table_write_csv(table, vfy_report_path(o, name, ".csv", path, sizeof path),
+                                       comment);
+    free(comment);
+    return rc != 0 ? vfy_io_error(path, msg, msglen) : SIM_OK;
 }
 
 const char *vfy_display_path(const char *path)

@@ -53,7 +53,8 @@ static const vfy_check_spec vro_checks[] = {
     /* Var_sampled = Var_conditional + E Var(increments): a factor at or below
      * 1 means the expectation was not taken. */
     {.name = "{case} n={n} variance reduction of T_raw (mean over t)", .rule = vfy_rule_range,
-     .value = "var_ratio_T_raw", .lo = 1.0 + 1e-9, .hi = INFINITY, .builtin_only = SAME_STREAMS},
+     .value = "var_ratio_T_raw", .lo = VFY_TOL_VRO_VAR_RATIO_MIN, .hi = INFINITY,
+     .builtin_only = SAME_STREAMS},
     {.name = NULL}};
 static const char vro_columns[] =
     "n:%.0f N:%.0f var_ratio_T_raw:%.3f var_ratio_T_raw_min:%.3f var_ratio_T:%.3f "
@@ -76,9 +77,8 @@ static sim_status vro_smallest(vfy_case_run *run, vfy_report *r, char *msg, size
 const vfy_case_desc vfy_vro_grw_ex3 = {
     .must_fail = "heating.strength=1.05 collisions.constant=1.05",
     .scene = "grw-ex3",
-    .paper_rows = {.keys = {"particles.n"}, .values = {"64 256 1024"}},
-    .quick_rows = {.keys = {"particles.n"},
-                   .values = {"64 256"},
+    .paper_rows = {.keys = VFY_KEYS({"particles.n", "64 256 1024", NULL})},
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "64 256", NULL}),
                    .sets = "particles.ensembles=2000"},
     .needs = vro_needs, .needs_why = VFY_NEEDS_MAXWELL, .variants = vro_variants,
     .metrics = vro_metrics, .checks = vro_checks, .columns = vro_columns,

@@ -13,6 +13,7 @@
 #include "scene_refs.h"
 #include "solver.h"
 #include "table.h"
+#include "text.h"
 #include "verdicts.h"
 
 /* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
@@ -266,11 +267,15 @@ static sim_status perturb_solver(const char *path, const vfy_options *o, const s
                                  char *msg, size_t msglen)
 {
     enum { MAX = 8 };
-    char storage[MAX][160];
-    const char *all[160 + MAX];
+    char storage[MAX][160];   /* a scene key (< 96, vfy_perturb_parse) and a %.17g */
     if (o->nperturbs > MAX) {
         snprintf(msg, msglen, "--perturb: at most %d keys", MAX);
         return SIM_EINVAL;
+    }
+    const char **all = malloc((count + MAX) * sizeof *all);
+    if (all == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
     }
     memcpy(all, sets, count * sizeof *sets);
     for (size_t i = 0; i < o->nperturbs; i++) {
@@ -284,12 +289,14 @@ static sim_status perturb_solver(const char *path, const vfy_options *o, const s
             char why[1024];
             snprintf(why, sizeof why, "%s", msg);
             snprintf(msg, msglen, "--perturb %s: %s", o->perturbs[i], why);
+            free(all);
             return status;
         }
         snprintf(storage[i], sizeof storage[i], "%s=%.17g", key, factor * value);
         all[count + i] = storage[i];
     }
     sim_status status = vfy_scene_load(path, all, count + o->nperturbs, solver, msg, msglen);
+    free(all);
     if (status != SIM_OK) {
         char why[1024];
         snprintf(why, sizeof why, "%s", msg);
@@ -328,11 +335,14 @@ sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const cha
                                size_t npre, sim_scene *scene, sim_scene *solver, char *msg,
                                size_t msglen)
 {
-    char path[1024];
-    const char *sets[160];
-    if (npre + o->noverrides + o->nsolver_overrides > sizeof sets / sizeof *sets) {
-        snprintf(msg, msglen, "too many overrides (at most 128)");
-        return SIM_EINVAL;
+    /* as many settings as the row, --set and --solver-set give */
+    const char **sets = malloc((npre + o->noverrides + o->nsolver_overrides + 1) * sizeof *sets);
+    char *path = vfy_aprintf("%s/%s.ini", o->scene_dir, stem);
+    if (sets == NULL || path == NULL) {
+        free(sets);
+        free(path);
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
     }
     size_t count = 0;
     for (size_t i = 0; i < npre; i++)
@@ -342,7 +352,6 @@ sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const cha
     size_t nscene = count;
     for (size_t i = 0; i < o->nsolver_overrides; i++)
         sets[count++] = o->solver_overrides[i];
-    snprintf(path, sizeof path, "%s/%s.ini", o->scene_dir, stem);
     sim_status status = vfy_scene_load(path, sets, nscene, scene, msg, msglen);
     if (status == SIM_OK) {
         status = vfy_scene_load(path, sets, count, solver, msg, msglen);
@@ -353,6 +362,8 @@ sim_status vfy_load_scene_sets(const char *stem, const vfy_options *o, const cha
         status = perturb_solver(path, o, scene, sets, count, solver, msg, msglen);
     if (status == SIM_OK && o->seed_run > 0)
         scene->seed = solver->seed = vfy_derived_seed(scene->seed, o->seed_run);
+    free(sets);
+    free(path);
     return status;
 }
 

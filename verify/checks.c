@@ -7,6 +7,7 @@
 
 #include "ensemble.h"
 #include "table.h"
+#include "text.h"
 
 void vfy_report_init(vfy_report *r, FILE *echo)
 {
@@ -16,6 +17,8 @@ void vfy_report_init(vfy_report *r, FILE *echo)
 
 void vfy_report_free(vfy_report *r)
 {
+    for (size_t i = 0; i < r->count; i++)
+        free(r->checks[i].text);
     free(r->checks);
     memset(r, 0, sizeof *r);
 }
@@ -33,6 +36,21 @@ typedef struct judged {
     const char *range;
 } judged;
 #define NOT_JUDGED ((judged){NAN, NAN, NAN, ""})
+
+/* The check's texts in one allocation (c->text), each NUL-terminated:
+ * group, id, row, name, allowed, detail; or all "" without memory. */
+static void check_texts(vfy_check *c, const char *const texts[6])
+{
+    size_t len[6], total = 0;
+    for (int k = 0; k < 6; k++)
+        total += (len[k] = strlen(texts[k])) + 1;
+    const char **field[6] = {&c->group, &c->id, &c->row, &c->name, &c->allowed, &c->detail};
+    char *at = c->text = malloc(total);
+    for (int k = 0; k < 6; k++) {
+        *field[k] = at != NULL ? memcpy(at, texts[k], len[k] + 1) : "";
+        at = at != NULL ? at + len[k] + 1 : NULL;
+    }
+}
 
 /* The one place a verdict is recorded: a FAIL under r->differs becomes
  * DIFFERS, with the declared reason after the detail. */
@@ -53,23 +71,23 @@ static vfy_verdict record(vfy_report *r, vfy_verdict v, judged j, const char *na
     }
     vfy_check *c = &r->checks[r->count++];
     c->verdict = v;
-    snprintf(c->group, sizeof c->group, "%s", r->group ? r->group : "gdsmc");
-    snprintf(c->id, sizeof c->id, "%s", r->check_id ? r->check_id : "");
-    snprintf(c->row, sizeof c->row, "%s", r->row ? r->row : "");
-    snprintf(c->name, sizeof c->name, "%s", name);
     c->value = j.value;
     c->reference = j.reference;
-    if (j.range != NULL)
-        snprintf(c->allowed, sizeof c->allowed, "%s", j.range);
-    else
-        snprintf(c->allowed, sizeof c->allowed, "%g", j.allowed);
+    char allowed[64];
+    if (j.range == NULL)
+        snprintf(allowed, sizeof allowed, "%g", j.allowed);   /* at most 13 characters */
+    vfy_text detail = {0};
     va_list ap;
     va_start(ap, fmt);
-    int len = vsnprintf(c->detail, sizeof c->detail, fmt, ap);
+    vfy_text_vprintf(&detail, fmt, ap);
     va_end(ap);
-    if (v == VFY_DIFFERS && len >= 0 && (size_t)len < sizeof c->detail)
-        snprintf(c->detail + len, sizeof c->detail - (size_t)len, "; known difference: %s",
-                 r->differs);
+    if (v == VFY_DIFFERS)
+        vfy_text_printf(&detail, "; known difference: %s", r->differs);
+    const char *const texts[6] = {r->group ? r->group : "gdsmc", r->check_id ? r->check_id : "",
+                                  r->row ? r->row : "", name,
+                                  j.range != NULL ? j.range : allowed, vfy_text_str(&detail)};
+    check_texts(c, texts);
+    vfy_text_free(&detail);
     if (r->echo) {
         fprintf(r->echo, "%s  %s: %s\n", vfy_verdict_word(v), c->name, c->detail);
         fflush(r->echo);
@@ -182,12 +200,14 @@ vfy_verdict vfy_check_zero(vfy_report *r, const char *name, double count)
 
 vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *fmt, ...)
 {
-    char detail[sizeof r->checks[0].detail];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(detail, sizeof detail, fmt, ap);
+    char *detail = vfy_vaprintf(fmt, ap);
     va_end(ap);
-    return record(r, ok ? VFY_PASS : VFY_FAIL, NOT_JUDGED, name, "%s", detail);
+    const vfy_verdict v = record(r, ok ? VFY_PASS : VFY_FAIL, NOT_JUDGED, name, "%s",
+                                 detail != NULL ? detail : "out of memory");
+    free(detail);
+    return v;
 }
 
 void vfy_skip(vfy_report *r, const char *name, const char *reason)

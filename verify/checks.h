@@ -33,17 +33,21 @@ typedef enum vfy_verdict {
 /* The word a verdict prints as ("PASS", ...). */
 const char *vfy_verdict_word(vfy_verdict v);
 
+/* One recorded check.  Its texts are as long as they came (a case's check
+ * names and reasons have no length limit): they point into `text`, one
+ * allocation the report frees, or at "" when there was no memory for it. */
 typedef struct vfy_check {
     vfy_verdict verdict;
-    char group[32];   /* the report's group when it was made: the case */
-    char id[160];     /* the report's check id when it was made (the check's
-                         name before a row fills it in), or "" */
-    char row[128];    /* the report's row when it was made, or "" */
-    char name[96];
-    char detail[320];
+    const char *group;   /* the report's group when it was made: the case */
+    const char *id;      /* the report's check id when it was made (the check's
+                            name before a row fills it in), or "" */
+    const char *row;     /* the report's row when it was made, or "" */
+    const char *name;
+    const char *detail;
     double value, reference;   /* what was judged and against what (NaN where
                                   a check has none: a range, a SKIP) */
-    char allowed[48];          /* the bound as text ("±35%", "[3.2, 5]", "4.5"), or "" */
+    const char *allowed;       /* the bound as text ("±35%", "[3.2, 5]", "4.5"), or "" */
+    char *text;                /* the texts above, or NULL */
 } vfy_check;
 
 typedef struct vfy_report {

@@ -3,6 +3,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -32,7 +33,7 @@ int vfy_values_set(vfy_values *vals, const char *name, double v)
     if (at < 0) {
         if (vals->count == vals->capacity) {
             size_t cap = vals->capacity ? 2 * vals->capacity : 32;
-            char(*names)[32] = realloc(vals->names, cap * sizeof *names);
+            char **names = realloc(vals->names, cap * sizeof *names);
             if (names == NULL)
                 return -1;
             vals->names = names;
@@ -42,8 +43,11 @@ int vfy_values_set(vfy_values *vals, const char *name, double v)
             vals->v = grown;
             vals->capacity = cap;
         }
+        char *copy = vfy_strdup(name);
+        if (copy == NULL)
+            return -1;
         at = (long)vals->count++;
-        snprintf(vals->names[at], sizeof vals->names[at], "%s", name);
+        vals->names[at] = copy;
     }
     vals->v[at] = v;
     return 0;
@@ -59,6 +63,8 @@ int vfy_values_has(const vfy_values *vals, const char *name) { return values_fin
 
 void vfy_values_free(vfy_values *vals)
 {
+    for (size_t i = 0; i < vals->count; i++)
+        free(vals->names[i]);
     free(vals->names);
     free(vals->v);
     memset(vals, 0, sizeof *vals);
@@ -95,15 +101,17 @@ size_t vfy_variant_count(const vfy_case_desc *d)
     return count ? count : 1;
 }
 
-/* Variant k of d ("NAME: SET;SET"): its name into name ("" for a case
- * without variants); returns its settings, or NULL. */
-static const char *variant_parts(const vfy_case_desc *d, size_t k, char *name, size_t len)
+/* Variant k of d ("NAME: SET;SET"): its name, *len characters at *name (0
+ * for a case without variants); returns its settings, or NULL. */
+static const char *variant_parts(const vfy_case_desc *d, size_t k, const char **name, int *len)
 {
-    name[0] = '\0';
+    *name = "";
+    *len = 0;
     if (d->variants == NULL || d->variants[0] == NULL)
         return NULL;
     const char *text = d->variants[k], *colon = strchr(text, ':');
-    snprintf(name, len, "%.*s", (int)strcspn(text, ":"), text);
+    *name = text;
+    *len = (int)strcspn(text, ":");
     return colon ? colon + 1 : NULL;
 }
 
@@ -112,7 +120,6 @@ static int variants_mean(const vfy_row *row, const char *name, size_t len, doubl
                          double *ci)
 {
     const size_t B = vfy_variant_count(row->run->d), M = row->res.outputs;
-    char one[64];
     double *m1 = malloc(2 * M * sizeof *m1);
     if (m1 == NULL)
         return -1;
@@ -122,9 +129,10 @@ static int variants_mean(const vfy_row *row, const char *name, size_t len, doubl
     int rc = 0;
     for (size_t k = 0; k < B && rc == 0; k++) {
         const char *v = row->run->d->variants ? row->run->d->variants[k] : "";
-        snprintf(one, sizeof one, "%.*s%s%.*s", (int)len, name, k ? "@" : "",
-                 k ? (int)strcspn(v, ":") : 0, v);
-        rc = vfy_row_series(row, one, m1, m1 + M);
+        char *one = vfy_aprintf("%.*s%s%.*s", (int)len, name, k ? "@" : "",
+                                k ? (int)strcspn(v, ":") : 0, v);
+        rc = one != NULL ? vfy_row_series(row, one, m1, m1 + M) : -1;
+        free(one);
         for (size_t m = 0; m < M && rc == 0; m++) {
             mean[m] += m1[m];
             if (ci != NULL)
@@ -196,32 +204,81 @@ static const char *run_string(const vfy_case_run *run, const char *name)
     if (strcmp(name, "paper") == 0)
         return run->d->paper ? run->d->paper : "";
     if (strcmp(name, "comment") == 0)
-        return run->comment;
+        return run->comment ? run->comment : "";
     for (size_t i = 0; i < run->ntexts; i++)
         if (strcmp(run->text_names[i], name) == 0)
             return run->texts[i];
     return NULL;
 }
 
-int vfy_run_set_text(vfy_case_run *run, const char *name, const char *text)
+/* Set text `name` of a list of (names, texts), count of them: replaced, or
+ * appended (the arrays grown by one).  Returns 0, or -1 when out of memory
+ * (the list unchanged). */
+static int set_text(char ***names, char ***texts, size_t *count, const char *name,
+                    const char *text)
 {
     size_t i = 0;
-    while (i < run->ntexts && strcmp(run->text_names[i], name) != 0)
+    while (i < *count && strcmp((*names)[i], name) != 0)
         i++;
-    if (i == sizeof run->texts / sizeof *run->texts)
+    char *copy = vfy_strdup(text);
+    if (copy == NULL)
         return -1;
-    snprintf(run->text_names[i], sizeof run->text_names[i], "%s", name);
-    snprintf(run->texts[i], sizeof run->texts[i], "%s", text);
-    run->ntexts += i == run->ntexts;
+    if (i < *count) {
+        free((*texts)[i]);
+        (*texts)[i] = copy;
+        return 0;
+    }
+    char *key = vfy_strdup(name);
+    char **n = key ? realloc(*names, (i + 1) * sizeof *n) : NULL;
+    if (n != NULL)
+        *names = n;
+    char **t = n ? realloc(*texts, (i + 1) * sizeof *t) : NULL;
+    if (t == NULL) {
+        free(key);
+        free(copy);
+        return -1;
+    }
+    *texts = t;
+    (*names)[i] = key;
+    (*texts)[i] = copy;
+    *count = i + 1;
     return 0;
+}
+
+/* Free a list of (names, texts). */
+static void free_texts(char ***names, char ***texts, size_t *count)
+{
+    for (size_t i = 0; i < *count; i++) {
+        free((*names)[i]);
+        free((*texts)[i]);
+    }
+    free(*names);
+    free(*texts);
+    *names = *texts = NULL;
+    *count = 0;
+}
+
+int vfy_run_set_text(vfy_case_run *run, const char *name, const char *text)
+{
+    return set_text(&run->text_names, &run->texts, &run->ntexts, name, text);
+}
+
+int vfy_run_second_notes(vfy_case_run *run, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    free(run->second_notes);
+    run->second_notes = vfy_vaprintf(fmt, ap);
+    va_end(ap);
+    return run->second_notes != NULL ? 0 : -1;
 }
 
 static const char *row_string(const vfy_row *row, const char *name)
 {
     if (row != NULL && strcmp(name, "label") == 0)
-        return row->label;
+        return row->label ? row->label : "";
     if (row != NULL && strcmp(name, "scene") == 0)
-        return row->stem;
+        return row->stem ? row->stem : "";
     return vfy_row_text(row, name);
 }
 
@@ -232,63 +289,80 @@ static double lookup(const vfy_case_run *run, const vfy_row *row, const char *na
     return vfy_values_get(&run->values, name);
 }
 
-const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_run *run,
-                       const vfy_row *row)
+/* One "{...}" of a template (p at its '{', close at its '}') onto out. */
+static int expand_one(vfy_text *out, const char *p, const char *close,
+                      const vfy_case_run *run, const vfy_row *row)
 {
-    size_t used = 0;
-    buf[0] = '\0';
-    for (const char *p = tmpl; *p && used + 1 < len;) {
+    const int at_quick = strncmp(p + 1, "at_quick:", 9) == 0;
+    const int at_engine = strncmp(p + 1, "at_engine:", 10) == 0;
+    if (at_quick || strncmp(p + 1, "at_paper:", 9) == 0)   /* text at one size */
+        return at_quick == (run->o->size == VFY_QUICK)
+                   ? vfy_text_append(out, p + 10, (size_t)(close - p - 10))
+                   : 0;
+    if (at_engine || strncmp(p + 1, "at_solver:", 10) == 0)   /* text for one solver */
+        return at_engine != vfy_external(run->o)
+                   ? vfy_text_append(out, p + 11, (size_t)(close - p - 11))
+                   : 0;
+    const size_t n = (size_t)(close - p - 1);
+    const char *colon = memchr(p + 1, ':', n);
+    char *name = vfy_aprintf("%.*s", (int)(colon ? (size_t)(colon - p - 1) : n), p + 1);
+    char *fmt = colon ? vfy_aprintf("%.*s", (int)(close - colon - 1), colon + 1) : NULL;
+    if (name == NULL || (colon != NULL && fmt == NULL)) {
+        free(name);
+        free(fmt);
+        return -1;
+    }
+    const char *s = row_string(row, name);
+    if (s == NULL)
+        s = run_string(run, name);
+    const double v = lookup(run, row, name);
+    int rc;
+    if (s != NULL)
+        rc = vfy_text_append(out, s, strlen(s));
+    else if (isnan(v) && vfy_external(run->o))   /* the solver did not report it */
+        rc = vfy_text_printf(out, "(not reported)");
+    else if (fmt != NULL && fmt[0])
+        rc = vfy_text_printf(out, fmt, v);
+    else if (v == floor(v) && fabs(v) < 1e15)
+        rc = vfy_text_printf(out, "%.0f", v);
+    else
+        rc = vfy_text_printf(out, "%g", v);
+    free(name);
+    free(fmt);
+    return rc;
+}
+
+int vfy_expand_text(vfy_text *out, const char *tmpl, const vfy_case_run *run,
+                    const vfy_row *row)
+{
+    int rc = vfy_text_append(out, "", 0);   /* "" even for an empty template */
+    for (const char *p = tmpl; p && *p && rc == 0;) {
         const char *close = p[0] == '{' && p[1] != '{' ? strchr(p, '}') : NULL;
         if (close == NULL) {
             p += p[0] == '{' && p[1] == '{';   /* "{{" is one brace */
-            buf[used++] = *p++;
-            buf[used] = '\0';
+            rc = vfy_text_append(out, p++, 1);
             continue;
         }
-        int at_quick = strncmp(p + 1, "at_quick:", 9) == 0;
-        int at_engine = strncmp(p + 1, "at_engine:", 10) == 0;
-        if (at_quick || strncmp(p + 1, "at_paper:", 9) == 0) {   /* text at one size */
-            if (at_quick == (run->o->size == VFY_QUICK)) {
-                int w = snprintf(buf + used, len - used, "%.*s", (int)(close - p - 10), p + 10);
-                used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
-            }
-            p = close + 1;
-            continue;
-        }
-        if (at_engine || strncmp(p + 1, "at_solver:", 10) == 0) {   /* text for one solver */
-            if (at_engine != vfy_external(run->o)) {
-                int w = snprintf(buf + used, len - used, "%.*s", (int)(close - p - 11), p + 11);
-                used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
-            }
-            p = close + 1;
-            continue;
-        }
-        char name[64], fmt[16] = "";
-        size_t n = (size_t)(close - p - 1);
-        snprintf(name, sizeof name, "%.*s", (int)(n < sizeof name ? n : sizeof name - 1), p + 1);
-        char *colon = strchr(name, ':');
-        if (colon != NULL) {
-            snprintf(fmt, sizeof fmt, "%s", colon + 1);
-            *colon = '\0';
-        }
-        const char *s = row_string(row, name);
-        if (s == NULL)
-            s = run_string(run, name);
-        double v = lookup(run, row, name);
-        int w;
-        if (s != NULL)
-            w = snprintf(buf + used, len - used, "%s", s);
-        else if (isnan(v) && vfy_external(run->o))   /* the solver did not report it */
-            w = snprintf(buf + used, len - used, "(not reported)");
-        else if (fmt[0])
-            w = snprintf(buf + used, len - used, fmt, v);
-        else if (v == floor(v) && fabs(v) < 1e15)
-            w = snprintf(buf + used, len - used, "%.0f", v);
-        else
-            w = snprintf(buf + used, len - used, "%g", v);
-        used = w < 0 ? used : used + (size_t)w < len ? used + (size_t)w : len - 1;
+        rc = expand_one(out, p, close, run, row);
         p = close + 1;
     }
+    return rc;
+}
+
+char *vfy_expand_alloc(const char *tmpl, const vfy_case_run *run, const vfy_row *row)
+{
+    vfy_text t = {0};
+    vfy_expand_text(&t, tmpl, run, row);
+    return vfy_text_take(&t);
+}
+
+const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_run *run,
+                       const vfy_row *row)
+{
+    vfy_text t = {0};
+    vfy_expand_text(&t, tmpl, run, row);
+    snprintf(buf, len, "%s", vfy_text_str(&t));
+    vfy_text_free(&t);
     return buf;
 }
 
@@ -453,10 +527,10 @@ vfy_guard_result vfy_guard_clean_pair(const vfy_case_run *run, const vfy_row *ro
 
 /* ------------------------------------------------------------ sweep */
 
-/* The i-th space-separated word of list into buf (empty if there is none). */
-static void nth_word(const char *list, size_t i, char *buf, size_t len)
+/* The i-th space-separated word of list: its length, and *word its start
+ * (0 if there is none). */
+static size_t nth_word(const char *list, size_t i, const char **word)
 {
-    buf[0] = '\0';
     for (const char *p = list; *p;) {
         while (isspace((unsigned char)*p))
             p++;
@@ -464,20 +538,35 @@ static void nth_word(const char *list, size_t i, char *buf, size_t len)
         if (n == 0)
             break;
         if (i-- == 0) {
-            snprintf(buf, len, "%.*s", (int)n, p);
-            return;
+            *word = p;
+            return n;
         }
         p += n;
     }
+    *word = list;
+    return 0;
 }
 
 static size_t word_count(const char *list)
 {
     size_t count = 0;
-    char word[64];
-    while (nth_word(list, count, word, sizeof word), word[0])
+    const char *word;
+    while (nth_word(list, count, &word) > 0)
         count++;
     return count;
+}
+
+/* Key k's value of row i of the sweep: its length, and *word its start. */
+static size_t sweep_word(const vfy_sweep *s, size_t i, size_t k, const char **word)
+{
+    size_t at = i;
+    if (s->grid) {
+        size_t inner = 1;
+        for (size_t j = k + 1; s->keys[j].key; j++)
+            inner *= word_count(s->keys[j].values);
+        at = (i / inner) % word_count(s->keys[k].values);
+    }
+    return nth_word(s->keys[k].values, at, word);
 }
 
 size_t vfy_sweep_rows(const vfy_sweep *s)
@@ -488,9 +577,9 @@ size_t vfy_sweep_rows(const vfy_sweep *s)
             rows++;
         return rows;
     }
-    size_t rows = s->keys[0] ? 1 : 0;
-    for (size_t k = 0; k < VFY_SWEEP_KEYS && s->keys[k]; k++) {
-        size_t n = word_count(s->values[k]);
+    size_t rows = s->keys && s->keys[0].key ? 1 : 0;
+    for (size_t k = 0; s->keys && s->keys[k].key; k++) {
+        size_t n = word_count(s->keys[k].values);
         rows = s->grid ? rows * n : (k == 0 || n < rows ? n : rows);
     }
     return rows;
@@ -498,54 +587,44 @@ size_t vfy_sweep_rows(const vfy_sweep *s)
 
 void vfy_sweep_value(const vfy_sweep *s, size_t i, size_t k, char *buf, size_t len)
 {
-    size_t at = i;
-    if (s->grid) {
-        size_t inner = 1;
-        for (size_t j = k + 1; j < VFY_SWEEP_KEYS && s->keys[j]; j++)
-            inner *= word_count(s->values[j]);
-        at = (i / inner) % word_count(s->values[k]);
-    }
-    nth_word(s->values[k], at, buf, len);
+    const char *word;
+    const size_t n = sweep_word(s, i, k, &word);
+    snprintf(buf, len, "%.*s", (int)n, word);
 }
 
 static const char *sweep_name(const vfy_sweep *s, size_t k)
 {
-    if (s->names[k])
-        return s->names[k];
-    const char *dot = strrchr(s->keys[k], '.');
-    return dot ? dot + 1 : s->keys[k];
+    if (s->keys[k].name)
+        return s->keys[k].name;
+    const char *dot = strrchr(s->keys[k].key, '.');
+    return dot ? dot + 1 : s->keys[k].key;
 }
 
 /* ------------------------------------------------------------ one row */
 
 /* A "$NAME=VALUE" setting (n characters at p): a value of the row, a number
- * if VALUE is one, else a text. */
-static void row_setting(vfy_row *row, const char *p, size_t n)
+ * if VALUE is one, else a text.  Returns 0, or -1 when out of memory. */
+static int row_setting(vfy_row *row, const char *p, size_t n)
 {
-    char name[24], value[VFY_ROW_TEXT_LEN], *end;
     size_t eq = strcspn(p, "=");
     if (eq >= n)
-        return;
-    snprintf(name, sizeof name, "%.*s", (int)(eq - 1), p + 1);
-    snprintf(value, sizeof value, "%.*s", (int)(n - eq - 1), p + eq + 1);
-    double v = strtod(value, &end);
-    if (end != value && *end == '\0')
-        vfy_values_set(&row->values, name, v);
-    else
-        vfy_row_set_text(row, name, value);
+        return 0;
+    char *name = vfy_aprintf("%.*s", (int)(eq - 1), p + 1);
+    char *value = vfy_aprintf("%.*s", (int)(n - eq - 1), p + eq + 1), *end;
+    int rc = -1;
+    if (name != NULL && value != NULL) {
+        double v = strtod(value, &end);
+        rc = end != value && *end == '\0' ? vfy_values_set(&row->values, name, v)
+                                          : vfy_row_set_text(row, name, value);
+    }
+    free(name);
+    free(value);
+    return rc;
 }
 
 int vfy_row_set_text(vfy_row *row, const char *name, const char *text)
 {
-    size_t i = 0;
-    while (i < row->ntexts && strcmp(row->text_names[i], name) != 0)
-        i++;
-    if (i == VFY_ROW_TEXTS)
-        return -1;
-    snprintf(row->text_names[i], sizeof row->text_names[i], "%s", name);
-    snprintf(row->texts[i], sizeof row->texts[i], "%s", text);
-    row->ntexts += i == row->ntexts;
-    return 0;
+    return set_text(&row->text_names, &row->texts, &row->ntexts, name, text);
 }
 
 const char *vfy_row_text(const vfy_row *row, const char *name)
@@ -556,28 +635,71 @@ const char *vfy_row_text(const vfy_row *row, const char *name)
     return NULL;
 }
 
-/* Up to `max` settings of "SET;SET;..." into storage and sets; a "scene=STEM"
- * setting goes to stem instead, a "$NAME=VALUE" one to the row.  Returns the
- * new count. */
-static size_t split_sets(const char *list, char (*storage)[160], const char **sets,
-                         size_t count, size_t max, char *stem, size_t stemlen, vfy_row *row)
+void vfy_row_free(vfy_row *row)
 {
-    for (const char *p = list; p && *p && count < max;) {
+    vfy_refs_free(&row->refs);
+    sim_ensemble_result_free(&row->res);
+    const size_t more = row->run != NULL ? vfy_variant_count(row->run->d) - 1 : 0;
+    for (size_t k = 0; row->more && k < more; k++)
+        sim_ensemble_result_free(&row->more[k]);
+    free(row->more);
+    row->more = NULL;
+    vfy_values_free(&row->values);
+    free_texts(&row->text_names, &row->texts, &row->ntexts);
+    free(row->label);
+    free(row->stem);
+    row->label = row->stem = NULL;
+}
+
+/* A row's scene settings, as vfy_load_scene_sets takes them. */
+typedef struct set_list {
+    char **sets;   /* allocated, count of them */
+    size_t count;
+} set_list;
+
+/* Append setting `set` (allocated; the list owns it, or frees it when out of
+ * memory); 0, or -1. */
+static int set_take(set_list *l, char *set)
+{
+    char **grown = set ? realloc(l->sets, (l->count + 1) * sizeof *grown) : NULL;
+    if (grown == NULL) {
+        free(set);
+        return -1;
+    }
+    l->sets = grown;
+    l->sets[l->count++] = set;
+    return 0;
+}
+
+static void set_list_free(set_list *l)
+{
+    for (size_t i = 0; i < l->count; i++)
+        free(l->sets[i]);
+    free(l->sets);
+    *l = (set_list){0};
+}
+
+/* The settings of "SET;SET;..." appended to l; a "scene=STEM" setting goes
+ * to *stem instead (allocated, replacing it), a "$NAME=VALUE" one to the
+ * row.  Returns 0, or -1 when out of memory. */
+static int split_sets(const char *list, set_list *l, char **stem, vfy_row *row)
+{
+    int rc = 0;
+    for (const char *p = list; p && *p && rc == 0;) {
         while (isspace((unsigned char)*p))
             p++;
         size_t n = strcspn(p, ";");
-        if (n > 0 && strncmp(p, "scene=", 6) == 0)
-            snprintf(stem, stemlen, "%.*s", (int)(n - 6), p + 6);
-        else if (n > 0 && p[0] == '$')
-            row_setting(row, p, n);
-        else if (n > 0) {
-            snprintf(storage[count], sizeof storage[count], "%.*s", (int)n, p);
-            sets[count] = storage[count];
-            count++;
+        if (n > 0 && strncmp(p, "scene=", 6) == 0) {
+            free(*stem);
+            rc = (*stem = vfy_aprintf("%.*s", (int)(n - 6), p + 6)) != NULL ? 0 : -1;
+        } else if (n > 0 && p[0] == '$') {
+            rc = row_setting(row, p, n);
+        } else if (n > 0) {
+            rc = set_take(l, vfy_aprintf("%.*s", (int)n, p));
         }
         p += n + (p[n] == ';');
     }
-    return count;
+    return rc;
 }
 
 /* The description's `observes` as the solver scene's observe_only mask: only
@@ -601,46 +723,83 @@ static sim_status observe_only(const char *names, sim_scene *solver, char *msg, 
     return SIM_OK;
 }
 
+/* The description's derived settings for the row (vfy_derive_fn), in a
+ * buffer grown until they fit; NULL when out of memory. */
+static char *derived_sets(const vfy_case_run *run, const vfy_row *row)
+{
+    for (size_t len = 512;; len *= 2) {
+        char *buf = malloc(len);
+        if (buf == NULL)
+            return NULL;
+        buf[0] = '\0';
+        run->d->derive(row, buf, len);
+        if (strlen(buf) + 1 < len)
+            return buf;
+        free(buf);   /* it may have been cut short: again, with twice the room */
+    }
+}
+
+/* The row's settings: the sweep's (its sets, an explicit row's label and
+ * settings, each key's value) then `extra`'s; the scene's stem into *stem. */
+static int sweep_sets(const vfy_sweep *s, vfy_row *row, const char *extra, set_list *l,
+                      char **stem)
+{
+    int rc = split_sets(s->sets, l, stem, row);
+    free(row->label);
+    row->label = NULL;
+    if (rc == 0 && s->rows != NULL) {
+        const char *text = s->rows[row->index], *colon = strchr(text, ':');
+        size_t n = colon ? (size_t)(colon - text) : 0;
+        rc = (row->label = vfy_aprintf("%.*s", (int)n, text)) != NULL
+                 ? split_sets(colon ? colon + 1 : text, l, stem, row)
+                 : -1;
+    }
+    for (size_t k = 0; rc == 0 && s->keys && s->keys[k].key; k++) {
+        const char *word;
+        const size_t n = sweep_word(s, row->index, k, &word);
+        char *value = vfy_aprintf("%.*s", (int)n, word);
+        rc = value != NULL ? set_take(l, vfy_aprintf("%s=%s", s->keys[k].key, value)) : -1;
+        if (rc == 0)
+            rc = vfy_values_set(&row->values, sweep_name(s, k), strtod(value, NULL));
+        free(value);
+    }
+    if (rc == 0 && row->label == NULL)
+        rc = (row->label = vfy_strdup("")) != NULL ? 0 : -1;
+    return rc == 0 ? split_sets(extra, l, stem, row) : rc;
+}
+
 /* Load row i's scenes: the sweep's settings, `extra` (a variant's, or
  * NULL), derived ones, then --set, then --solver-set. */
 static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row,
                              const char *extra, char *msg, size_t msglen)
 {
-    enum { MAX = VFY_SWEEP_KEYS + 32 };
-    char storage[MAX][160], stem[sizeof row->stem];
-    const char *sets[MAX];
-    snprintf(stem, sizeof stem, "%s", run->d->scene ? run->d->scene : run->c->name);
-    size_t nsets = split_sets(s->sets, storage, sets, 0, MAX, stem, sizeof stem, row);
-    if (s->rows != NULL) {
-        const char *text = s->rows[row->index], *colon = strchr(text, ':');
-        size_t n = colon ? (size_t)(colon - text) : 0;
-        snprintf(row->label, sizeof row->label, "%.*s", (int)n, text);
-        nsets = split_sets(colon ? colon + 1 : text, storage, sets, nsets, MAX, stem,
-                           sizeof stem, row);
+    set_list l = {0};
+    char *stem = vfy_strdup(run->d->scene ? run->d->scene : run->c->name);
+    char *derived = NULL;
+    int rc = stem != NULL ? sweep_sets(s, row, extra, &l, &stem) : -1;
+    free(row->stem);
+    row->stem = rc == 0 ? vfy_strdup(stem) : NULL;
+    sim_status status = rc == 0 && row->stem != NULL ? SIM_OK : SIM_ENOMEM;
+    if (status == SIM_OK)
+        status = vfy_load_scene_sets(stem, run->o, (const char *const *)l.sets, l.count,
+                                     &row->scene, &row->solver, msg, msglen);
+    if (status == SIM_OK && run->d->derive) {
+        derived = derived_sets(run, row);
+        if (derived == NULL || split_sets(derived, &l, &stem, row) != 0)
+            status = SIM_ENOMEM;
+        else if (derived[0])
+            status = vfy_load_scene_sets(stem, run->o, (const char *const *)l.sets, l.count,
+                                         &row->scene, &row->solver, msg, msglen);
     }
-    for (size_t k = 0; k < VFY_SWEEP_KEYS && s->keys[k] && nsets < MAX; k++) {
-        char value[64];
-        vfy_sweep_value(s, row->index, k, value, sizeof value);
-        snprintf(storage[nsets], sizeof storage[nsets], "%s=%s", s->keys[k], value);
-        sets[nsets] = storage[nsets];
-        nsets++;
-        vfy_values_set(&row->values, sweep_name(s, k), strtod(value, NULL));
-    }
-    nsets = split_sets(extra, storage, sets, nsets, MAX, stem, sizeof stem, row);
-    snprintf(row->stem, sizeof row->stem, "%s", stem);
-    sim_status status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene,
-                                            &row->solver, msg, msglen);
-    char derived[512];
-    if (status == SIM_OK && run->d->derive
-        && run->d->derive(row, derived, sizeof derived)[0]) {
-        nsets = split_sets(derived, storage, sets, nsets, MAX, stem, sizeof stem, row);
-        status = vfy_load_scene_sets(stem, run->o, sets, nsets, &row->scene, &row->solver, msg,
-                                     msglen);
-    }
+    if (status == SIM_ENOMEM)
+        snprintf(msg, msglen, "out of memory");
     if (status == SIM_OK && run->d->adjust)
         status = run->d->adjust(row, &row->solver, msg, msglen);
     if (status == SIM_OK && run->d->observes)
         status = observe_only(run->d->observes, &row->solver, msg, msglen);
+    free(derived);
+    free(stem);
+    set_list_free(&l);
     return status;
 }
 
@@ -663,9 +822,10 @@ static void row_cost_values(vfy_row *row, const sim_ensemble_result *res, const 
                                                               : (double)res->counts.violations,
                         counted ? (double)res->counts.normals : NAN};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++) {
-        char name[48];
-        snprintf(name, sizeof name, "%s%s", names[k], suffix);
-        vfy_values_set(&row->values, name, v[k]);
+        char *name = vfy_aprintf("%s%s", names[k], suffix);
+        if (name != NULL)
+            vfy_values_set(&row->values, name, v[k]);
+        free(name);
     }
     for (size_t k = 0; suffix[0] == '\0' && k < res->nsteady; k++) {
         char name[32], ci[40];
@@ -696,27 +856,35 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
     }
     sim_status status = SIM_OK;
     for (size_t k = 0; k < nvariants && status == SIM_OK; k++) {
-        char variant[64], suffix[68] = "", label[160];
-        const char *sets = variant_parts(d, k, variant, sizeof variant);
-        if (variant[0]) {
-            if (k > 0)
-                snprintf(suffix, sizeof suffix, "@%s", variant);
-            if ((status = row_scenes(run, s, row, sets, msg, msglen)) != SIM_OK)
-                break;
+        const char *variant;
+        int vlen;
+        const char *sets = variant_parts(d, k, &variant, &vlen);
+        if (vlen > 0 && (status = row_scenes(run, s, row, sets, msg, msglen)) != SIM_OK)
+            break;
+        vfy_text label = {0};
+        vfy_expand_text(&label, row_label_template(d), run, row);
+        if (vlen > 0)
+            vfy_text_printf(&label, " %.*s", vlen, variant);
+        char *suffix = vfy_aprintf("%s%.*s", k > 0 && vlen > 0 ? "@" : "", k > 0 ? vlen : 0,
+                                   variant);
+        if (label.failed || suffix == NULL) {
+            vfy_text_free(&label);
+            free(suffix);
+            snprintf(msg, msglen, "out of memory");
+            return SIM_ENOMEM;
         }
-        vfy_expand(label, sizeof label, row_label_template(d), run, row);
-        if (variant[0])
-            snprintf(label + strlen(label), sizeof label - strlen(label), " %s", variant);
         sim_ensemble_result *res = k == 0 ? &row->res : &row->more[k - 1];
-        status = vfy_simulate(&row->solver, run->o, label, res, msg, msglen);
+        status = vfy_simulate(&row->solver, run->o, vfy_text_str(&label), res, msg, msglen);
+        vfy_text_free(&label);
         if (status == SIM_EUNSUPPORTED && vfy_external(run->o)) {   /* an answer, not an error */
             if (row->refused[0] == '\0')
-                snprintf(row->refused, sizeof row->refused, "%s%s%s", variant,
-                         variant[0] ? ": " : "", msg);
+                snprintf(row->refused, sizeof row->refused, "%.*s%s%s", vlen, variant,
+                         vlen > 0 ? ": " : "", msg);
             status = SIM_OK;
         }
         if (status == SIM_OK)
             row_cost_values(row, res, suffix);
+        free(suffix);
         if (status == SIM_OK && k == 0)   /* a solver's declared bound (0: the engine's) */
             vfy_values_set(&row->values, "violations_allowed",
                            vfy_external(run->o) && run->o->solver
@@ -735,14 +903,16 @@ static const vfy_row *run_refused(const vfy_case_run *run)
     return NULL;
 }
 
-/* Why a check of the whole case is not judged when row `no` was refused. */
-static const char *needs_refused_row(const vfy_case_run *run, const vfy_row *no, char *buf,
-                                     size_t len)
+/* Why a check of the whole case is not judged when row `no` was refused
+ * (allocated), or NULL when out of memory. */
+static char *needs_refused_row(const vfy_case_run *run, const vfy_row *no)
 {
-    char label[160];
-    snprintf(buf, len, "needs a row the solver refused (%s: %s)",
-             vfy_expand(label, sizeof label, row_label_template(run->d), run, no), no->refused);
-    return buf;
+    char *label = vfy_expand_alloc(row_label_template(run->d), run, no);
+    char *why = label != NULL ? vfy_aprintf("needs a row the solver refused (%s: %s)", label,
+                                            no->refused)
+                              : NULL;
+    free(label);
+    return why;
 }
 
 /* Whether row's result lacks something (an external solver's NaN or a
@@ -799,6 +969,85 @@ static int reported_quantity(const vfy_row *row, const char *name)
     return row != NULL && sim_steady_find(&row->solver, name) >= 0;
 }
 
+/* Record a SKIP with an allocated reason (NULL: out of memory), and free it. */
+static void skip_with(vfy_report *r, const char *name, char *why)
+{
+    vfy_skip(r, name, why != NULL ? why : "out of memory");
+    free(why);
+}
+
+/* The operand of check c an external solver's incomplete result left NaN
+ * (row NULL: a check of the case), or NULL. */
+static const char *gone_operand(const vfy_case_run *run, const vfy_row *row,
+                                const vfy_check_spec *c)
+{
+    if (row != NULL)
+        return operand_missing(run, row, c->value)      ? c->value
+               : operand_missing(run, row, c->expected) ? c->expected
+                                                        : NULL;
+    return c->value && isnan(lookup(run, NULL, c->value))          ? c->value
+           : c->expected && isnan(lookup(run, NULL, c->expected)) ? c->expected
+                                                                  : NULL;
+}
+
+/* Why check c is not judged for want of operand `gone` (allocated). */
+static char *gone_reason(const vfy_row *row, const char *gone, const char *refused)
+{
+    if (refused != NULL)
+        return vfy_aprintf("%s: %s", gone, refused);
+    if (reported_quantity(row, gone))
+        return vfy_aprintf("%s not reported by the solver", gone);
+    return vfy_aprintf("%s needs quantities the solver did not report", gone);
+}
+
+/* A known difference as r->differs says it: what the paper prints, and the
+ * judging check by its name after the row's label (allocated). */
+static char *differs_text(const vfy_case_run *run, const vfy_row *row, const vfy_difference *d)
+{
+    const char *by = d->judged_by, *prefix = row_label_template(run->d);
+    if (strncmp(by, prefix, strlen(prefix)) == 0 && by[strlen(prefix)] == ' ')
+        by += strlen(prefix) + 1;
+    char *judge = vfy_expand_alloc(by, run, row);
+    char *text = judge != NULL ? vfy_aprintf("%s; judged by \"%s\" (docs/differences.md)",
+                                             d->paper, judge)
+                               : NULL;
+    free(judge);
+    return text;
+}
+
+/* One check of run_checks: its guard, a row the solver refused (no, with
+ * the reason `refused`), an operand an incomplete result left out, then
+ * its rule. */
+static void judge_check(vfy_case_run *run, vfy_row *row, const vfy_check_spec *c,
+                        vfy_report *r, const vfy_row *no, const char *refused, int incomplete)
+{
+    const vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard)
+                                                  : VFY_JUDGE;
+    if (g == VFY_OMIT)
+        return;
+    char *expanded = vfy_expand_alloc(c->name, run, row);
+    const char *name = expanded != NULL ? expanded : c->name;   /* no memory: the template */
+    const char *gone = NULL;
+    r->check_id = c->name;
+    if (c->builtin_only && vfy_external(run->o))
+        skip_with(r, name, vfy_aprintf("built-in engine only: %s", c->builtin_only));
+    else if (row != NULL && no != NULL)   /* nothing of the row to judge */
+        vfy_skip(r, name, refused);
+    else if (incomplete && (gone = gone_operand(run, row, c)) != NULL)
+        skip_with(r, name, gone_reason(row, gone, no != NULL ? refused : NULL));
+    else if (g == VFY_GUARD_SKIP)
+        skip_with(r, name, vfy_expand_alloc(c->guard.reason, run, row));
+    else {
+        char *differs = c->differs != NULL ? differs_text(run, row, c->differs) : NULL;
+        if (c->differs != NULL)
+            r->differs = differs != NULL ? differs : c->differs->paper;
+        c->rule(r, name, run, row, c);
+        r->differs = NULL;
+        free(differs);
+    }
+    free(expanded);
+}
+
 /* The checks of a row, or of the case (row NULL: no guards).  On an
  * external solver's incomplete result, a NaN any rule meets is a SKIP. */
 static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *checks,
@@ -807,71 +1056,22 @@ static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *ch
     const int incomplete =
         vfy_external(run->o) && (row != NULL ? row_incomplete(row) : run_incomplete(run));
     const char *const was = r->missing;
-    char label[160] = "", refused[480] = "";
     const vfy_row *no = row != NULL ? (row->refused[0] ? row : NULL) : run_refused(run);
-    if (no != NULL && row != NULL)
-        snprintf(refused, sizeof refused, "solver refused: %s", row->refused);
-    else if (no != NULL)   /* a case check: it may need the refused row */
-        needs_refused_row(run, no, refused, sizeof refused);
+    char *refused = no == NULL  ? NULL
+                    : row != NULL ? vfy_aprintf("solver refused: %s", row->refused)
+                                  : needs_refused_row(run, no);   /* it may need that row */
+    const char *why = no == NULL ? "" : refused != NULL ? refused : "out of memory";
     if (incomplete)
-        r->missing = refused[0] ? refused : "needs quantities the solver did not report";
-    if (row != NULL)
-        vfy_expand(label, sizeof label, row_label_template(run->d), run, row);
-    r->row = row != NULL ? label : "";
-    for (const vfy_check_spec *c = checks; c && c->name; c++) {
-        vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
-        if (g == VFY_OMIT)
-            continue;
-        char name[160], why[320], differs[400];
-        vfy_expand(name, sizeof name, c->name, run, row);
-        r->check_id = c->name;
-        if (c->builtin_only && vfy_external(run->o)) {
-            snprintf(why, sizeof why, "built-in engine only: %s", c->builtin_only);
-            vfy_skip(r, name, why);
-            continue;
-        }
-        if (row != NULL && no != NULL) {   /* nothing of the row to judge */
-            vfy_skip(r, name, refused);
-            continue;
-        }
-        const char *gone = NULL;   /* an operand an external solver did not report */
-        if (row != NULL && incomplete)
-            gone = operand_missing(run, row, c->value)      ? c->value
-                   : operand_missing(run, row, c->expected) ? c->expected
-                                                            : NULL;
-        if (row == NULL && incomplete)   /* case checks */
-            gone = c->value && isnan(lookup(run, NULL, c->value))          ? c->value
-                   : c->expected && isnan(lookup(run, NULL, c->expected)) ? c->expected
-                                                                          : NULL;
-        if (gone != NULL) {
-            if (no != NULL)
-                snprintf(why, sizeof why, "%s: %s", gone, refused);
-            else if (reported_quantity(row, gone))
-                snprintf(why, sizeof why, "%s not reported by the solver", gone);
-            else
-                snprintf(why, sizeof why, "%s needs quantities the solver did not report", gone);
-            vfy_skip(r, name, why);
-            continue;
-        }
-        if (g == VFY_GUARD_SKIP) {
-            vfy_skip(r, name, vfy_expand(why, sizeof why, c->guard.reason, run, row));
-            continue;
-        }
-        if (c->differs != NULL) {   /* the judging check by its name after the row's label */
-            const char *by = c->differs->judged_by, *prefix = row_label_template(run->d);
-            char judge[200];
-            if (strncmp(by, prefix, strlen(prefix)) == 0 && by[strlen(prefix)] == ' ')
-                by += strlen(prefix) + 1;
-            snprintf(differs, sizeof differs, "%s; judged by \"%s\" (docs/differences.md)",
-                     c->differs->paper, vfy_expand(judge, sizeof judge, by, run, row));
-            r->differs = differs;
-        }
-        c->rule(r, name, run, row, c);
-        r->differs = NULL;
-    }
+        r->missing = why[0] ? why : "needs quantities the solver did not report";
+    char *label = row != NULL ? vfy_expand_alloc(row_label_template(run->d), run, row) : NULL;
+    r->row = label != NULL ? label : "";
+    for (const vfy_check_spec *c = checks; c && c->name; c++)
+        judge_check(run, row, c, r, no, why, incomplete);
     r->missing = was;
     r->check_id = NULL;
     r->row = NULL;
+    free(label);
+    free(refused);
 }
 
 int vfy_parse_columns(const char *spec, vfy_column **cols, size_t *ncols, char **text,
@@ -940,7 +1140,8 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
     }
     vfy_values_set(&row->values, "index", (double)row->index);
     vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
-    if (d->needs || (d->figures[0].kind == VFY_FIGURE_CURVES && d->figures[0].refs[0])) {
+    if (d->needs || (d->figures && d->figures[0].kind == VFY_FIGURE_CURVES
+                     && d->figures[0].refs && d->figures[0].refs[0])) {
         sim_error err;
         if ((status = vfy_scene_references(&row->scene, &row->refs, &err)) != SIM_OK) {
             vfy_scene_format_error(&row->scene, &err, msg, msglen);
@@ -963,79 +1164,118 @@ static sim_status run_row(vfy_case_run *run, const vfy_sweep *s, vfy_row *row, v
         return SIM_ENOMEM;
     }
     if (d->row_progress && run->o->progress && row->refused[0] == '\0') {
-        char line[512];
-        fprintf(run->o->progress, "   %s\n", vfy_expand(line, sizeof line, d->row_progress, run,
-                                                         row));
+        char *line = vfy_expand_alloc(d->row_progress, run, row);
+        fprintf(run->o->progress, "   %s\n", line != NULL ? line : d->row_progress);
+        free(line);
     }
     return vfy_write_rows_so_far(run->o, run->c->name, &run->table, &row->solver, msg, msglen);
 }
 
 /* ------------------------------------------------------------ figure */
 
-/* "LABEL=name" or "name": the label into label, returns the name. */
-static const char *label_and_name(const char *spec, char *label, size_t len)
+/* "LABEL=name" or "name": the label into *label (allocated; NULL when out
+ * of memory), returns the name. */
+static const char *label_and_name(const char *spec, char **label)
 {
     const char *eq = strchr(spec, '=');
-    snprintf(label, len, "%.*s", (int)(eq ? (size_t)(eq - spec) : strlen(spec)), spec);
+    *label = vfy_aprintf("%.*s", (int)(eq ? (size_t)(eq - spec) : strlen(spec)), spec);
     return eq ? eq + 1 : spec;
 }
 
-/* VFY_FIGURE_POINTS (driver.h). */
-static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
+/* The length of a NULL-terminated list (NULL: 0). */
+static size_t list_length(const char *const *list)
+{
+    size_t n = 0;
+    while (list != NULL && list[n] != NULL)
+        n++;
+    return n;
+}
+
+/* Free count allocated strings and their array. */
+static void free_strings(char **s, size_t count)
+{
+    for (size_t i = 0; s != NULL && i < count; i++)
+        free(s[i]);
+    free(s);
+}
+
+/* VFY_FIGURE_POINTS (driver.h): text[] holds the series' labels, their
+ * "_ci" names and the references' labels, names[] the values' names (series
+ * first); both made here. */
+static int write_points_with(vfy_case_run *run, const vfy_figure_spec *f, size_t nseries,
+                             size_t ncurves, char **text, const char **names, double *buf,
+                             const double **arrays, const char *name, const char *title)
 {
     enum { FINE = 81 };
-    size_t nseries = 0, ncurves = 0, np = 0;
-    while (nseries < 4 && f->series[nseries])
-        nseries++;
-    while (ncurves < 4 && f->refs[ncurves])
-        ncurves++;
-    double *buf = malloc(((1 + 2 * nseries) * run->nrows + (1 + ncurves) * FINE) * sizeof *buf);
-    if (buf == NULL)
-        return -1;
-    double *x = buf, *y = x + run->nrows, *ci = y + nseries * run->nrows;
-    double *xfine = ci + nseries * run->nrows, *yfine = xfine + FINE;
-    char labels[8][64], cinames[4][48];
-    const char *slabels[4], *clabels[4];
-    const double *ys[4], *cis[4], *yfs[4];
-    for (size_t i = 0; i < run->nrows; i++) {
+    const size_t rows = run->nrows;
+    size_t np = 0;
+    double *x = buf, *y = x + rows, *ci = y + nseries * rows;
+    double *xfine = ci + nseries * rows, *yfine = xfine + FINE;
+    for (size_t i = 0; i < rows; i++) {
         const vfy_row *row = &run->rows[i];
         int finite = 1;
         for (size_t j = 0; j < nseries; j++) {
-            const char *name = label_and_name(f->series[j], labels[j], sizeof labels[j]);
-            snprintf(cinames[j], sizeof cinames[j], "%s_ci", name);
-            y[j * run->nrows + np] = lookup(run, row, name);
-            ci[j * run->nrows + np] = lookup(run, row, cinames[j]);
-            finite &= isfinite(y[j * run->nrows + np]);
+            y[j * rows + np] = lookup(run, row, names[j]);
+            ci[j * rows + np] = lookup(run, row, text[nseries + j]);
+            finite &= isfinite(y[j * rows + np]);
         }
         x[np] = lookup(run, row, f->x);
         np += (size_t)finite;
     }
-    sim_scene at = run->rows[run->nrows - 1].scene;
+    sim_scene at = run->rows[rows - 1].scene;
     for (size_t k = 0; k < FINE; k++) {
         xfine[k] = f->x_lo + (f->x_hi - f->x_lo) * (double)k / (FINE - 1);
         at.collisions.restitution = xfine[k];
         for (size_t j = 0; j < ncurves; j++)
-            yfine[j * FINE + k] = vfy_reference_value(
-                label_and_name(f->refs[j], labels[4 + j], sizeof labels[4 + j]), &at);
+            yfine[j * FINE + k] = vfy_reference_value(names[nseries + j], &at);
     }
-    for (size_t j = 0; j < 4; j++) {
-        slabels[j] = labels[j];
-        clabels[j] = labels[4 + j];
-        ys[j] = y + j * run->nrows;
-        cis[j] = ci + j * run->nrows;
-        yfs[j] = yfine + j * FINE;
+    for (size_t j = 0; j < nseries; j++) {
+        arrays[j] = y + j * rows;
+        arrays[nseries + j] = ci + j * rows;
     }
-    char name[160], title[256];
-    snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
-    vfy_expand(title, sizeof title, f->title, run, NULL);
+    for (size_t j = 0; j < ncurves; j++)
+        arrays[2 * nseries + j] = yfine + j * FINE;
     const vfy_points points = {.name = name, .title = title, .xlabel = f->xlabel,
                                .ylabel = f->ylabel, .npoints = np, .x = x, .nseries = nseries,
-                               .series = slabels, .y = ys, .ci = cis,
-                               .nfine = ncurves ? FINE : 0, .xfine = xfine,
-                               .ncurves = ncurves, .curves = clabels, .yfine = yfs,
-                               .comment = run->comment};
-    int rc = np > 0 ? vfy_write_points(run->o, &points) : 0;
+                               .series = (const char *const *)text, .y = arrays,
+                               .ci = arrays + nseries, .nfine = ncurves ? FINE : 0,
+                               .xfine = xfine, .ncurves = ncurves,
+                               .curves = (const char *const *)text + 2 * nseries,
+                               .yfine = arrays + 2 * nseries, .comment = run->comment};
+    return np > 0 ? vfy_write_points(run->o, &points) : 0;
+}
+
+/* VFY_FIGURE_POINTS (driver.h): as many series and references as the
+ * description lists. */
+static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
+{
+    enum { FINE = 81 };
+    const size_t nseries = list_length(f->series), ncurves = list_length(f->refs);
+    const size_t nt = 2 * nseries + ncurves;
+    double *buf = malloc(((1 + 2 * nseries) * run->nrows + (1 + ncurves) * FINE) * sizeof *buf);
+    char **text = calloc(nt + 1, sizeof *text);
+    const char **names = calloc(nseries + ncurves + 1, sizeof *names);
+    const double **arrays = calloc(nt + 1, sizeof *arrays);
+    char *title = vfy_expand_alloc(f->title, run, NULL);
+    char *name = vfy_aprintf("%s%s", run->c->name, f->suffix ? f->suffix : "");
+    int rc = buf && text && names && arrays && title && name ? 0 : -1;
+    for (size_t j = 0; j < nseries && rc == 0; j++) {
+        names[j] = label_and_name(f->series[j], &text[j]);
+        text[nseries + j] = vfy_aprintf("%s_ci", names[j]);
+        rc = text[j] && text[nseries + j] ? 0 : -1;
+    }
+    for (size_t j = 0; j < ncurves && rc == 0; j++) {
+        names[nseries + j] = label_and_name(f->refs[j], &text[2 * nseries + j]);
+        rc = text[2 * nseries + j] ? 0 : -1;
+    }
+    if (rc == 0)
+        rc = write_points_with(run, f, nseries, ncurves, text, names, buf, arrays, name, title);
     free(buf);
+    free_strings(text, nt);
+    free(names);
+    free(arrays);
+    free(title);
+    free(name);
     return rc;
 }
 
@@ -1058,88 +1298,85 @@ static int rows_share_grid(const vfy_case_run *run)
  * t_end and outputs differ by row): each row a curve on its own times, with
  * its references dashed, as an xy figure (one gnuplot index block a curve),
  * t on a log axis (the rows' spans differ) and y too when it is positive and
- * spans two decades or more. */
+ * spans two decades or more.  labels[] (ncurves) are filled here. */
+static int curves_by_row_with(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
+                              const char *title, const char *quantity, size_t nref,
+                              vfy_xy_curve *curves, char **labels, double *buf)
+{
+    double *at = buf;
+    size_t c = 0;
+    for (size_t i = 0; i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        const size_t M = row->res.outputs;
+        char *label = vfy_expand_alloc(row_label_template(run->d), run, row);
+        for (size_t j = 0; j <= nref; j++, c++) {
+            double *mean = at, *ci = j == 0 ? at + M : NULL;
+            at += j == 0 ? 2 * M : M;
+            if (vfy_row_series(row, j == 0 ? f->quantity : f->refs[j - 1], mean, ci) != 0)
+                for (size_t m = 0; m < M; m++)   /* no such series: no points */
+                    mean[m] = NAN;
+            labels[c] = vfy_aprintf("%s%s%s", label ? label : "", j ? ": " : "",
+                                    j ? f->refs[j - 1] : "");
+            curves[c] = (vfy_xy_curve){.label = labels[c] ? labels[c] : "", .reference = j > 0,
+                                       .count = M, .x = row->res.t, .y = {mean}, .ci = {ci}};
+        }
+        free(label);
+    }
+    int positive = 1;
+    double lo = INFINITY, hi = 0.0;
+    for (size_t k = 0; k < c; k++)
+        for (size_t m = 0; m < curves[k].count; m++) {
+            const double y = curves[k].y[0][m];
+            if (isnan(y))
+                continue;   /* left out of the figure */
+            positive &= y > 0.0;
+            lo = fmin(lo, y);
+            hi = fmax(hi, y);
+        }
+    const vfy_xy_figure xy = {.name = name, .title = title, .xlabel = "t",
+                              .comment = run->comment, .logx = 1,
+                              .logy = positive && hi >= 100.0 * lo, .npanels = 1,
+                              .ylabel = {quantity}, .ncurves = c, .curves = curves};
+    return vfy_write_xy(run->o, &xy);
+}
+
 static int write_curves_by_row(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
                                const char *title, const char *quantity)
 {
-    size_t nref = 0, total = 0;
-    while (nref < 4 && f->refs[nref])
-        nref++;
+    const size_t nref = list_length(f->refs);
+    size_t total = 0;
     for (size_t i = 0; i < run->nrows; i++)
         total += run->rows[i].res.outputs;
     const size_t ncurves = run->nrows * (1 + nref);
     vfy_xy_curve *curves = calloc(ncurves, sizeof *curves);
-    char (*labels)[160] = calloc(ncurves, sizeof *labels);
+    char **labels = calloc(ncurves, sizeof *labels);
     double *buf = malloc((2 + nref) * total * sizeof *buf);
     int rc = -1;
-    if (curves != NULL && labels != NULL && buf != NULL) {
-        double *at = buf;
-        size_t c = 0;
-        for (size_t i = 0; i < run->nrows; i++) {
-            const vfy_row *row = &run->rows[i];
-            const size_t M = row->res.outputs;
-            char label[96];
-            vfy_expand(label, sizeof label, row_label_template(run->d), run, row);
-            for (size_t j = 0; j <= nref; j++, c++) {
-                double *mean = at, *ci = j == 0 ? at + M : NULL;
-                at += j == 0 ? 2 * M : M;
-                if (vfy_row_series(row, j == 0 ? f->quantity : f->refs[j - 1], mean, ci) != 0)
-                    for (size_t m = 0; m < M; m++)   /* no such series: no points */
-                        mean[m] = NAN;
-                snprintf(labels[c], sizeof labels[c], "%s%s%s", label, j ? ": " : "",
-                         j ? f->refs[j - 1] : "");
-                curves[c] = (vfy_xy_curve){.label = labels[c], .reference = j > 0, .count = M,
-                                           .x = row->res.t, .y = {mean}, .ci = {ci}};
-            }
-        }
-        int positive = 1;
-        double lo = INFINITY, hi = 0.0;
-        for (size_t k = 0; k < c; k++)
-            for (size_t m = 0; m < curves[k].count; m++) {
-                const double y = curves[k].y[0][m];
-                if (isnan(y))
-                    continue;   /* left out of the figure */
-                positive &= y > 0.0;
-                lo = fmin(lo, y);
-                hi = fmax(hi, y);
-            }
-        const vfy_xy_figure xy = {.name = name, .title = title, .xlabel = "t",
-                                  .comment = run->comment, .logx = 1,
-                                  .logy = positive && hi >= 100.0 * lo, .npanels = 1,
-                                  .ylabel = {quantity}, .ncurves = ncurves, .curves = curves};
-        rc = vfy_write_xy(run->o, &xy);
-    }
+    if (curves != NULL && labels != NULL && buf != NULL)
+        rc = curves_by_row_with(run, f, name, title, quantity, nref, curves, labels, buf);
     free(curves);
-    free(labels);
+    free_strings(labels, ncurves);
     free(buf);
     return rc;
 }
 
-static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char *title)
+/* A curves figure over rows that share their output times (vfy_write_curves). */
+static int curves_shared(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
+                         const char *title, const char *quantity)
 {
-    if (f->kind == VFY_FIGURE_POINTS)
-        return write_points(run, f);
     const vfy_row *last = &run->rows[run->nrows - 1];
-    char name[160], quantity[64];   /* "T@*" is drawn as T */
-    snprintf(name, sizeof name, "%s%s", run->c->name, f->suffix ? f->suffix : "");
-    snprintf(quantity, sizeof quantity, "%.*s",
-             (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
-             f->quantity);
-    if (!rows_share_grid(run))
-        return write_curves_by_row(run, f, name, title, quantity);
     const int extra = f->extrapolated && run->extra_mean != NULL;
-    size_t M = last->res.outputs, rows = run->nrows + (size_t)extra, nref = 0;
-    double *buf = malloc((2 * rows + 4) * M * sizeof *buf);
+    const size_t M = last->res.outputs, rows = run->nrows + (size_t)extra;
+    const size_t nref = list_length(f->refs);
+    double *buf = malloc((2 * rows + nref) * M * sizeof *buf);
     size_t *n = malloc(rows * sizeof *n);
+    const double **refs = malloc((nref + 1) * sizeof *refs);
     int rc = -1;
-    if (buf != NULL && n != NULL) {
-        const char *names[4];
-        const double *refs[4];
+    if (buf != NULL && n != NULL && refs != NULL) {
         double *mean = buf, *ci = buf + rows * M, *ref = buf + 2 * rows * M;
-        for (; nref < 4 && f->refs[nref]; nref++) {
-            vfy_row_series(last, f->refs[nref], ref + nref * M, NULL);
-            names[nref] = f->refs[nref];
-            refs[nref] = ref + nref * M;
+        for (size_t j = 0; j < nref; j++) {
+            vfy_row_series(last, f->refs[j], ref + j * M, NULL);
+            refs[j] = ref + j * M;
         }
         for (size_t i = 0; i < run->nrows; i++) {
             n[i] = run->rows[i].solver.particles.n;
@@ -1151,78 +1388,96 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
             memcpy(ci + (rows - 1) * M, run->extra_ci, M * sizeof *ci);
         }
         rc = vfy_write_curves(run->o, name, title, run->comment, last->res.t, M, nref,
-                              names, refs, rows, n, NULL, mean, ci, quantity, f->x_from,
+                              f->refs, refs, rows, n, NULL, mean, ci, quantity, f->x_from,
                               f->panel_per_row);
     }
     free(buf);
     free(n);
+    free(refs);
+    return rc;
+}
+
+static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char *title)
+{
+    if (f->kind == VFY_FIGURE_POINTS)
+        return write_points(run, f);
+    char *name = vfy_aprintf("%s%s", run->c->name, f->suffix ? f->suffix : "");
+    char *quantity = vfy_aprintf(   /* "T@*" is drawn as T */
+        "%.*s", (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
+        f->quantity);
+    int rc = -1;
+    if (name != NULL && quantity != NULL)
+        rc = rows_share_grid(run) ? curves_shared(run, f, name, title, quantity)
+                                  : write_curves_by_row(run, f, name, title, quantity);
+    free(name);
+    free(quantity);
     return rc;
 }
 
 /* ------------------------------------------------------------ provenance */
 
-typedef void (*row_field_fn)(const vfy_row *row, char *buf, size_t len);
+/* A row's field of the provenance, allocated (NULL: out of memory). */
+typedef char *(*row_field_fn)(const vfy_row *row);
 
-static void field_scene(const vfy_row *row, char *buf, size_t len)
+static char *field_scene(const vfy_row *row)
 {
-    snprintf(buf, len, "%s", vfy_display_path(row->solver.file));
+    return vfy_strdup(vfy_display_path(row->solver.file));
 }
-static void field_seed(const vfy_row *row, char *buf, size_t len)
+static char *field_seed(const vfy_row *row)
 {
-    snprintf(buf, len, "%llu", (unsigned long long)row->solver.seed);
+    return vfy_aprintf("%llu", (unsigned long long)row->solver.seed);
 }
-static void field_n(const vfy_row *row, char *buf, size_t len)
+static char *field_n(const vfy_row *row) { return vfy_aprintf("%zu", row->solver.particles.n); }
+static char *field_ensembles(const vfy_row *row)
 {
-    snprintf(buf, len, "%zu", row->solver.particles.n);
+    return vfy_aprintf("%zu", row->solver.particles.ensembles);
 }
-static void field_ensembles(const vfy_row *row, char *buf, size_t len)
+static char *field_outputs(const vfy_row *row)
 {
-    snprintf(buf, len, "%zu", row->solver.particles.ensembles);
-}
-static void field_outputs(const vfy_row *row, char *buf, size_t len)
-{
-    snprintf(buf, len, "%zu outputs on [0, %g]", row->solver.outputs, row->solver.t_end);
+    return vfy_aprintf("%zu outputs on [0, %g]", row->solver.outputs, row->solver.t_end);
 }
 
 /* Append "LABEL v" when every row has the same value, else "LABEL v1, v2,
  * ... (by row)", each followed by unit. */
-static void append_field(const vfy_case_run *run, char *buf, size_t len, const char *label,
+static void append_field(const vfy_case_run *run, vfy_text *t, const char *label,
                          row_field_fn field, const char *unit)
 {
-    char first[256], v[256];
-    field(&run->rows[0], first, sizeof first);
+    char *first = field(&run->rows[0]);
     int same = 1;
     for (size_t i = 1; i < run->nrows && same; i++) {
-        field(&run->rows[i], v, sizeof v);
-        same = strcmp(v, first) == 0;
+        char *v = field(&run->rows[i]);
+        same = v != NULL && first != NULL && strcmp(v, first) == 0;
+        free(v);
     }
-    size_t used = strlen(buf);
-    used += (size_t)snprintf(buf + used, used < len ? len - used : 0, "%s%s", label, first);
-    for (size_t i = 1; i < run->nrows && !same && used < len; i++) {
-        field(&run->rows[i], v, sizeof v);
-        used += (size_t)snprintf(buf + used, len - used, ", %s", v);
+    vfy_text_printf(t, "%s%s", label, first ? first : "");
+    for (size_t i = 1; i < run->nrows && !same; i++) {
+        char *v = field(&run->rows[i]);
+        vfy_text_printf(t, ", %s", v ? v : "");
+        free(v);
     }
-    if (used < len)
-        snprintf(buf + used, len - used, "%s%s", unit, same ? "" : " (by row)");
+    vfy_text_printf(t, "%s%s", unit, same ? "" : " (by row)");
+    free(first);
 }
 
 /* The provenance line of the tables and figures ({comment}): each row's own
  * scene file, seed, n, N and output times, said once where the rows share
- * them. */
-static void run_provenance(vfy_case_run *run)
+ * them.  0, or -1 when out of memory. */
+static int run_provenance(vfy_case_run *run)
 {
-    char *buf = run->comment;
-    const size_t len = sizeof run->comment;
-    snprintf(buf, len, "gdsmc %s verify: ", GDSMC_VERSION);
-    append_field(run, buf, len, "scene ", field_scene, "");
-    append_field(run, buf, len, ", seed ", field_seed, "");
-    append_field(run, buf, len, ", n = ", field_n, "");
-    append_field(run, buf, len, ", N = ", field_ensembles, " ensembles");
-    append_field(run, buf, len, ", ", field_outputs, "");
+    vfy_text t = {0};
+    vfy_text_printf(&t, "gdsmc %s verify: ", GDSMC_VERSION);
+    append_field(run, &t, "scene ", field_scene, "");
+    append_field(run, &t, ", seed ", field_seed, "");
+    append_field(run, &t, ", n = ", field_n, "");
+    append_field(run, &t, ", N = ", field_ensembles, " ensembles");
+    append_field(run, &t, ", ", field_outputs, "");
     if (vfy_external(run->o))   /* the command, and what the solver said it is */
-        snprintf(buf + strlen(buf), len - strlen(buf), "; solver '%s'%s%s%s",
-                 run->o->solver->command, run->o->solver->line[0] ? " (" : "",
-                 run->o->solver->line, run->o->solver->line[0] ? ")" : "");
+        vfy_text_printf(&t, "; solver '%s'%s%s%s", run->o->solver->command,
+                        run->o->solver->line[0] ? " (" : "", run->o->solver->line,
+                        run->o->solver->line[0] ? ")" : "");
+    free(run->comment);
+    run->comment = vfy_text_take(&t);
+    return run->comment != NULL ? 0 : -1;
 }
 
 /* ------------------------------------------------------------ extrapolation */
@@ -1275,15 +1530,20 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     vfy_values_set(&run->values, "wall_total", wall);
     vfy_values_set(&run->values, "rows", (double)run->nrows);
     vfy_values_set(&run->values, "outputs", (double)last->res.outputs);
-    run_provenance(run);
+    if (run_provenance(run) != 0) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
     /* the hook's own checks on what an incomplete external result left NaN */
-    char refused[480];
     const vfy_row *no = run_refused(run);
+    char *refused = no != NULL ? needs_refused_row(run, no) : NULL;
     if (vfy_external(run->o) && run_incomplete(run))
-        r->missing = no != NULL ? needs_refused_row(run, no, refused, sizeof refused)
-                                : "needs quantities the solver did not report";
+        r->missing = no == NULL          ? "needs quantities the solver did not report"
+                     : refused != NULL ? refused
+                                       : "out of memory";
     sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
     r->missing = NULL;
+    free(refused);
     if (status != SIM_OK)
         return status;
     run_checks(run, NULL, d->case_checks, r);
@@ -1306,24 +1566,25 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
             snprintf(msg, msglen, "out of memory");
             return SIM_ENOMEM;
         }
-    size_t notes_len = strlen(d->notes) + 4096;
-    char title[256], *notes = malloc(notes_len);
-    if (notes == NULL) {
+    char *title = vfy_expand_alloc(d->title, run, NULL);
+    char *notes = vfy_expand_alloc(d->notes, run, NULL);
+    if (title == NULL || notes == NULL) {
+        free(title);
+        free(notes);
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;
     }
-    vfy_expand(title, sizeof title, d->title, run, NULL);
-    vfy_expand(notes, notes_len, d->notes, run, NULL);
     status = vfy_write_case_tables(run->o, run->c->name, &run->table, run->comment, title,
                                     notes, run->second.ncols ? &run->second : NULL,
                                     run->second_suffix, run->second_title, run->second_notes,
                                     msg, msglen);
     free(notes);
-    for (size_t k = 0; k < VFY_FIGURES_MAX && d->figures[k].kind != VFY_FIGURE_NONE
-                       && status == SIM_OK;
-         k++)
-        if (write_figure(run, &d->figures[k], title) != 0)
+    for (const vfy_figure_spec *f = d->figures; f && f->kind != VFY_FIGURE_NONE
+                                                && status == SIM_OK;
+         f++)
+        if (write_figure(run, f, title) != 0)
             status = vfy_io_error(run->c->name, msg, msglen);
+    free(title);
     return status;
 }
 
@@ -1331,12 +1592,9 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
 
 /* What a check operand `name` is, for the row's solver scene: a quantity
  * the result file reports, or what the case makes from it (--dry-run). */
-static const char *operand_kind(const vfy_case_run *run, const vfy_row *row, const char *name)
+static const char *base_kind(const vfy_case_run *run, const vfy_row *row, char *base)
 {
     const vfy_case_desc *d = run->d;
-    const size_t len = strcspn(name, "@");
-    char base[64];
-    snprintf(base, sizeof base, "%.*s", (int)(len < sizeof base ? len : sizeof base - 1), name);
     if (sim_observable_find(&row->solver, base, strlen(base)) >= 0)
         return "reported: an observable, at every output time";
     if (sim_steady_find(&row->solver, base) >= 0)
@@ -1370,23 +1628,29 @@ static const char *operand_kind(const vfy_case_run *run, const vfy_row *row, con
     return "made by the case from the result";   /* a metric, a hook's value */
 }
 
-/* Add name (without "@VARIANT") to the list `reported` (" a b ", cap
- * bytes) once, when the result file reports it. */
-static void note_reported(const vfy_case_run *run, const vfy_row *row, const char *name,
-                          char *reported, size_t cap)
+static const char *operand_kind(const vfy_case_run *run, const vfy_row *row, const char *name)
 {
-    char word[72];
-    snprintf(word, sizeof word, " %.*s ", (int)strcspn(name, "@"), name);
-    const size_t used = strlen(reported);
-    if (strncmp(operand_kind(run, row, name), "reported", 8) != 0
-        || strstr(reported, word) != NULL || used + strlen(word) >= cap)
-        return;
-    snprintf(reported + used, cap - used, "%s", word + (used > 0));   /* one space between */
+    char *base = vfy_aprintf("%.*s", (int)strcspn(name, "@"), name);   /* without @VARIANT */
+    const char *kind = base != NULL ? base_kind(run, row, base) : "(out of memory)";
+    free(base);
+    return kind;
+}
+
+/* Add name (without "@VARIANT") to the list `reported` (" a b ") once,
+ * when the result file reports it. */
+static void note_reported(const vfy_case_run *run, const vfy_row *row, const char *name,
+                          vfy_text *reported)
+{
+    char *word = vfy_aprintf(" %.*s ", (int)strcspn(name, "@"), name);
+    if (word != NULL && strncmp(operand_kind(run, row, name), "reported", 8) == 0
+        && strstr(vfy_text_str(reported), word) == NULL)   /* one space between */
+        vfy_text_printf(reported, "%s", word + (reported->len > 0));
+    free(word);
 }
 
 /* One check's operands and what each is; the reported ones noted. */
 static void dry_check(FILE *out, const vfy_case_run *run, const vfy_row *row,
-                      const vfy_check_spec *c, char *reported, size_t cap)
+                      const vfy_check_spec *c, vfy_text *reported)
 {
     fprintf(out, "     %s\n", c->name);
     const char *const ops[] = {c->value, c->expected, c->plus, c->plus_quick};
@@ -1395,7 +1659,7 @@ static void dry_check(FILE *out, const vfy_case_run *run, const vfy_row *row,
         if (ops[k] != NULL) {
             fprintf(out, "       %-13s %-22s %s\n", role[k], ops[k],
                     operand_kind(run, row, ops[k]));
-            note_reported(run, row, ops[k], reported, cap);
+            note_reported(run, row, ops[k], reported);
         }
     for (const vfy_metric *m = run->d->metrics; m && m->name; m++) {
         if (c->value == NULL || strcmp(m->name, c->value) != 0)
@@ -1405,9 +1669,72 @@ static void dry_check(FILE *out, const vfy_case_run *run, const vfy_row *row,
             if (from[k] != NULL) {
                 fprintf(out, "       %-13s %-22s %s\n", "  made from", from[k],
                         operand_kind(run, row, from[k]));
-                note_reported(run, row, from[k], reported, cap);
+                note_reported(run, row, from[k], reported);
             }
     }
+}
+
+/* --dry-run: row i's scene for variant k, written to dir/row-NN[@VARIANT].ini,
+ * and its line on out. */
+static sim_status dry_row(FILE *out, vfy_case_run *run, const vfy_sweep *s, vfy_row *row,
+                          size_t k, const char *dir, char *msg, size_t msglen)
+{
+    const char *variant;
+    int vlen;
+    const char *sets = variant_parts(run->d, k, &variant, &vlen);
+    sim_status status = row_scenes(run, s, row, sets, msg, msglen);
+    if (status != SIM_OK)
+        return status;
+    vfy_values_set(&row->values, "index", (double)row->index);
+    vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
+    char *path = vfy_aprintf("%s/row-%02zu%s%.*s.ini", dir, row->index + 1, vlen ? "@" : "",
+                             vlen, variant);
+    char *label = vfy_expand_alloc(row_label_template(run->d), run, row);
+    if (path == NULL || label == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        status = SIM_ENOMEM;
+    } else {
+        FILE *f = fopen(path, "w");
+        const int written = f != NULL && vfy_scene_write(f, &row->solver) == 0;
+        if (f == NULL || fclose(f) != 0 || !written) {
+            snprintf(msg, msglen, "%s: cannot write: %s", path, strerror(errno));
+            status = SIM_EIO;
+        } else {
+            fprintf(out, "   row %zu%s%.*s: %s -> %s\n", row->index + 1,
+                    vlen ? " variant " : "", vlen, variant, label, path);
+        }
+    }
+    free(path);
+    free(label);
+    return status;
+}
+
+/* --dry-run: what the checks read, and which of it the result reports. */
+static void dry_checks(FILE *out, const vfy_case_run *run, const vfy_row *row)
+{
+    const vfy_case_desc *d = run->d;
+    vfy_text reported = {0};
+    if (d->checks && d->checks->name) {
+        fprintf(out, "   checks of every row (their operands, for the last row's scene):\n");
+        for (const vfy_check_spec *k = d->checks; k->name; k++)
+            dry_check(out, run, row, k, &reported);
+    }
+    if (d->case_checks && d->case_checks->name) {
+        fprintf(out, "   checks of the case (over its rows):\n");
+        for (const vfy_check_spec *k = d->case_checks; k->name; k++)
+            dry_check(out, run, row, k, &reported);
+    }
+    if (d->after_rows)
+        fprintf(out, "   and the case's own analysis after the rows (its checks read what the "
+                "rows' results report)\n");
+    if (reported.len > 0 && reported.s[reported.len - 1] == ' ')
+        reported.s[--reported.len] = '\0';
+    if (!d->no_simulation)
+        fprintf(out, "   the checks read directly: %s (a check whose quantity is not "
+                "reported is a SKIP; what the case makes itself comes from the observables "
+                "and steady quantities of docs/solver-protocol.md)\n",
+                reported.len > 0 ? reported.s + 1 : "nothing the result reports by name");
+    vfy_text_free(&reported);
 }
 
 /* --dry-run: each row's scene (and each variant's) as the solver would get
@@ -1421,12 +1748,13 @@ static sim_status dry_run_case(const vfy_case *c, const vfy_options *o, char *ms
     const size_t rows = vfy_sweep_rows(s);
     vfy_case_run run = {.c = c, .d = d, .o = o};
     vfy_row *row = calloc(1, sizeof *row);
-    char dir[1100], path[1200], label[160];
-    snprintf(dir, sizeof dir, "%s/%s", o->out_dir, c->name);
-    if (row == NULL || vfy_ensure_dir(dir) != 0) {
+    char *dir = vfy_aprintf("%s/%s", o->out_dir, c->name);
+    if (row == NULL || dir == NULL || vfy_ensure_dir(dir) != 0) {
+        snprintf(msg, msglen, "%s: cannot create: %s", dir ? dir : c->name,
+                 dir ? strerror(errno) : "out of memory");
         free(row);
-        snprintf(msg, msglen, "%s: cannot create: %s", dir, strerror(errno));
-        return SIM_EIO;
+        free(dir);
+        return dir ? SIM_EIO : SIM_ENOMEM;
     }
     FILE *out = o->dry_run;
     const size_t nvariants = vfy_variant_count(d);
@@ -1436,55 +1764,18 @@ static sim_status dry_run_case(const vfy_case *c, const vfy_options *o, char *ms
     sim_status status = SIM_OK;
     run.rows = row;
     for (size_t i = 0; i < rows && status == SIM_OK && !d->no_simulation; i++) {
+        if (i > 0)
+            vfy_row_free(row);   /* the last row's stays, for the checks */
         *row = (vfy_row){.index = i, .run = &run};
         run.nrows = 1;
-        for (size_t k = 0; k < nvariants && status == SIM_OK; k++) {
-            char variant[64];
-            const char *sets = variant_parts(d, k, variant, sizeof variant);
-            if ((status = row_scenes(&run, s, row, sets, msg, msglen)) != SIM_OK)
-                break;
-            vfy_values_set(&row->values, "index", (double)i);
-            vfy_values_set(&row->values, "n", (double)row->solver.particles.n);
-            snprintf(path, sizeof path, "%s/row-%02zu%s%s.ini", dir, i + 1, variant[0] ? "@" : "",
-                     variant);
-            FILE *f = fopen(path, "w");
-            const int written = f != NULL && vfy_scene_write(f, &row->solver) == 0;
-            if (f == NULL || fclose(f) != 0 || !written) {
-                snprintf(msg, msglen, "%s: cannot write: %s", path, strerror(errno));
-                status = SIM_EIO;
-                break;
-            }
-            fprintf(out, "   row %zu%s%s: %s -> %s\n", i + 1, variant[0] ? " variant " : "",
-                    variant, vfy_expand(label, sizeof label, row_label_template(d), &run, row),
-                    path);
-        }
-        if (status == SIM_OK && i + 1 < rows)
-            vfy_values_free(&row->values);
+        for (size_t k = 0; k < nvariants && status == SIM_OK; k++)
+            status = dry_row(out, &run, s, row, k, dir, msg, msglen);
     }
-    char reported[1024] = "";
-    if (status == SIM_OK && d->checks && d->checks->name) {
-        fprintf(out, "   checks of every row (their operands, for the last row's scene):\n");
-        for (const vfy_check_spec *k = d->checks; k->name; k++)
-            dry_check(out, &run, row, k, reported, sizeof reported);
-    }
-    if (status == SIM_OK && d->case_checks && d->case_checks->name) {
-        fprintf(out, "   checks of the case (over its rows):\n");
-        for (const vfy_check_spec *k = d->case_checks; k->name; k++)
-            dry_check(out, &run, row, k, reported, sizeof reported);
-    }
-    if (status == SIM_OK && d->after_rows)
-        fprintf(out, "   and the case's own analysis after the rows (its checks read what the "
-                "rows' results report)\n");
-    const size_t rlen = strlen(reported);
-    if (rlen > 0 && reported[rlen - 1] == ' ')
-        reported[rlen - 1] = '\0';
-    if (status == SIM_OK && !d->no_simulation)
-        fprintf(out, "   the checks read directly: %s (a check whose quantity is not "
-                "reported is a SKIP; what the case makes itself comes from the observables "
-                "and steady quantities of docs/solver-protocol.md)\n",
-                reported[0] ? reported + 1 : "nothing the result reports by name");
-    vfy_values_free(&row->values);
+    if (status == SIM_OK)
+        dry_checks(out, &run, row);
+    vfy_row_free(row);
     free(row);
+    free(dir);
     return status;
 }
 
@@ -1528,22 +1819,28 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
     }
     if (status == SIM_OK && rows > 0)
         status = finish(&run, r, msg, msglen);
-    for (size_t i = 0; i < run.nrows; i++) {
-        vfy_refs_free(&run.rows[i].refs);
-        sim_ensemble_result_free(&run.rows[i].res);
-        for (size_t k = 0; run.rows[i].more && d->variants[k + 1]; k++)
-            sim_ensemble_result_free(&run.rows[i].more[k]);
-        free(run.rows[i].more);
-        vfy_values_free(&run.rows[i].values);
-    }
-    vfy_values_free(&run.values);
-    vfy_table_free(&run.table);
-    vfy_table_free(&run.second);
-    free(run.extra_mean);
-    free(run.extra_ci);
+    for (size_t i = 0; i < run.nrows; i++)
+        vfy_row_free(&run.rows[i]);
+    vfy_run_free(&run);
     free(run.rows);
-    free(run.columns);
-    free(run.column_text);
     free(headers);
     return status;
+}
+
+void vfy_run_free(vfy_case_run *run)
+{
+    vfy_values_free(&run->values);
+    free_texts(&run->text_names, &run->texts, &run->ntexts);
+    vfy_table_free(&run->table);
+    vfy_table_free(&run->second);
+    free(run->comment);
+    free(run->second_notes);
+    free(run->extra_mean);
+    free(run->extra_ci);
+    free(run->columns);
+    free(run->column_text);
+    run->comment = run->second_notes = NULL;
+    run->extra_mean = run->extra_ci = NULL;
+    run->columns = NULL;
+    run->column_text = NULL;
 }

@@ -44,12 +44,13 @@
 #include "scene.h"
 #include "scene_refs.h"
 #include "table.h"
+#include "text.h"
 
 /* ------------------------------------------------------------ values */
 
 typedef struct vfy_values {
     size_t count, capacity;
-    char (*names)[32];
+    char **names;   /* each allocated: a name of any length */
     double *v;
 } vfy_values;
 
@@ -65,18 +66,17 @@ void vfy_values_free(vfy_values *vals);
 
 typedef struct vfy_case_run vfy_case_run;
 
-#define VFY_ROW_TEXTS 8
-#define VFY_ROW_TEXT_LEN 512
-
 /* One row: its scenes, the references of `scene` and the simulation of
- * `solver`, and its values. */
+ * `solver`, and its values.  The texts are allocated (vfy_row_free frees
+ * them): as long as the description makes them. */
 typedef struct vfy_row {
     const vfy_case_run *run;    /* the run it belongs to */
     size_t index;
-    char label[96];             /* {label}: an explicit row's label, or "" */
-    char stem[64];              /* {scene}: the stem of the row's scene file */
+    char *label;                /* {label}: an explicit row's label, or "" (NULL before
+                                   the row's scenes are loaded) */
+    char *stem;                 /* {scene}: the stem of the row's scene file (likewise) */
     size_t ntexts;              /* text values a sweep ("$scheme=euler") or a rule gave */
-    char text_names[VFY_ROW_TEXTS][24], texts[VFY_ROW_TEXTS][VFY_ROW_TEXT_LEN];
+    char **text_names, **texts; /* ntexts each */
     sim_scene scene;            /* what the references describe */
     sim_scene solver;           /* what was simulated (--solver-set added) */
     vfy_refs refs;              /* the scene's references (empty if the case names none) */
@@ -103,8 +103,12 @@ const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row
 const char *vfy_row_text(const vfy_row *row, const char *name);
 
 /* Set (or replace) the row's text `name` (a rule may: a solver's message);
- * returns 0, or -1 when the row holds VFY_ROW_TEXTS texts already. */
+ * returns 0, or -1 when out of memory. */
 int vfy_row_set_text(vfy_row *row, const char *name, const char *text);
+
+/* Free what a row owns: its values, texts, label and stem, its references
+ * and its results (zeroed members are fine). */
+void vfy_row_free(vfy_row *row);
 
 /* The row before this one, or NULL for the first. */
 const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
@@ -203,28 +207,36 @@ typedef struct vfy_paper_column {
     {NAME, sizeof((const double[]){__VA_ARGS__}) / sizeof(double),            \
      (const double[]){__VA_ARGS__}}
 
-/* A sweep: rows of settings.  keys[k] takes the k-th value list, values[k]
- * ("64 256 1024": one value a row, separated by spaces); the keys are zipped
- * (row i takes the i-th value of each), or with `grid` every combination
- * (the first key slowest).  names[k] names the value in the row (NULL: the
- * key's part after the dot).  `sets` holds settings every row takes
- * ("particles.ensembles=2000;scene.t_end=4").  Instead of keys, `rows` may
- * list the rows explicitly, each "LABEL: SET;SET;..." ({label} in
+/* A description's list of strings, NULL-terminated: VFY_LIST("a", "b"). */
+#define VFY_LIST(...) ((const char *const[]){__VA_ARGS__, NULL})
+
+/* One swept key: the scene key, its values ("64 256 1024": one value a row,
+ * separated by spaces) and the name of the value in the row (NULL: the
+ * key's part after the dot). */
+typedef struct vfy_sweep_key {
+    const char *key, *values, *name;
+} vfy_sweep_key;
+/* A sweep's keys, ended by a NULL key: VFY_KEYS({"particles.n", "64 256"}). */
+#define VFY_KEYS(...) ((const vfy_sweep_key[]){__VA_ARGS__, {NULL, NULL, NULL}})
+
+/* A sweep: rows of settings.  Each of `keys` takes its value list; the keys
+ * are zipped (row i takes the i-th value of each), or with `grid` every
+ * combination (the first key slowest).  `sets` holds settings every row
+ * takes ("particles.ensembles=2000;scene.t_end=4").  Instead of keys, `rows`
+ * may list the rows explicitly, each "LABEL: SET;SET;..." ({label} in
  * templates); in sets and rows, "scene=STEM" takes the row from scene file
  * STEM instead of the description's, and "$NAME=VALUE" gives the row a value
  * NAME that is no scene key (a number, or else a text for templates and
- * "%s" columns, at most VFY_ROW_TEXTS a row). */
-#define VFY_SWEEP_KEYS 4
+ * "%s" columns).  None of these has a limit of count or length. */
 typedef struct vfy_sweep {
-    const char *keys[VFY_SWEEP_KEYS];
-    const char *values[VFY_SWEEP_KEYS];
-    const char *names[VFY_SWEEP_KEYS];
+    const vfy_sweep_key *keys;   /* terminated by a NULL key; NULL: none */
     int grid;
     const char *sets;
-    const char *const *rows;   /* NULL-terminated */
+    const char *const *rows;     /* NULL-terminated */
 } vfy_sweep;
 
-/* The number of rows of a sweep, and row i's value of key k (in buf). */
+/* The number of rows of a sweep, and row i's value of key k (in buf, len
+ * bytes: truncated to fit). */
 size_t vfy_sweep_rows(const vfy_sweep *s);
 void vfy_sweep_value(const vfy_sweep *s, size_t i, size_t k, char *buf, size_t len);
 
@@ -241,10 +253,11 @@ typedef struct vfy_figure_spec {
     const char *suffix;              /* the files are <case><suffix>.csv ... ("" or NULL) */
     /* CURVES */
     const char *quantity;            /* the series drawn for every row */
-    const char *refs[4];             /* reference series drawn as lines (POINTS: value
-                                        references, "LABEL=name" or "name") */
+    const char *const *refs;         /* reference series drawn as lines (POINTS: value
+                                        references, "LABEL=name" or "name"); VFY_LIST,
+                                        or NULL for none */
     double x_from;                   /* the t axis starts here */
-    int panel_per_row;               /* one panel per row (the first four), or one plot */
+    int panel_per_row;               /* one panel per row (every row), or one plot */
     int extrapolated;                /* draw the hook's n = infinity curve too */
     /* POINTS: x is a row value; each series a value with its "_ci" ("LABEL=name"
        or "name"); a row where one of them is not finite is left out.  The
@@ -252,16 +265,20 @@ typedef struct vfy_figure_spec {
        last row's scene whose restitution coefficient is x (every value
        reference is a function of it, references.h). */
     const char *x;
-    const char *series[4];
+    const char *const *series;       /* VFY_LIST, or NULL for none */
     double x_lo, x_hi;
     const char *title, *xlabel, *ylabel;   /* title: a template */
 } vfy_figure_spec;
-#define VFY_FIGURES_MAX 3
+/* A description's figures, ended by one of kind VFY_FIGURE_NONE:
+ * VFY_FIGURES({.kind = VFY_FIGURE_CURVES, ...}, {...}). */
+#define VFY_FIGURES(...) ((const vfy_figure_spec[]){__VA_ARGS__, {.kind = VFY_FIGURE_NONE}})
 
 /* Settings derived from a row (its scene as the sweep left it, and its
  * values: e.g. a thermostat's strength from alpha), as "key=value;key=value"
- * in buf: applied after the sweep and before --set and --solver-set, so they
- * never override what the user fixed.  Returns buf ("" for none). */
+ * in buf (len bytes, written as snprintf would): applied after the sweep and
+ * before --set and --solver-set, so they never override what the user
+ * fixed.  Returns buf ("" for none).  Settings that fill buf are asked for
+ * again with twice the room, so none is cut short. */
 typedef const char *(*vfy_derive_fn)(const vfy_row *row, char *buf, size_t len);
 
 /* Change a row's solver scene after it was loaded, for what no setting can
@@ -305,7 +322,8 @@ typedef struct vfy_case_desc {
     const vfy_check_spec *case_checks;  /* on the case's values, after after_rows (no
                                            row, no guard) */
     const char *columns;                /* "HEADER[=VALUE]:FORMAT ..." (vfy_column) */
-    vfy_figure_spec figures[VFY_FIGURES_MAX];  /* up to the first of kind NONE */
+    const vfy_figure_spec *figures;     /* VFY_FIGURES, up to the first of kind NONE;
+                                           NULL: none */
     const char *title, *notes;          /* templates */
     vfy_hook_fn after_rows;
     const char *must_fail;              /* the errors the case must catch at quick
@@ -333,22 +351,33 @@ struct vfy_case_run {
     char *column_text;     /* the strings columns point into */
     vfy_values values;     /* the case's values (wall_total, hooks') */
     size_t ntexts;         /* the case's texts a hook set (vfy_run_set_text) */
-    char text_names[4][24], texts[4][512];
+    char **text_names, **texts;   /* ntexts each, allocated */
     vfy_table table;
-    char comment[2048];    /* provenance: the version, and each row's scene file, seed,
-                              n, N and outputs (once where all rows share them) */
+    char *comment;         /* provenance: the version, and each row's scene file, seed,
+                              n, N and outputs (once where all rows share them);
+                              allocated, NULL before the rows are done ({comment}: "") */
     double *extra_mean, *extra_ci;  /* set by a hook (malloc'd, M each): one more
                                        curve in the figure, the n = infinity
                                        extrapolation */
     vfy_table second;      /* a hook's second table (ncols 0: none), written after the
                               first in the Markdown file and as <case><second_suffix>.csv */
     const char *second_suffix, *second_title;
-    char second_notes[2048];
+    char *second_notes;    /* its notes (allocated; vfy_run_second_notes), or NULL */
 };
 
-/* Set the case's text `name` (at most 4 a case) for templates; returns 0,
- * or -1 when there is no room. */
+/* Set (or replace) the case's text `name` for templates; returns 0, or -1
+ * when out of memory. */
 int vfy_run_set_text(vfy_case_run *run, const char *name, const char *text);
+
+/* Set the second table's notes, printf-style; returns 0, or -1 when out of
+ * memory (the notes are then empty). */
+int vfy_run_second_notes(vfy_case_run *run, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+
+/* Free what a run owns besides its rows array: its values and texts, the
+ * provenance, the tables and notes, the extrapolation, the parsed columns
+ * (zeroed members are fine). */
+void vfy_run_free(vfy_case_run *run);
 
 /* The O(1/n) extrapolation of series `quantity` at every output time
  * (vfy_extrapolate_inverse_n over the rows, sigma = ci / 3.2): sets
@@ -365,7 +394,17 @@ sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report
                              size_t msglen);
 
 /* Expand template `tmpl` for run and row (row may be NULL: case values
- * only) into buf; returns buf. */
+ * only): appended to *out (text.h), whatever its length; returns 0, or -1
+ * when out of memory. */
+int vfy_expand_text(vfy_text *out, const char *tmpl, const vfy_case_run *run,
+                    const vfy_row *row);
+
+/* The expansion as a string the caller frees, or NULL when out of memory. */
+char *vfy_expand_alloc(const char *tmpl, const vfy_case_run *run, const vfy_row *row);
+
+/* The expansion into buf (len bytes), truncated to fit; returns buf.  For a
+ * line whose length the caller bounds; everything a report keeps uses the
+ * two above. */
 const char *vfy_expand(char *buf, size_t len, const char *tmpl, const vfy_case_run *run,
                        const vfy_row *row);
 

@@ -3,9 +3,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/wait.h>
 
 #include "table.h"
+#include "text.h"
 
 enum { PATH_LEN = 1024, TMP_LEN = 1100 };   /* a report file's path, and its .tmp */
 
@@ -25,14 +27,25 @@ int vfy_gnuplot(const char *script_path)
  * vfy_file_begin does, the provenance comment lines first. */
 
 /* s as the inside of a gnuplot single-quoted string ('' is a quote), in one
- * of four rotating buffers (a script line names up to four texts). */
+ * of four rotating buffers (a script line names up to four texts), each
+ * grown to the text's length; "" when out of memory. */
 static const char *gp_text(const char *s)
 {
-    static char ring[4][512];
+    static char *ring[4];
+    static size_t cap[4];
     static unsigned next;
-    char *out = ring[next++ % 4];
+    const unsigned r = next++ % 4;
+    const size_t need = 2 * strlen(s) + 1;   /* every character doubled, at most */
+    if (need > cap[r]) {
+        char *grown = realloc(ring[r], need);
+        if (grown == NULL)
+            return "";
+        ring[r] = grown;
+        cap[r] = need;
+    }
+    char *out = ring[r];
     size_t k = 0;
-    for (; *s && k + 2 < sizeof ring[0]; s++) {
+    for (; *s; s++) {
         if (*s == '\'')
             out[k++] = '\'';
         out[k++] = *s;
@@ -193,10 +206,17 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
 
 const double vfy_wp_targets[VFY_WP_TARGETS] = {1e-2, 1e-3, 1e-4};
 
+void vfy_wp_prediction_free(vfy_wp_prediction *pred)
+{
+    for (size_t k = 0; k < pred->count; k++)
+        free(pred->label[k]);
+    *pred = (vfy_wp_prediction){0};
+}
+
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
                              const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
                              const double *cpu, const double *err, const double *model,
-                             char (*labels)[24], const vfy_wp_prediction *pred)
+                             const char *const *labels, const vfy_wp_prediction *pred)
 {
     char data[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[200];
     snprintf(file, sizeof file, "%s-points", name);
@@ -215,7 +235,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
     fprintf(f, "\n\n# the model's cheapest point per target (predictions)\n");
     for (size_t k = 0; k < pred->count; k++)
         fprintf(f, "%.6g,%.6g,%.6g,%s\n", pred->cpu[k], pred->err[k], pred->err[k],
-                pred->label[k]);
+                pred->label[k] ? pred->label[k] : "");
     if (vfy_file_commit(f, tmp, data, 1) != 0)
         return -1;
     f = begin_script(o, name, comment, name, 1100, 750, gp, tmp);
@@ -276,15 +296,19 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
     if (vfy_file_commit(f, tmp, path, 1) != 0)
         return -1;
 
+    /* one panel per row: 2 x 2 for up to four rows, two columns of as many
+     * lines as the rows need beyond */
+    const size_t panels = one_panel_per_row ? rows : 1;
+    const size_t lines = panels <= 4 ? 2 : (panels + 1) / 2;
     char gp[PATH_LEN];
-    f = begin_script(o, name, comment, title, 1200, one_panel_per_row ? 900 : 700, gp, tmp);
+    f = begin_script(o, name, comment, title, 1200,
+                     !one_panel_per_row ? 700 : panels <= 4 ? 900 : 450 * (int)lines, gp, tmp);
     if (f == NULL)
         return -1;
     fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key top right\n",
             x_from, gp_text(quantity));
-    size_t panels = one_panel_per_row ? (rows < 4 ? rows : 4) : 1;
     if (one_panel_per_row)
-        fprintf(f, "set multiplot layout 2,2 title '%s'\n", gp_text(title));
+        fprintf(f, "set multiplot layout %zu,2 title '%s'\n", lines, gp_text(title));
     else
         fprintf(f, "set title '%s'\n", gp_text(title));
     for (size_t p = 0; p < panels; p++) {
@@ -297,17 +321,14 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                     j ? "," : "", path, 2 + j, gp_text(ref_names[j]));
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
-            char label[160];
-            if (labels != NULL)
-                snprintf(label, sizeof label, "%s: mean ± c", labels[i]);
-            else if (n[i] == 0)
-                snprintf(label, sizeof label, "n = infinity (O(1/n) extrapolation) ± c");
-            else
-                snprintf(label, sizeof label, "n = %zu: mean ± c", n[i]);
+            char *label = labels != NULL ? vfy_aprintf("%s: mean ± c", labels[i])
+                          : n[i] == 0    ? vfy_aprintf("n = infinity (O(1/n) extrapolation) ± c")
+                                         : vfy_aprintf("n = %zu: mean ± c", n[i]);
             fprintf(f, "%s '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
                        "fs transparent solid 0.25 lc %zu title '%s'",
                     nref || i > first ? "," : "", path, col, col + 1, col, col + 1, i + 1,
-                    gp_text(label));
+                    gp_text(label != NULL ? label : ""));
+            free(label);
         }
         fputc('\n', f);
     }

@@ -13,9 +13,9 @@ int vfy_gnuplot(const char *script_path);
 
 /* out_dir/<name>-curves.csv (t, the reference columns, then mean and ci of
  * each row; n[i] = 0 marks the O(1/n) extrapolation) and out_dir/<name>.gp
- * drawing each row's confidence band beside the references (one panel per row
- * for the first four rows, or all in one), rendered to <name>.png when gnuplot
- * is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
+ * drawing each row's confidence band beside the references (one panel per row,
+ * 2 x 2 for up to four rows and two columns beyond, or all in one), rendered
+ * to <name>.png when gnuplot is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
  * or "n = N" when labels is NULL.  Returns 0 or -1 (errno). */
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
@@ -81,20 +81,25 @@ extern const double vfy_wp_targets[VFY_WP_TARGETS];   /* 1e-2, 1e-3, 1e-4 */
 
 /* One curve: the points idx[0..count-1] of the arrays, in that order. */
 typedef struct vfy_wp_series {
-    char title[96];
+    const char *title;
     const size_t *idx;
     size_t count;
 } vfy_wp_series;
 
-/* The model's cheapest point per target (a prediction). */
+/* The model's cheapest point per target (a prediction); each label
+ * allocated (NULL: out of memory, drawn without one). */
 typedef struct vfy_wp_prediction {
     size_t count;
     double cpu[VFY_WP_TARGETS], err[VFY_WP_TARGETS];
-    char label[VFY_WP_TARGETS][48];
+    char *label[VFY_WP_TARGETS];
 } vfy_wp_prediction;
 
+/* Free the labels of a prediction. */
+void vfy_wp_prediction_free(vfy_wp_prediction *pred);
+
 /* out_dir/<name>-points.csv (one gnuplot index block per series: cpu_s,
- * Err, Err_model, label; then the predictions) and out_dir/<name>.gp: Err
+ * Err, Err_model, label (labels[i] of point i); then the predictions) and
+ * out_dir/<name>.gp: Err
  * against CPU seconds, log-log, each series with its model dotted, the
  * targets as grey lines, the predicted cheapest points as open circles;
  * rendered to <name>.png when gnuplot is installed.  Both files start with
@@ -102,6 +107,6 @@ typedef struct vfy_wp_prediction {
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
                              const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
                              const double *cpu, const double *err, const double *model,
-                             char (*labels)[24], const vfy_wp_prediction *pred);
+                             const char *const *labels, const vfy_wp_prediction *pred);
 
 #endif

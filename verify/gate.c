@@ -11,6 +11,7 @@
 #include "driver.h"
 #include "figure.h"
 #include "table.h"
+#include "text.h"
 #include "verdicts.h"
 
 int vfy_must_fail_at(const char *must_fail, size_t i, char *buf, size_t len)
@@ -70,11 +71,27 @@ static double seconds_since(const struct timespec *t0)
  * fills it in: a name may carry a measured value) and row; its name as the
  * first run printed it. */
 typedef struct seed_tally {
-    char group[32], id[160], row[128], name[96];
+    char *group, *id, *row, *name;   /* allocated, as long as the check's */
     size_t n[VFY_VERDICTS];
-    char first_fail[320];   /* the detail of its first FAIL */
+    char *first_fail;   /* the detail of its first FAIL (allocated), or NULL */
     size_t first_run;
 } seed_tally;
+
+static void tally_strings_free(seed_tally *e)
+{
+    free(e->group);
+    free(e->id);
+    free(e->row);
+    free(e->name);
+    free(e->first_fail);
+}
+
+static void tally_free(seed_tally *t, size_t count)
+{
+    for (size_t i = 0; i < count; i++)
+        tally_strings_free(&t[i]);
+    free(t);
+}
 
 static seed_tally *tally_find(seed_tally **t, size_t *count, size_t *cap, const vfy_check *c)
 {
@@ -91,12 +108,14 @@ static seed_tally *tally_find(seed_tally **t, size_t *count, size_t *cap, const 
         *t = g;
         *cap = grown;
     }
-    seed_tally *e = &(*t)[(*count)++];
-    memset(e, 0, sizeof *e);
-    snprintf(e->group, sizeof e->group, "%s", c->group);
-    snprintf(e->id, sizeof e->id, "%s", id);
-    snprintf(e->row, sizeof e->row, "%s", c->row);
-    snprintf(e->name, sizeof e->name, "%s", c->name);
+    seed_tally *e = &(*t)[*count];
+    *e = (seed_tally){.group = vfy_strdup(c->group), .id = vfy_strdup(id),
+                      .row = vfy_strdup(c->row), .name = vfy_strdup(c->name)};
+    if (e->group == NULL || e->id == NULL || e->row == NULL || e->name == NULL) {
+        tally_strings_free(e);
+        return NULL;
+    }
+    (*count)++;
     return e;
 }
 
@@ -186,7 +205,8 @@ sim_status vfy_seeds(const char *suite, const char *cases, const vfy_options *o,
             }
             e->n[r.checks[i].verdict]++;
             if (r.checks[i].verdict == VFY_FAIL && e->n[VFY_FAIL] == 1) {
-                snprintf(e->first_fail, sizeof e->first_fail, "%s", r.checks[i].detail);
+                if ((e->first_fail = vfy_strdup(r.checks[i].detail)) == NULL)
+                    status = SIM_ENOMEM;
                 e->first_run = k;
             }
         }
@@ -211,7 +231,7 @@ sim_status vfy_seeds(const char *suite, const char *cases, const vfy_options *o,
         *flaky += t[i].n[VFY_FAIL] > 1;
     if (status == SIM_ENOMEM)
         snprintf(msg, msglen, "out of memory");
-    free(t);
+    tally_free(t, count);
     free(fails_per_run);
     return status;
 }

@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "text.h"
+
 void vfy_table_init(vfy_table *t, size_t ncols, const char *const *cols)
 {
     memset(t, 0, sizeof *t);
@@ -32,12 +34,10 @@ int vfy_table_cell(vfy_table *t, const char *fmt, ...)
         t->cells = grown;
         t->capacity = cap;
     }
-    char buf[256];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(buf, sizeof buf, fmt, ap);
+    char *cell = vfy_vaprintf(fmt, ap);   /* as long as it prints: a text value has no limit */
     va_end(ap);
-    char *cell = strdup(buf);
     if (cell == NULL)
         return -1;
     t->cells[t->ncells++] = cell;
@@ -46,11 +46,12 @@ int vfy_table_cell(vfy_table *t, const char *fmt, ...)
 
 int vfy_table_number(vfy_table *t, int present, const char *fmt, double x)
 {
-    char buf[64];
     if (!present)
         return vfy_table_cell(t, "%s", "");
-    snprintf(buf, sizeof buf, fmt, x);
-    return vfy_table_cell(t, "%s", buf);
+    char *number = vfy_aprintf(fmt, x);   /* a description's format: "%.0f" of 1e300 too */
+    const int rc = number != NULL ? vfy_table_cell(t, "%s", number) : -1;
+    free(number);
+    return rc;
 }
 
 static int writes_files = 1;

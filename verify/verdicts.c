@@ -118,14 +118,15 @@ typedef struct case_verdicts {
 static int read_verdicts(const vfy_options *o, const char *name, case_verdicts *cv, FILE *list,
                          vfy_verdict want)
 {
-    char path[1100], line[4096];
+    char path[1100], *line = NULL;
+    size_t cap = 0;
     vfy_report_path(o, name, "-verdicts.csv", path, sizeof path);
     FILE *f = fopen(path, "r");
     if (f == NULL)
         return -1;
     memset(cv, 0, sizeof *cv);
     int header = 0;
-    while (fgets(line, sizeof line, f) != NULL) {
+    while (getline(&line, &cap, f) != -1) {   /* a line as long as its check's texts */
         if (line[0] == '#') {
             if (cv->version[0] == '\0')
                 sscanf(line, "# gdsmc %63s", cv->version);
@@ -144,6 +145,7 @@ static int read_verdicts(const vfy_options *o, const char *name, case_verdicts *
                     fprintf(list, "- **%s** %s: %s\n", name, fields[6], fields[7]);
             }
     }
+    free(line);
     fclose(f);
     return 0;
 }
@@ -171,19 +173,30 @@ static int compare_names(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* Links to the case's figures in out_dir, in name order. */
+/* Links to the case's figures in out_dir, in name order (as many as there
+ * are; out of memory, those listed so far). */
 static void figure_links(FILE *f, const vfy_options *o, const char *c)
 {
     DIR *dir = opendir(o->out_dir);
     if (dir == NULL)
         return;
-    char *names[64];
-    size_t count = 0;
-    for (struct dirent *e; (e = readdir(dir)) != NULL && count < 64;)
-        if (figure_of(e->d_name, c) && (names[count] = strdup(e->d_name)) != NULL)
+    char **names = NULL;
+    size_t count = 0, cap = 0;
+    for (struct dirent *e; (e = readdir(dir)) != NULL;) {
+        if (!figure_of(e->d_name, c))
+            continue;
+        if (count == cap) {
+            char **grown = realloc(names, (cap = cap ? 2 * cap : 16) * sizeof *grown);
+            if (grown == NULL)
+                break;
+            names = grown;
+        }
+        if ((names[count] = strdup(e->d_name)) != NULL)
             count++;
+    }
     closedir(dir);
-    qsort(names, count, sizeof *names, compare_names);
+    if (count > 1)
+        qsort(names, count, sizeof *names, compare_names);
     for (size_t i = 0; i < count; i++) {
         const char *rest = names[i] + strlen(c);   /* ".png" or "-PART.png" */
         if (rest[0] == '.')
@@ -192,6 +205,7 @@ static void figure_links(FILE *f, const vfy_options *o, const char *c)
             fprintf(f, ", [%.*s](%s)", (int)(strlen(rest) - 5), rest + 1, names[i]);
         free(names[i]);
     }
+    free(names);
 }
 
 sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, size_t msglen)
