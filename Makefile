@@ -3,7 +3,7 @@
 #   make test     the same set-up, then every test, and the unit tests and the
 #                 quick suite again in an address+undefined sanitizer build
 #   make fuzz     libFuzzer (clang, address sanitizer) over scene parsing and
-#                 validation (corpus verify/scenes), then over the solver
+#                 validation (corpus verify/cases/scenes), then over the solver
 #                 protocol's result reader (corpus tests/fuzz/results), each
 #                 for FUZZ_SECONDS (default 600)
 #   make test-mpi optional: installs OpenMPI, builds $(MPI_BUILD) with GDSMC_MPI=ON
@@ -57,7 +57,7 @@ test-sanitize: deps
 	ctest --test-dir $(SANITIZE_BUILD) -L unit -j $(JOBS) --output-on-failure
 	$(SANITIZE_BUILD)/gdsmc verify --suite quick --out $(SANITIZE_BUILD)/reports
 
-# The fuzzers' corpora grow in $(FUZZ_BUILD)/corpus (seeded from verify/scenes)
+# The fuzzers' corpora grow in $(FUZZ_BUILD)/corpus (seeded from verify/cases/scenes)
 # and $(FUZZ_BUILD)/corpus-result; crashes are written to $(FUZZ_BUILD)/crash-*
 # and $(FUZZ_BUILD)/result-crash-*.
 fuzz:
@@ -65,7 +65,7 @@ fuzz:
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_C_COMPILER=clang -DGDSMC_FUZZ=ON $(CMAKE_FLAGS)
 	cmake --build $(FUZZ_BUILD) --target fuzz_scene fuzz_result -j $(JOBS)
 	mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/corpus-result
-	cp -n verify/scenes/*.ini $(FUZZ_BUILD)/corpus/
+	cp -n verify/cases/scenes/*.ini $(FUZZ_BUILD)/corpus/
 	cp -n tests/fuzz/results/* $(FUZZ_BUILD)/corpus-result/
 	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus

@@ -12,7 +12,7 @@
  *
  * The effect added through the registry alone (issue 36): this file, its
  * line in registry.c, and its section's keys in the scene (scene.h,
- * verify/scene_ini.c, docs/scenes.md).
+ * verify/protocol/scene_ini.c, docs/scenes.md).
  */
 #include <math.h>
 #include <stdlib.h>

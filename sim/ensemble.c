@@ -78,7 +78,7 @@ static void merge(block_stats *a, const block_stats *b, size_t len)
  * every rank merges the same bits in the same order as one process does.
  *
  * sim_ensemble_run is then collective over MPI_COMM_WORLD: every rank calls it
- * with the same scene, from the thread that initialised MPI (verify/main.c
+ * with the same scene, from the thread that initialised MPI (verify/cli/main.c
  * asks for MPI_THREAD_FUNNELED), never inside an OpenMP parallel region.
  * Without GDSMC_MPI, and before MPI_Init or after MPI_Finalize (the unit
  * tests), the process is rank 0 of 1 and the functions below do nothing.

@@ -1,5 +1,5 @@
 /* The first stage of the hard-sphere acceptance (effect_collisions.c), shared
- * with the bench's floor loop (verify/bench.c) so that the floor runs the
+ * with the bench's floor loop (verify/bench/bench.c) so that the floor runs the
  * engine's own kernel.
  *
  * |v_i - v_j| <= a_i + a_j with a_i = |v_i - c|: the first particle of a

@@ -1,6 +1,6 @@
 /* A scene: the parsed, validated description of one simulation (docs/scenes.md).
  *
- * Plain data.  verify/scene_ini.c fills it from an INI file (each value range-
+ * Plain data.  verify/protocol/scene_ini.c fills it from an INI file (each value range-
  * checked there, with file, line and key in the message); sim_engine_create()
  * then builds an engine from the effects it names, refusing combinations that
  * no scheme supports.  Sections that a file does not name have present = 0 and

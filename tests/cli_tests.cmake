@@ -1,6 +1,6 @@
 # Command-line tests: bad input exits 2 with a message naming file, line and
 # key, before any work (STYLE: Tests).  Paths are relative to the source tree.
-set(S verify/scenes)
+set(S verify/cases/scenes)
 set(B tests/scenes)
 gdsmc_add_cli_test(cli_help 0 "usage: gdsmc COMMAND" --help)
 gdsmc_add_cli_test(cli_run_help 0 "NAME_ci = 3.2 sqrt" run --help)
@@ -95,7 +95,7 @@ gdsmc_add_cli_test(cli_run_small 0
                    "\nt,T,T_ci,T_raw,T_raw_ci,ux,ux_ci[^\n]*\n0,(0\\.[6-9]|1\\.[0-3])[0-9]*,.*\n8,[^\n]*\n$"
                    run ${S}/grw-ex3.ini --set particles.n=8 --set particles.ensembles=20
                    --quiet)
-# The solver protocol's result file (verify/result.h): the header lines, every
+# The solver protocol's result file (verify/protocol/result.h): the header lines, every
 # observable with its sample variance, one row per output time (t = 0, 4, 8),
 # full precision, and nothing on standard output.
 gdsmc_add_cli_test(cli_run_result 0
@@ -212,7 +212,7 @@ function(gdsmc_add_cli_exact name code message)
   gdsmc_add_cli_test(${name} ${code} "^${re}[^!-~]*$" ${ARGN})
 endfunction()
 
-# The command line itself (verify/cli.c)
+# The command line itself (verify/cli/cli.c)
 gdsmc_add_cli_test(cli_x_no_command 2
                    "^usage: gdsmc COMMAND \\[OPTIONS\\].*exit status: 0 success, 1 a verification check failed, 2 bad input or error\\.[^!-~]*$"
                    "")
@@ -241,14 +241,14 @@ set(sets62)
 foreach(i RANGE 1 62)
   list(APPEND sets62 --set scene.seed=${i})
 endforeach()
-gdsmc_add_cli_test(cli_x_run_64_sets 0 "^# gdsmc [^ ]+ run verify/scenes/grw-ex3\\.ini: seed 62, n = 8, N = 2,"
+gdsmc_add_cli_test(cli_x_run_64_sets 0 "^# gdsmc [^ ]+ run verify/cases/scenes/grw-ex3\\.ini: seed 62, n = 8, N = 2,"
                    run ${S}/grw-ex3.ini ${sets62} --set particles.n=8 --set particles.ensembles=2
                    --quiet)
 gdsmc_add_cli_exact(cli_x_run_65_sets 2
                     "gdsmc run: more than 64 --set options (see gdsmc run --help)"
                     run ${S}/grw-ex3.ini ${sets62} --set particles.n=8 --set particles.ensembles=2
                     --set scene.outputs=3)
-# scene files (verify/scene_ini.c)
+# scene files (verify/protocol/scene_ini.c)
 gdsmc_add_cli_exact(cli_x_run_missing_file 2
                     "gdsmc run: no/such.ini: cannot open: No such file or directory"
                     run no/such.ini)
@@ -281,33 +281,33 @@ gdsmc_add_cli_exact(cli_x_run_shear 2
                     "gdsmc run: tests/scenes/shear.ini:10: shear.boundary: lees-edwards needs scheme = timestep (the jump scheme keeps no positions)"
                     run ${B}/shear.ini)
 gdsmc_add_cli_exact(cli_x_run_steady_without 2
-                    "gdsmc run: --steady s.csv: verify/scenes/grw-ex3.ini has no [steady] section (steady averages need one: from, bins, c_max, pairs)"
+                    "gdsmc run: --steady s.csv: verify/cases/scenes/grw-ex3.ini has no [steady] section (steady averages need one: from, bins, c_max, pairs)"
                     run ${S}/grw-ex3.ini --steady s.csv)
 gdsmc_add_cli_exact(cli_x_run_heat_flux 2
-                    "gdsmc run: verify/scenes/grw-ex3.ini:10: scene.scheme: the heat-flux force couples the particles (through the mean and the temperature) and needs scheme = timestep"
+                    "gdsmc run: verify/cases/scenes/grw-ex3.ini:10: scene.scheme: the heat-flux force couples the particles (through the mean and the temperature) and needs scheme = timestep"
                     run ${S}/grw-ex3.ini --set heat-flux.strength=0.025
                     --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_run_ehs 2
-                    "gdsmc run: verify/scenes/grw-ex3.ini: --set collisions.model: ehs (its drag depends on the temperature) needs scheme = timestep, or [shear] alone beside it"
+                    "gdsmc run: verify/cases/scenes/grw-ex3.ini: --set collisions.model: ehs (its drag depends on the temperature) needs scheme = timestep, or [shear] alone beside it"
                     run ${S}/grw-ex3.ini --set collisions.model=ehs)
 gdsmc_add_cli_exact(cli_x_run_heat_flux_heating 2
-                    "gdsmc run: verify/scenes/ms-gaussian.ini:50: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"
+                    "gdsmc run: verify/cases/scenes/ms-gaussian.ini:50: heating.type: heat-flux carries its own thermostat (paper D Eq. 4.2); remove [heating]"
                     run ${S}/ms-gaussian.ini --set heat-flux.strength=0.025)
 gdsmc_add_cli_exact(cli_x_run_non_gaussian_jump 2
-                    "gdsmc run: verify/scenes/grw-ex5.ini: --set heating.type: non-gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise and gaussian)"
+                    "gdsmc run: verify/cases/scenes/grw-ex5.ini: --set heating.type: non-gaussian heating needs scene.scheme = timestep (the jump scheme supports white-noise and gaussian)"
                     run ${S}/grw-ex5.ini --set heating.type=non-gaussian)
 gdsmc_add_cli_exact(cli_x_run_too_many_steps 2
-                    "gdsmc run: verify/scenes/grw-ex5.ini: --set scene.dt: 1e-300 gives 5e+298 steps between output times (allowed at most 1e12)"
+                    "gdsmc run: verify/cases/scenes/grw-ex5.ini: --set scene.dt: 1e-300 gives 5e+298 steps between output times (allowed at most 1e12)"
                     run ${S}/grw-ex5.ini --set scene.scheme=timestep --set scene.dt=1e-300)
 gdsmc_add_cli_exact(cli_x_run_background_timestep 2
-                    "gdsmc run: verify/scenes/brs-ex4.ini: background: the background is not implemented in the time-step scheme (supported: jump)"
+                    "gdsmc run: verify/cases/scenes/brs-ex4.ini: background: the background is not implemented in the time-step scheme (supported: jump)"
                     run ${S}/brs-ex4.ini --set scene.scheme=timestep --set scene.dt=0.1)
 gdsmc_add_cli_exact(cli_x_run_two_species 2
-                    "gdsmc run: verify/scenes/brs-ex1.ini: --set particles.mass2: the engine simulates one species: mass2 = 2 must equal mass1 = 1"
+                    "gdsmc run: verify/cases/scenes/brs-ex1.ini: --set particles.mass2: the engine simulates one species: mass2 = 2 must equal mass1 = 1"
                     run ${S}/brs-ex1.ini --set particles.mass2=2)
 # sizes that cannot fit (sim/ensemble.c): the whole message, the machine's numbers aside
 gdsmc_add_cli_test(cli_x_run_memory_refused 2
-                   "^gdsmc run: verify/scenes/grw-ex3\\.ini: --set particles\\.n: n = 1000000000 particles per ensemble on [0-9]+ threads, N = 2 ensembles and 81 outputs need about [0-9.]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"
+                   "^gdsmc run: verify/cases/scenes/grw-ex3\\.ini: --set particles\\.n: n = 1000000000 particles per ensemble on [0-9]+ threads, N = 2 ensembles and 81 outputs need about [0-9.]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"
                    run ${S}/grw-ex3.ini --set particles.n=1000000000 --set particles.ensembles=2
                    --quiet)
 # an unwritable --out is refused before the work (here hours of it: found only
@@ -316,7 +316,7 @@ gdsmc_add_cli_exact(cli_x_run_out_unwritable 2
                     "gdsmc run: /nonexistent/gdsmc/x.csv: cannot write: No such file or directory"
                     run ${S}/grw-ex3.ini --set particles.n=4096 --set scene.t_end=1e6 --quiet
                     --out /nonexistent/gdsmc/x.csv)
-# gdsmc reference (verify/scene_refs.c)
+# gdsmc reference (verify/driver/scene_refs.c)
 gdsmc_add_cli_exact(cli_x_reference_missing_scene 2
                     "gdsmc reference: missing SCENE file (see gdsmc reference --help)" reference)
 gdsmc_add_cli_exact(cli_x_reference_unknown_option 2
@@ -326,17 +326,17 @@ gdsmc_add_cli_exact(cli_x_reference_no_collisions 2
                     "gdsmc reference: tests/scenes/no-collisions.ini: collisions: no reference applies: paper A references need [collisions]"
                     reference ${B}/no-collisions.ini)
 gdsmc_add_cli_exact(cli_x_reference_gaussian 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set heating.type: paper A references need white-noise heating"
+                    "gdsmc reference: verify/cases/scenes/grw-ex3.ini: --set heating.type: paper A references need white-noise heating"
                     reference ${S}/grw-ex3.ini --set heating.type=gaussian
                     --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_reference_drift 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set particles.velocity: paper A references need an initial Maxwellian at rest (allowed 0 0 0)"
+                    "gdsmc reference: verify/cases/scenes/grw-ex3.ini: --set particles.velocity: paper A references need an initial Maxwellian at rest (allowed 0 0 0)"
                     reference ${S}/grw-ex3.ini "--set" "particles.velocity=0 1 0")
 gdsmc_add_cli_exact(cli_x_reference_mass 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set particles.mass: paper A references are for unit mass (got 2)"
+                    "gdsmc reference: verify/cases/scenes/grw-ex3.ini: --set particles.mass: paper A references are for unit mass (got 2)"
                     reference ${S}/grw-ex3.ini --set particles.mass=2)
 gdsmc_add_cli_exact(cli_x_reference_vhs 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini: --set collisions.exponent: no reference for VHS lambda = 0.5 (only 0 and 1)"
+                    "gdsmc reference: verify/cases/scenes/grw-ex3.ini: --set collisions.exponent: no reference for VHS lambda = 0.5 (only 0 and 1)"
                     reference ${S}/grw-ex3.ini --set collisions.kernel=vhs --set collisions.exponent=0.5)
 # paper E: the BGK model's T and stresses; late times reach its steady state
 # (alpha = 0.9, a tau0 = 4: T_s/T0 = 150.3, T_s = 75.15)
@@ -345,17 +345,17 @@ gdsmc_add_cli_test(cli_reference_bgk 0
                    reference ${S}/as.ini --set scene.t_end=40 --set scene.outputs=11
                    --set steady.from=0)
 gdsmc_add_cli_exact(cli_x_reference_shear 2
-                    "gdsmc reference: verify/scenes/grw-ex3.ini:28: collisions.kernel: the BGK reference of paper E needs hard spheres"
+                    "gdsmc reference: verify/cases/scenes/grw-ex3.ini:28: collisions.kernel: the BGK reference of paper E needs hard spheres"
                     reference ${S}/grw-ex3.ini --set shear.rate=1 --set scene.observation=sampled)
 gdsmc_add_cli_exact(cli_x_reference_background_heating 2
-                    "gdsmc reference: verify/scenes/brs-ex1.ini: background: no reference for a background combined with heating, shear or a heat-flux force"
+                    "gdsmc reference: verify/cases/scenes/brs-ex1.ini: background: no reference for a background combined with heating, shear or a heat-flux force"
                     reference ${S}/brs-ex1.ini --set heating.strength=1)
 gdsmc_add_cli_exact(cli_x_reference_kernels 2
-                    "gdsmc reference: verify/scenes/brs-ex1.ini: --set collisions.kernel: paper B references need the same kernel for binary and background collisions (background.kernel is maxwell)"
+                    "gdsmc reference: verify/cases/scenes/brs-ex1.ini: --set collisions.kernel: paper B references need the same kernel for binary and background collisions (background.kernel is maxwell)"
                     reference ${S}/brs-ex1.ini --set collisions.kernel=hard-spheres)
 # a closure CVODE cannot integrate: which reference, the flag, SUNDIALS' reason
 gdsmc_add_cli_test(cli_x_reference_cvode_failure 2
-                   "^gdsmc reference: verify/scenes/grw-ex5\\.ini: T_maxwell_closure: CVODE failed at t = 0: CV_[A-Z_]+ \\(CVODE in CVode: .*$"
+                   "^gdsmc reference: verify/cases/scenes/grw-ex5\\.ini: T_maxwell_closure: CVODE failed at t = 0: CV_[A-Z_]+ \\(CVODE in CVode: .*$"
                    reference ${S}/grw-ex5.ini --set scene.t_end=1e300)
 gdsmc_add_cli_exact(cli_x_reference_out_unwritable 2
                     "gdsmc reference: /nonexistent/gdsmc/r.csv: cannot write: No such file or directory"
@@ -408,7 +408,7 @@ gdsmc_add_cli_exact(cli_x_bench_out_unwritable 2
 gdsmc_add_cli_exact(cli_x_bench_md_unwritable 2
                     "gdsmc bench: /nonexistent/gdsmc/b.md: cannot write: No such file or directory"
                     bench --max-n 1000 --seconds 3600 --md /nonexistent/gdsmc/b.md)
-# gdsmc verify (verify/cli.c, verify/cases.c)
+# gdsmc verify (verify/cli/cli.c, verify/driver/cases.c)
 gdsmc_add_cli_test(cli_x_verify_solver_set_out_of_range 2
                    "[^!-~]gdsmc verify: --solver-set collisions\\.restitution=1\\.7: collisions\\.restitution: '1\\.7' is out of range \\(allowed 0 < restitution <= 1\\)[^!-~]*$"
                    verify --case grw-ex3 --suite quick --out build/tests/solver-set
@@ -462,11 +462,11 @@ gdsmc_add_cli_exact(cli_x_verify_ms_needs_steady 2
 # --set collisions.kernel=hard-spheres leaves paper A's cases without their
 # exact references: refused before simulating (they reported FAIL, Emax = inf)
 gdsmc_add_cli_exact(cli_x_verify_grw_needs_maxwell 2
-                    "gdsmc verify: verify/scenes/grw-ex3.ini: the scene has no T_exact T_finite_n T_raw_finite_n references (paper A's exact solution needs collisions.kernel = maxwell)"
+                    "gdsmc verify: verify/cases/scenes/grw-ex3.ini: the scene has no T_exact T_finite_n T_raw_finite_n references (paper A's exact solution needs collisions.kernel = maxwell)"
                     verify --case grw-ex3 --suite quick --quiet --scenes ${S}
                     --set collisions.kernel=hard-spheres --out build/tests/grw-needs-maxwell)
 gdsmc_add_cli_exact(cli_x_verify_vro_needs_maxwell 2
-                    "gdsmc verify: verify/scenes/grw-ex3.ini: the scene has no T_finite_n T_raw_finite_n references (paper A's exact solution needs collisions.kernel = maxwell)"
+                    "gdsmc verify: verify/cases/scenes/grw-ex3.ini: the scene has no T_finite_n T_raw_finite_n references (paper A's exact solution needs collisions.kernel = maxwell)"
                     verify --case vro-grw-ex3 --suite quick --quiet --scenes ${S}
                     --set collisions.kernel=hard-spheres --out build/tests/grw-needs-maxwell)
 gdsmc_add_cli_exact(cli_x_verify_brs_needs_hard_spheres 2
@@ -504,7 +504,7 @@ gdsmc_add_no_output_test(cli_no_output_engine_refused 2
     "^gdsmc run: tests/scenes/shear\\.ini:10: shear\\.boundary: lees-edwards needs scheme = timestep \\(the jump scheme keeps no positions\\)[^!-~]*$"
     ${NO}/shear.csv ARGS run ${B}/shear.ini --out ${NO}/shear.csv)
 gdsmc_add_no_output_test(cli_no_output_memory_refused 2
-    "^gdsmc run: verify/scenes/grw-ex3\\.ini: --set particles\\.n: n = 100 particles per ensemble on 1 threads, N = 1000000 ensembles and 10000000 outputs need about [0-9.e+]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"
+    "^gdsmc run: verify/cases/scenes/grw-ex3\\.ini: --set particles\\.n: n = 100 particles per ensemble on 1 threads, N = 1000000 ensembles and 10000000 outputs need about [0-9.e+]+ GB at once, more than the [0-9.]+ GB of memory this machine has[^!-~]*$"
     ${NO}/memory.csv ARGS run ${S}/grw-ex3.ini --set particles.n=100
     --set particles.ensembles=1000000 --set scene.outputs=10000000 --quiet --out ${NO}/memory.csv)
 gdsmc_add_no_output_test(cli_no_output_reference_refused 2
@@ -515,11 +515,11 @@ gdsmc_add_no_output_test(cli_no_output_sonine_refused 2
     ${NO}/sonine.csv ARGS sonine --alpha 1.5 --out ${NO}/sonine.csv)
 # stopped by SIGINT (exit 130): nothing written, an existing file untouched
 gdsmc_add_no_output_test(cli_no_output_run_stopped 130
-    "^gdsmc run: verify/scenes/grw-ex3\\.ini: stopped on request after [0-9]+ of 10000 ensembles; nothing written[^!-~]*$"
+    "^gdsmc run: verify/cases/scenes/grw-ex3\\.ini: stopped on request after [0-9]+ of 10000 ensembles; nothing written[^!-~]*$"
     ${NO}/stopped.csv SIGNAL INT AFTER 2
     ARGS run ${S}/grw-ex3.ini --set particles.n=4096 --quiet --out ${NO}/stopped.csv)
 gdsmc_add_no_output_test(cli_no_output_run_stopped_keeps_file 130
-    "^gdsmc run: verify/scenes/grw-ex3\\.ini: stopped on request after [0-9]+ of 10000 ensembles; nothing written[^!-~]*$"
+    "^gdsmc run: verify/cases/scenes/grw-ex3\\.ini: stopped on request after [0-9]+ of 10000 ensembles; nothing written[^!-~]*$"
     ${NO}/stopped-keep.csv PRE "an earlier run's output" SIGNAL TERM AFTER 2
     ARGS run ${S}/grw-ex3.ini --set particles.n=4096 --quiet --out ${NO}/stopped-keep.csv)
 # FILE is a directory (the final rename would fail): refused before the work,

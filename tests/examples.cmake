@@ -52,7 +52,7 @@ function(example_add_run name code)
 endfunction()
 
 # Refusals: exit status 3 and the reason as the last line of standard error.
-set(SCENES ${PROJECT_SOURCE_DIR}/verify/scenes)
+set(SCENES ${PROJECT_SOURCE_DIR}/verify/cases/scenes)
 example_add_run(example_c_refuses_jump 3
     COMMAND $<TARGET_FILE:hard_spheres_gaussian> ${SCENES}/grw-ex3.ini ${EX_BIN}/r.csv
     LAST "scene.scheme = jump not supported (this solver: timestep)")

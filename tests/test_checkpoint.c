@@ -1,7 +1,7 @@
-/* Checkpoints (verify/checkpoint.h): a saved result comes back bit for bit;
+/* Checkpoints (verify/protocol/checkpoint.h): a saved result comes back bit for bit;
  * a checkpoint of another scene, or a damaged one, is never used; a
- * simulation one verify run needs twice runs once (verify/cases.h).  And the
- * solver protocol's result file (verify/result.h), the other way a result
+ * simulation one verify run needs twice runs once (verify/driver/cases.h).  And the
+ * solver protocol's result file (verify/protocol/result.h), the other way a result
  * is written down. */
 #include "test_util.h"
 
@@ -62,7 +62,7 @@ static void fill(sim_ensemble_result *r, const sim_scene *s)
     r->threads = 2;
 }
 
-/* The solver protocol's result file (verify/result.h) carries every number
+/* The solver protocol's result file (verify/protocol/result.h) carries every number
  * exactly: the means as they are, the population variances as sample
  * variances (times N/(N - 1)), the steady quantities in their own section. */
 static void test_result_file(void **state)

@@ -15,7 +15,7 @@ static void run_scene(const char *const *sets, size_t nsets, int threads,
 {
     const char *src = getenv("GDSMC_SOURCE_DIR");
     char path[512], msg[512];
-    snprintf(path, sizeof path, "%s/verify/scenes/grw-ex5.ini", src ? src : "..");
+    snprintf(path, sizeof path, "%s/verify/cases/scenes/grw-ex5.ini", src ? src : "..");
     sim_scene s;
     assert_int_equal(vfy_scene_load(path, sets, nsets, &s, msg, sizeof msg), SIM_OK);
     sim_engine *e;

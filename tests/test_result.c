@@ -1,4 +1,4 @@
-/* Tests of verify/result.c, the solver protocol's result files (version 1).
+/* Tests of verify/protocol/result.c, the solver protocol's result files (version 1).
  *
  * What `gdsmc run --result` writes is read back to the same numbers; the
  * trap group hands the reader each kind of bad result and asserts the

@@ -1,4 +1,4 @@
-/* Tests of verify/scene_ini.c: scene files to sim_scene (docs/scenes.md).
+/* Tests of verify/protocol/scene_ini.c: scene files to sim_scene (docs/scenes.md).
  *
  * Good scenes are checked field by field, with their present flags and key
  * lines; the trap group provokes each kind of bad input and asserts the
@@ -7,7 +7,7 @@
  * vfy_scene_references() refuse (docs/scenes.md, "Keys together": a combination no scheme supports
  * gets a clear error naming the file, line and key), with the message as
  * `gdsmc run` and `gdsmc reference` print it (vfy_scene_format_error).
- * GDSMC_SOURCE_DIR (set by CTest) locates verify/scenes/, whose files must
+ * GDSMC_SOURCE_DIR (set by CTest) locates verify/cases/scenes/, whose files must
  * all load.
  */
 #include <dirent.h>
@@ -336,7 +336,7 @@ static void test_grw_ex3_file(void **state)
 {
     (void)state;
     char path[1024], msg[1024];
-    snprintf(path, sizeof path, "%s/verify/scenes/grw-ex3.ini", source_dir());
+    snprintf(path, sizeof path, "%s/verify/cases/scenes/grw-ex3.ini", source_dir());
     sim_scene s;
     sim_status st = vfy_scene_load(path, NULL, 0, &s, msg, sizeof msg);
     if (st != SIM_OK)
@@ -360,7 +360,7 @@ static void test_grw_ex3_file(void **state)
 static void load_scene_file(const char *name, sim_scene *s)
 {
     char path[1024], msg[1024];
-    snprintf(path, sizeof path, "%s/verify/scenes/%s", source_dir(), name);
+    snprintf(path, sizeof path, "%s/verify/cases/scenes/%s", source_dir(), name);
     sim_status st = vfy_scene_load(path, NULL, 0, s, msg, sizeof msg);
     if (st != SIM_OK)
         print_error("%s\n", msg);
@@ -406,7 +406,7 @@ static void test_split_and_ms_files(void **state)
     }
 }
 
-/* Every file in verify/scenes/ loads. */
+/* Every file in verify/cases/scenes/ loads. */
 /* Every shipped scene loads, has a title and builds an engine; the list is
  * the cases' scenes, so a scene that disappears or an unlisted one fails. */
 static void test_all_scene_files(void **state)
@@ -419,7 +419,7 @@ static void test_all_scene_files(void **state)
         "as", "as-slab", "msg", "split-ex5", "split-gaussian", "protocol"};
     const size_t nshipped = sizeof shipped / sizeof *shipped;
     char dir[1024], path[2048], msg[1024];
-    snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
+    snprintf(dir, sizeof dir, "%s/verify/cases/scenes", source_dir());
     DIR *d = opendir(dir);
     if (!d)
         print_error("cannot open %s (set GDSMC_SOURCE_DIR)\n", dir);
@@ -475,7 +475,7 @@ static void test_write_shipped_scenes(void **state)
 {
     (void)state;
     char dir[1024], path[2048], msg[1024];
-    snprintf(dir, sizeof dir, "%s/verify/scenes", source_dir());
+    snprintf(dir, sizeof dir, "%s/verify/cases/scenes", source_dir());
     DIR *d = opendir(dir);
     assert_non_null(d);
     size_t count = 0;

@@ -30,7 +30,7 @@
 
 #define ZMAX 4.5
 
-/* Paper D's scene in its units (verify/scenes/msg.ini): T0 = 1/2, m = 1,
+/* Paper D's scene in its units (verify/cases/scenes/msg.ini): T0 = 1/2, m = 1,
  * lambda = tau = 1, so eps* = eps. */
 static sim_scene heat_flux_scene(double eps, size_t n, size_t N)
 {

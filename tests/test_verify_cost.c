@@ -1,4 +1,4 @@
-/* The accuracy-cost report (verify/case_cost.h, docs/theory.md §1.4): each of its check
+/* The accuracy-cost report (verify/cases/case_cost.h, docs/theory.md §1.4): each of its check
  * kinds passes a right answer and fails a wrong one, its pieces give known
  * answers, and the three cost cases at quick sizes pass with the right solver
  * and fail with a deliberately wrong one (--solver-set). */

@@ -1,8 +1,8 @@
-/* The hard suite (issue #5 item 1; verify/case_hard.c): every hard check
+/* The hard suite (issue #5 item 1; verify/cases/case_hard.c): every hard check
  * fails on a deliberately broken solver.
  *
  * - The invariant checks are pure functions over a run's summary
- *   (verify/case_hard.h); each gets a good summary (PASS) and corrupted ones
+ *   (verify/cases/case_hard.h); each gets a good summary (PASS) and corrupted ones
  *   (a NaN, a majorant violation, a momentum or energy drift, a heated
  *   "cooling" gas, a CVODE result that is garbage or a failure without a
  *   message), which must FAIL.

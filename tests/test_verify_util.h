@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cases.h"
+#include "suites.h"
 #include "test_util.h"
 
 static char out_dir[256];
@@ -18,7 +19,7 @@ static inline int setup(void **state)
 {
     (void)state;
     const char *src = getenv("GDSMC_SOURCE_DIR");
-    snprintf(scene_dir, sizeof scene_dir, "%s/verify/scenes", src ? src : "..");
+    snprintf(scene_dir, sizeof scene_dir, "%s/verify/cases/scenes", src ? src : "..");
     snprintf(out_dir, sizeof out_dir, "/tmp/gdsmc-test-XXXXXX");
     return mkdtemp(out_dir) ? 0 : -1;
 }

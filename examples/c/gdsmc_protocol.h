@@ -95,7 +95,7 @@ static inline void gp_fail(const char *fmt, ...)
 
 /* ------------------------------------------------------------- the scene */
 
-/* Every key gdsmc knows (verify/scene_ini.c) and its default as text
+/* Every key gdsmc knows (verify/protocol/scene_ini.c) and its default as text
  * (sim_scene_defaults); NULL: none, or one that depends on other keys
  * (gp_text explains). */
 static const struct gp_key {

@@ -87,7 +87,7 @@ def fail(message):
 
 # --------------------------------------------------------------------- the scene
 
-# Every key gdsmc knows (verify/scene_ini.c) with its kind and default
+# Every key gdsmc knows (verify/protocol/scene_ini.c) with its kind and default
 # (sim_scene_defaults in sim/scene.c).  Kinds: text, real, vec3, count, bool,
 # and a tuple of the words allowed.  A default of None: see Scene.get.
 _WORDS = {

@@ -5,7 +5,7 @@
  * one the engine either builds or refuses with a key named.
  *
  * Built only with clang and -DGDSMC_FUZZ=ON; `make fuzz` runs it with the
- * scenes of verify/scenes as the seed corpus. */
+ * scenes of verify/cases/scenes as the seed corpus. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>

@@ -49,7 +49,7 @@ void vfy_table_print_markdown(const vfy_table *t, FILE *f, const char *title,
                               const char *notes);
 
 /* Whether this process writes files (1 by default).  Under MPI only rank 0
- * does (verify/main.c): after vfy_set_writes_files(0), vfy_file_begin opens
+ * does (verify/cli/main.c): after vfy_set_writes_files(0), vfy_file_begin opens
  * /dev/null and vfy_file_commit only closes it, so every rank runs the same
  * code and no two processes write one file; vfy_gnuplot draws nothing. */
 void vfy_set_writes_files(int on);

@@ -109,7 +109,7 @@ vfy_verdict vfy_check_count(vfy_report *r, const char *name, uint64_t value, uin
 vfy_verdict vfy_check_zero(vfy_report *r, const char *name, double count);
 
 /* A condition judged by the caller (e.g. a pure check over a run's summary,
- * verify/case_hard.h): PASS when ok, FAIL otherwise, with the detail. */
+ * verify/cases/case_hard.h): PASS when ok, FAIL otherwise, with the detail. */
 vfy_verdict vfy_check_true(vfy_report *r, const char *name, int ok, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 

@@ -2,7 +2,7 @@
  * spheres (IHS) and of frictional elastic hard spheres (EHS), homogeneous, with
  * the BGK model beside them (docs/theory.md §15, issue 16).
  *
- * Every row is one steady state of verify/scenes/as.ini at one restitution
+ * Every row is one steady state of verify/cases/scenes/as.ini at one restitution
  * coefficient alpha, model and initial shear rate a tau0: N independent
  * ensembles of n particles sheared from local equilibrium until steady.from,
  * then each averages the reduced stresses, a* = a tau_eta(T), a2 and a3 over
@@ -1563,7 +1563,7 @@ const vfy_case_desc vfy_as_distribution = {
 
 /* ============================================================= as-slab */
 
-/* E §IV A, Figs. 1-4: the Lees-Edwards slab (sim/slab.h) of verify/scenes/
+/* E §IV A, Figs. 1-4: the Lees-Edwards slab (sim/slab.h) of verify/cases/scenes/
  * as-slab.ini at alpha = 0.9, a tau0 = 4, from E's two initial states, IHS
  * and EHS.  Each EHS row follows the IHS row of its initial state (its
  * partner). */

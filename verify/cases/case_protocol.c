@@ -1,6 +1,6 @@
 /* protocol (gdsmc verify --suite protocol): a conformance case for the
  * mechanics of a solver's adapter (docs/solver-protocol.md), in seconds, on
- * paper A Example 3's gas at n = 8 (verify/scenes/protocol.ini):
+ * paper A Example 3's gas at n = 8 (verify/cases/scenes/protocol.ini):
  *   - the time grid and the T and T_raw columns: z-tests against the exact
  *     finite-n expectations (docs/theory.md §11.2) at every output time;
  *   - the variance columns: at t = 0 the initial Maxwellian fixes the

@@ -1,7 +1,7 @@
 /* Paper C (Montanero and Santos 2000): steady states of inelastic hard
  * spheres under three thermostats, with the time-step scheme (docs/theory.md §8.5, §10).
  *
- * Every row is one steady-state run of scene verify/scenes/ms-<thermostat>.ini
+ * Every row is one steady-state run of scene verify/cases/scenes/ms-<thermostat>.ini
  * at one restitution coefficient alpha: N independent ensembles of n
  * particles relax until steady.from, then each averages its reduced moments,
  * its collisional moments mu2, mu4 (pair sampling, paper C Eq. (67)) and its

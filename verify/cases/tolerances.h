@@ -18,7 +18,7 @@
  * and 83.7 at n = 1024. */
 #define VFY_TOL_ZMAX 4.5
 
-/* The protocol conformance case (verify/case_protocol.c): steady T equals the
+/* The protocol conformance case (verify/cases/case_protocol.c): steady T equals the
  * time average of the T column over the steady window up to rounding (1e-9
  * relative; the engine's differ by about 1e-16), and the speed histogram to
  * c_max = 5 holds all but the speeds beyond five thermal speeds (below 1e-4

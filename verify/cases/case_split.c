@@ -1,6 +1,6 @@
 /* The splitting error of the time-step scheme (docs/theory.md §8.5), measured against
  * the exact jump scheme on the white-noise heated hard-sphere gas of paper A
- * Ex 5 (split-ex5, verify/scenes/split-ex5.ini) and on the same hard spheres
+ * Ex 5 (split-ex5, verify/cases/scenes/split-ex5.ini) and on the same hard spheres
  * with the Gaussian thermostat (split-gaussian, split-gaussian.ini: the jump
  * scheme runs it exactly, engine.c run_jump_linear).
  *

@@ -3,7 +3,7 @@
  * scheme, steps h; which grid point reaches a target error most cheaply, and
  * which one a model fitted to the grid predicts beyond it.
  *
- * Cases (verify/case_cost.c): cost-grw-ex3 (paper A Ex 3, Table 1's Err),
+ * Cases (verify/cases/case_cost.c): cost-grw-ex3 (paper A Ex 3, Table 1's Err),
  * cost-brs-ex2 (paper B Ex 2, Table 2's Err), both Maxwell kernels, whose
  * systematic error is known exactly (reference/heated.h, background.h); and
  * cost-split-ex5 (paper A Ex 5's hard spheres, jump and time-step schemes).

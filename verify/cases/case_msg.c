@@ -2,7 +2,7 @@
  * conductivity kappa' and the first-order distribution of inelastic hard
  * spheres from the homogeneous heat-flux force (docs/theory.md §7, §14, issue 15).
  *
- * Every row is one steady state of verify/scenes/msg.ini at one restitution
+ * Every row is one steady state of verify/cases/scenes/msg.ini at one restitution
  * coefficient alpha and force strength eps* (time-step scheme, the force and
  * its projection of sim/effect_heat_flux.c): N independent ensembles of n
  * particles relax until steady.from, then each averages q_x, kappa'/kappa0 and

@@ -17,6 +17,7 @@
 #include "ensemble.h"
 #include "scene_ini.h"
 #include "references.h"
+#include "suites.h"
 #include "result.h"
 #include "steady.h"
 #include "scene_refs.h"
@@ -121,7 +122,7 @@ static const char usage_verify[] =
     "  --out DIR    where reports go (default: reports for the quick suite,\n"
     "               reports/paper for the papers' sizes)\n"
     "  --scenes DIR where the case scenes are (default: the source tree's\n"
-    "               verify/scenes)\n"
+    "               verify/cases/scenes)\n"
     "  --set S.K=V  override a key of every case's scene, for the simulation and\n"
     "               the references alike (e.g. --set scene.seed=7)\n"
     "  --solver-set S.K=V  override a key for the simulation only: a deliberately\n"
@@ -747,7 +748,7 @@ static int cmd_bench(int argc, char **argv)
         return rc;
     const char *out = a.out, *md = a.md, *max_n_text = a.max_n, *seconds_text = a.seconds;
     vfy_bench_options o = {.max_n = 10000000, .seconds = 2.0,
-                           .scene_dir = GDSMC_SOURCE_DIR "/verify/scenes", .progress = stderr};
+                           .scene_dir = GDSMC_SOURCE_DIR "/verify/cases/scenes", .progress = stderr};
     char *end;
     if (max_n_text) {
         double x = strtod(max_n_text, &end);
@@ -882,7 +883,7 @@ static int cmd_verify(int argc, char **argv)
                    : a.suite && strcmp(a.suite, "quick") == 0    ? "reports"
                    : a.suite && strcmp(a.suite, "protocol") == 0 ? "reports/protocol"
                                                                  : "reports/paper",
-        .scene_dir = a.scenes ? a.scenes : GDSMC_SOURCE_DIR "/verify/scenes",
+        .scene_dir = a.scenes ? a.scenes : GDSMC_SOURCE_DIR "/verify/cases/scenes",
         .overrides = a.sets,
         .noverrides = a.nsets,
         .solver_overrides = a.solver_sets,

@@ -30,9 +30,11 @@ sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_
                               const char *comment, double wall_s, double cpu_s, char *msg,
                               size_t msglen);
 
-/* Write out_dir/README.md from the verdicts files there (title: "quick
- * sizes" or "paper sizes").  Returns SIM_OK or SIM_EIO with msg. */
-sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, size_t msglen);
+/* Write out_dir/README.md from the verdicts files there of the ncases
+ * cases named in `cases`, in that order (title: "quick sizes" or "paper
+ * sizes").  Returns SIM_OK or SIM_EIO with msg. */
+sim_status vfy_write_index(const vfy_options *o, const char *title, const char *const *cases,
+                           size_t ncases, char *msg, size_t msglen);
 
 /* text as one CSV field: quoted when it holds a comma, a quote or a line
  * break (a quote doubled, a line break written as a space). */

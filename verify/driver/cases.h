@@ -35,7 +35,7 @@ void vfy_finished_free(vfy_finished *f);
 typedef struct vfy_options {
     vfy_size size;
     const char *out_dir;               /* where reports go ("reports") */
-    const char *scene_dir;             /* where scene files are ("verify/scenes") */
+    const char *scene_dir;             /* where scene files are ("verify/cases/scenes") */
     const char *const *overrides;      /* --set: change every case (solver and references) */
     size_t noverrides;
     const char *const *solver_overrides; /* --solver-set: change only the simulated scene,
@@ -72,32 +72,6 @@ struct vfy_case {
     int quick;             /* part of the quick suite */
     const struct vfy_case_desc *desc;  /* what the driver runs (driver.h) */
 };
-
-size_t vfy_case_count(void);
-const vfy_case *vfy_case_at(size_t i);
-const vfy_case *vfy_case_find(const char *name);
-
-/* Does every name of the comma-separated `list` name a case?  If not, 0 with
- * the first that does not in unknown. */
-int vfy_case_list_check(const char *list, char *unknown, size_t len);
-
-/* Is `name` a suite ("quick", "paper" or a paper's suite such as "grw")? */
-int vfy_suite_exists(const char *name);
-
-/* The papers' suites in case order, comma-separated ("grw, brs"), in buf. */
-const char *vfy_paper_suites(char *buf, size_t len);
-
-/* Whether case c is selected by suite (NULL: "paper") or, when case_name
- * is not NULL, by that comma-separated list of cases. */
-int vfy_case_selected(const vfy_case *c, const char *suite, const char *case_name);
-
-/* Run every case of the suite, or only the cases named in case_name, a
- * comma-separated list (in suite order, at the suite's sizes; the default
- * suite for named cases is "paper").  Stops at the first case that
- * cannot run (returns its error).  Reports go to o->out_dir; with
- * o->dry_run, the scenes and the listing, and r may be NULL. */
-sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *o,
-                   vfy_report *r, char *msg, size_t msglen);
 
 /* The same for the scene o->scene_dir/<stem>.ini, for a case built on
  * another case's scene (e.g. cost-grw-ex3 on grw-ex3). */

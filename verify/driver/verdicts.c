@@ -151,15 +151,15 @@ static int read_verdicts(const vfy_options *o, const char *name, case_verdicts *
 }
 
 /* Whether file name `file` (a .png) belongs to case c: <c>.png or <c>-*.png,
- * and no longer case name claims it. */
-static int figure_of(const char *file, const char *c)
+ * and no longer case name of `cases` claims it. */
+static int figure_of(const char *file, const char *c, const char *const *cases, size_t ncases)
 {
     const size_t len = strlen(c), flen = strlen(file);
     if (flen < 4 || strcmp(file + flen - 4, ".png") != 0 || strncmp(file, c, len) != 0
         || (file[len] != '.' && file[len] != '-'))
         return 0;
-    for (size_t i = 0; i < vfy_case_count(); i++) {
-        const char *other = vfy_case_at(i)->name;
+    for (size_t i = 0; i < ncases; i++) {
+        const char *other = cases[i];
         const size_t olen = strlen(other);
         if (olen > len && strncmp(file, other, olen) == 0
             && (file[olen] == '.' || file[olen] == '-'))
@@ -175,7 +175,8 @@ static int compare_names(const void *a, const void *b)
 
 /* Links to the case's figures in out_dir, in name order (as many as there
  * are; out of memory, those listed so far). */
-static void figure_links(FILE *f, const vfy_options *o, const char *c)
+static void figure_links(FILE *f, const vfy_options *o, const char *c,
+                         const char *const *cases, size_t ncases)
 {
     DIR *dir = opendir(o->out_dir);
     if (dir == NULL)
@@ -183,7 +184,7 @@ static void figure_links(FILE *f, const vfy_options *o, const char *c)
     char **names = NULL;
     size_t count = 0, cap = 0;
     for (struct dirent *e; (e = readdir(dir)) != NULL;) {
-        if (!figure_of(e->d_name, c))
+        if (!figure_of(e->d_name, c, cases, ncases))
             continue;
         if (count == cap) {
             char **grown = realloc(names, (cap = cap ? 2 * cap : 16) * sizeof *grown);
@@ -208,7 +209,8 @@ static void figure_links(FILE *f, const vfy_options *o, const char *c)
     free(names);
 }
 
-sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, size_t msglen)
+sim_status vfy_write_index(const vfy_options *o, const char *title, const char *const *cases,
+                           size_t ncases, char *msg, size_t msglen)
 {
     vfy_report_file rf;
     if (vfy_report_file_open(&rf, o, "README.md", msg, msglen) != SIM_OK)
@@ -228,8 +230,8 @@ sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, s
           "|---|---:|---:|---:|---:|---:|---:|---|---|\n",
           f);
     case_verdicts all = {0};
-    for (size_t i = 0; i < vfy_case_count(); i++) {
-        const char *c = vfy_case_at(i)->name;
+    for (size_t i = 0; i < ncases; i++) {
+        const char *c = cases[i];
         case_verdicts cv;
         if (read_verdicts(o, c, &cv, NULL, VFY_PASS) != 0)
             continue;
@@ -237,7 +239,7 @@ sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, s
                    "[verdicts](%s-verdicts.csv)",
                 c, cv.n[VFY_PASS], cv.n[VFY_FAIL], cv.n[VFY_SKIP], cv.n[VFY_DIFFERS], cv.wall_s,
                 cv.cpu_s, cv.version, c, c);
-        figure_links(f, o, c);
+        figure_links(f, o, c, cases, ncases);
         fputs(" |\n", f);
         for (int v = 0; v < VFY_VERDICTS; v++)
             all.n[v] += cv.n[v];
@@ -255,9 +257,9 @@ sim_status vfy_write_index(const vfy_options *o, const char *title, char *msg, s
         if (all.n[lists[k].v] == 0)
             continue;
         fprintf(f, "\n## %s\n\n", lists[k].heading);
-        for (size_t i = 0; i < vfy_case_count(); i++) {
+        for (size_t i = 0; i < ncases; i++) {
             case_verdicts cv;
-            read_verdicts(o, vfy_case_at(i)->name, &cv, f, lists[k].v);
+            read_verdicts(o, cases[i], &cv, f, lists[k].v);
         }
     }
     return vfy_report_file_close(&rf, msg, msglen);

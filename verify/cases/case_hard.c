@@ -1,7 +1,7 @@
 /* The hard suite (issue #5 item 1): cases chosen to break a careless solver,
  * each with checks that can fail.  Suite `hard` (the sizes below marked
  * "paper"); every case is also in the quick suite at small sizes (CI, also
- * under ASan+UBSan).  Scenes: verify/scenes/hard-*.ini, and paper A's and B's
+ * under ASan+UBSan).  Scenes: verify/cases/scenes/hard-*.ini, and paper A's and B's
  * own scenes where a case reuses their gases.
  *
  * hard-dissipation  very strong dissipation: white-noise heated hard spheres
@@ -390,7 +390,7 @@ static vfy_verdict hard_rule(vfy_report *r, const char *name, vfy_case_run *run,
     }
 }
 #define HARD_CHECK(LABEL, WHICH, COUNT) {.name = LABEL, .rule = hard_rule, .x = WHICH, .value = COUNT}
-/* The round-off bounds model this engine's own arithmetic (verify/case_hard.h). */
+/* The round-off bounds model this engine's own arithmetic (verify/cases/case_hard.h). */
 #define HARD_ROUNDOFF_CHECK(LABEL, WHICH, COUNT)                                    \
     {.name = LABEL, .rule = hard_rule, .x = WHICH, .value = COUNT,                  \
      .builtin_only = "its round-off bound models this engine's own arithmetic"}
@@ -891,7 +891,7 @@ const vfy_case_desc vfy_hard_nongaussian = {
         "particles), while the first Sonine approximation gives 1 + 15 a2/8 "
         "(f_over_phi_sonine); allowed at most 0.5. max_V: an upper bound on |V_k| over "
         "ensembles and times (sqrt(N (var + mean^2))) after zero_momentum, against the "
-        "round-off bound V_bound (verify/case_hard.h). balance: the collisional loss over the "
+        "round-off bound V_bound (verify/cases/case_hard.h). balance: the collisional loss over the "
         "thermostat's input (2/3) g <|v|>, 1 in the steady state (exact), judged within "
         "balance_tol (half-widths and 3/n) plus 0.2% for the time step.")};
 
@@ -1066,7 +1066,7 @@ const vfy_case_desc vfy_hard_long_run = {
         "events), energy and momentum conserved exactly in real arithmetic, T(t) against T(0) "
         "within energy_bound. max_V: an upper bound on |V_k| of every system at every output "
         "time (sqrt(N (var + mean^2))), against V_bound = 6 u s (sqrt(2 U)/n + 2), U "
-        "collisions per system, s the r.m.s. speed (verify/case_hard.h).")};
+        "collisions per system, s the r.m.s. speed (verify/cases/case_hard.h).")};
 
 /* -------------------------------------------------------------- hard-stiff */
 

@@ -59,7 +59,7 @@ double vfy_max_abs_diff(const double *a, const double *b, size_t count);
 double vfy_z_pair(double a, double sa, double b, double sb);
 
 /* The exact steady energy balance of a heated hard-sphere gas (docs/theory.md §11.3;
- * verify/case_hard.c derives it for the n-particle process): the collisional
+ * verify/cases/case_hard.c derives it for the n-particle process): the collisional
  * loss of T, gamma pi C (1 - alpha^2) <|g|^3>/6 with <|g|^3> = 8 mu2 (2T)^(3/2)/(pi
  * (1 - alpha'^2)) from the result's steady mu2 (paper C Eq. 65, reduced with the
  * solver's alpha', which its observer used) and T, over the thermostat's input at

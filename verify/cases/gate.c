@@ -10,6 +10,7 @@
 #include "checks.h"
 #include "driver.h"
 #include "figure.h"
+#include "suites.h"
 #include "table.h"
 #include "text.h"
 #include "verdicts.h"
