@@ -140,10 +140,11 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, "%s '%s' skip 1 using 1:%zu with lines lw 2 dt %zu title '%s'",
                 j ? "," : "", theory, j + 2, j + 1, gp_text(f->curves[j]));
+    const char *bars = f->bars != NULL ? f->bars : VFY_CI_LEGEND;
     for (size_t j = 0; j < f->nseries; j++)
-        fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %zu title '%s ± c'",
+        fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %zu title '%s%s%s'",
                 f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j, 5 + 2 * j,
-                gp_text(f->series[j]));
+                gp_text(f->series[j]), *bars ? " " : "", gp_text(bars));
     fputc('\n', out);
     return finish_script(o, out, tmp, gp);
 }
@@ -321,9 +322,10 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                     j ? "," : "", path, 2 + j, gp_text(ref_names[j]));
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
-            char *label = labels != NULL ? vfy_aprintf("%s: mean ± c", labels[i])
-                          : n[i] == 0    ? vfy_aprintf("n = infinity (O(1/n) extrapolation) ± c")
-                                         : vfy_aprintf("n = %zu: mean ± c", n[i]);
+            char *label = labels != NULL ? vfy_aprintf("%s: mean %s", labels[i], VFY_CI_LEGEND)
+                          : n[i] == 0 ? vfy_aprintf("n = infinity (O(1/n) extrapolation) %s",
+                                                    VFY_CI_LEGEND)
+                                      : vfy_aprintf("n = %zu: mean %s", n[i], VFY_CI_LEGEND);
             fprintf(f, "%s '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
                        "fs transparent solid 0.25 lc %zu title '%s'",
                     nref || i > first ? "," : "", path, col, col + 1, col, col + 1, i + 1,

@@ -6,6 +6,12 @@
 
 #include "cases.h"
 
+/* What every figure's error bars and confidence bands are, the text their
+ * legends end with: the confidence half-width ci = SIM_LAMBDA_P = 3.2
+ * standard errors, two-sided p = 0.999 (sim/ensemble.h; docs/verdicts.md).
+ * A text, not a printf format (it holds a '%'). */
+#define VFY_CI_LEGEND "± 99.9% ci"
+
 /* Run `gnuplot script_path` (the script names its own PNG output).  Returns
  * 1 if gnuplot ran and succeeded, 0 if gnuplot is not installed or this
  * process writes no files (vfy_writes_files), -1 if it failed. */
@@ -16,7 +22,7 @@ int vfy_gnuplot(const char *script_path);
  * drawing each row's confidence band beside the references (one panel per row,
  * 2 x 2 for up to four rows and two columns beyond, or all in one), rendered
  * to <name>.png when gnuplot is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
- * or "n = N" when labels is NULL.  Returns 0 or -1 (errno). */
+ * or "n = N" when labels is NULL, then ": mean " VFY_CI_LEGEND.  Returns 0 or -1 (errno). */
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
                      const double *t, size_t M, size_t nref, const char *const *ref_names,
@@ -34,6 +40,9 @@ typedef struct vfy_points {
     size_t nseries;
     const char *const *series;
     const double *const *y, *const *ci;   /* [series][point] */
+    const char *bars;                     /* what the error bars are, each series'
+                                             legend ends with it: NULL for
+                                             VFY_CI_LEGEND, "" for none (ci all 0) */
     size_t nfine;
     const double *xfine;
     size_t ncurves;
@@ -43,8 +52,9 @@ typedef struct vfy_points {
 } vfy_points;
 
 /* <name>-points.csv (x, each series and its confidence half-width),
- * <name>-theory.csv (the curves on their fine grid) and <name>.gp, rendered
- * to <name>.png when gnuplot is installed.  Returns 0 or -1 (errno). */
+ * <name>-theory.csv (the curves on their fine grid) and <name>.gp (each
+ * series with error bars, its legend "SERIES " VFY_CI_LEGEND), rendered to
+ * <name>.png when gnuplot is installed.  Returns 0 or -1 (errno). */
 int vfy_write_points(const vfy_options *o, const vfy_points *f);
 
 /* Curves whose abscissa differs from curve to curve (paper E's quantities
