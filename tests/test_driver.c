@@ -870,6 +870,70 @@ static void test_long_description(void **state)
     }
 }
 
+/* A points figure grouped by a row value (driver.h, group_by): each group
+ * its own series, columns and symbol, "LABEL (GROUP)" in the legend with
+ * what the bars are; a row in no listed group is left out; without a list
+ * the groups are the rows' values in order (a number too); ungrouped
+ * figures are as before. */
+static const char *const group_rows[] = {
+    "a: $model=ihs;$k=4;$x=0.1;$y=1;$y_ci=0.1", "b: $model=ehs;$k=0.5;$x=0.1;$y=2;$y_ci=0.2",
+    "c: $model=ihs;$k=4;$x=0.2;$y=3;$y_ci=0.3", "d: $model=bgk;$k=0.5;$x=0.2;$y=4;$y_ci=0.4",
+    NULL};
+#define GROUP_FIGURE(SUFFIX, ...)                                                      \
+    {.kind = VFY_FIGURE_POINTS, .suffix = SUFFIX, .x = "x", .series = VFY_LIST("Y=y"),  \
+     .title = "{case}", .xlabel = "x", .ylabel = "y", __VA_ARGS__}
+static const vfy_case_desc group_desc = {
+    .scene = "grw-ex3", .no_simulation = 1, .quick_rows = {.rows = group_rows},
+    .label = "{case} {label}", .columns = "x:%g",
+    .figures = VFY_FIGURES(GROUP_FIGURE("-listed", .group_by = "model",
+                                        .groups = VFY_LIST("IHS=ihs", "EHS=ehs")),
+                           GROUP_FIGURE("-found", .group_by = "k"),
+                           GROUP_FIGURE("-none", .group_by = NULL)),
+    .title = "{case}", .notes = "notes"};
+static const vfy_case group_case = {"driver-groups", "test", "", 0, &group_desc};
+
+/* The lines of out_dir/driver-groups<suffix> without its comments, in buf. */
+static const char *group_file(const char *suffix, char *buf, size_t len)
+{
+    char path[600], line[2048];
+    snprintf(path, sizeof path, "%s/driver-groups%s", out_dir, suffix);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    buf[0] = '\0';
+    while (fgets(line, sizeof line, f) != NULL)
+        if (line[0] != '#')
+            strncat(buf, line, len - strlen(buf) - 1);
+    fclose(f);
+    return buf;
+}
+
+static void test_points_groups(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], buf[8192];
+    assert_int_equal(vfy_run_described(&group_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    assert_string_equal(group_file("-listed-points.csv", buf, sizeof buf),
+                        "x,Y (IHS),Y (IHS)_ci,Y (EHS),Y (EHS)_ci\n"
+                        "0.1,1,0.1,,\n0.1,,,2,0.2\n0.2,3,0.3,,\n");   /* bgk: in no group */
+    const char *gp = group_file("-listed.gp", buf, sizeof buf);
+    assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 7 lc rgb '#0072b2' "
+                               "title 'Y (IHS) " VFY_CI_LEGEND "'"));
+    assert_non_null(strstr(gp, "using 1:4:5 with yerrorbars pt 6 lc rgb '#d55e00' "
+                               "title 'Y (EHS) " VFY_CI_LEGEND "'"));
+    assert_string_equal(group_file("-found-points.csv", buf, sizeof buf),
+                        "x,Y (4),Y (4)_ci,Y (0.5),Y (0.5)_ci\n"
+                        "0.1,1,0.1,,\n0.1,,,2,0.2\n0.2,3,0.3,,\n0.2,,,4,0.4\n");
+    assert_string_equal(group_file("-none-points.csv", buf, sizeof buf),
+                        "x,Y,Y_ci\n0.1,1,0.1\n0.1,2,0.2\n0.2,3,0.3\n0.2,4,0.4\n");
+    gp = group_file("-none.gp", buf, sizeof buf);
+    assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 5 title 'Y " VFY_CI_LEGEND "'\n"));
+    assert_non_null(strstr(gp, "set key top right\n"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -885,6 +949,7 @@ int main(void)
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
         cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
+        cmocka_unit_test(test_points_groups),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

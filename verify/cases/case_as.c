@@ -404,6 +404,9 @@ static const char columns[] =
 static const char *const values[] = {"a_star_bgk", "Pxy_reduced_bgk", "N1_bgk",
                                      "T_ratio_bgk", NULL};
 
+/* The figures' groups: the rows' $model */
+#define AS_MODEL_GROUPS VFY_LIST("IHS=ihs", "EHS=ehs", "EHS jump scheme=ehs-jump")
+
 const vfy_case_desc vfy_as_steady = {
     .must_fail = "collisions.restitution=0.9",
     .power_keys = "shear.rate=1.05",
@@ -411,17 +414,22 @@ const vfy_case_desc vfy_as_steady = {
     .paper_rows = {.rows = paper_rows}, .quick_rows = {.rows = quick_rows, .sets = AS_QUICK_SETS},
     .derive = as_steady_window, .adjust = vfy_adjust_jump_rows,
     .values = values, .metrics = metrics, .checks = checks, .columns = columns,
+    /* IHS and EHS apart (E draws them apart: their difference is the point),
+     * each with both a tau0 (the steady state does not depend on it); the
+     * BGK model's steady state is the same for both (reference/bgk.h) */
     .figures = VFY_FIGURES(
         {.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = VFY_LIST("DSMC=a_star"),
+         .group_by = "model", .groups = AS_MODEL_GROUPS,
          .refs = VFY_LIST("BGK=a_star_bgk"), .x_lo = 0.5, .x_hi = 0.95,
          .title = "{case}: steady a* against alpha, IHS and EHS, both a tau0 (paper E Fig. 14)",
-         .xlabel = "alpha", .ylabel = "a*"},
+         .xlabel = "alpha", .ylabel = "a* = a tau_eta(T)"},
         {.kind = VFY_FIGURE_POINTS, .suffix = "-stress", .x = "alpha",
          .series = VFY_LIST("-Pxy/nT=Pxy_reduced", "(Pxx-Pyy)/nT=N1", "(Pzz-Pyy)/nT=N2"),
-         .refs = VFY_LIST("BGK -Pxy/p=Pxy_reduced_bgk", "BGK (Pxx-Pyy)/p=N1_bgk"),
+         .group_by = "model", .groups = AS_MODEL_GROUPS,
+         .refs = VFY_LIST("BGK -Pxy/nT=Pxy_reduced_bgk", "BGK (Pxx-Pyy)/nT=N1_bgk"),
          .x_lo = 0.5, .x_hi = 0.95,
          .title = "{case}: steady reduced stresses against alpha (paper E Figs. 15-16)",
-         .xlabel = "alpha", .ylabel = "reduced stress"}),
+         .xlabel = "alpha", .ylabel = "reduced stress (over nT, the pressure)"}),
     .title = "{case}: paper E Figs. 14-16, the steady state of uniform shear flow, IHS and EHS "
              "beside BGK ({size} sizes)",
     .notes =

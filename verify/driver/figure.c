@@ -10,6 +10,15 @@
 #include "text.h"
 
 enum { PATH_LEN = 1024, TMP_LEN = 1100 };   /* a report file's path, and its .tmp */
+enum { POINTS_KEY_INSIDE = 6 };   /* the most entries a points figure's key has on the plot */
+
+/* Colour k of VFY_FIGURE_COLOURS (figure.h), 1-based. */
+static const char *palette(int k)
+{
+    static const char *const colour[VFY_FIGURE_COLOURS] = {
+        "#0072b2", "#d55e00", "#cc79a7", "#e69f00", "#56b4e9", "#009e73", "#000000", "#999999"};
+    return colour[(size_t)(k > 0 ? k - 1 : 0) % VFY_FIGURE_COLOURS];
+}
 
 int vfy_gnuplot(const char *script_path)
 {
@@ -105,7 +114,10 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     for (size_t i = 0; i < f->npoints; i++) {
         fprintf(out, "%.10g", f->x[i]);
         for (size_t j = 0; j < f->nseries; j++)
-            fprintf(out, ",%.10g,%.6g", f->y[j][i], f->ci[j][i]);
+            if (isfinite(f->y[j][i]))
+                fprintf(out, ",%.10g,%.6g", f->y[j][i], f->ci[j][i]);
+            else
+                fputs(",,", out);   /* not in this series (another group's point) */
         fputc('\n', out);
     }
     if (vfy_file_commit(out, tmp, points, 1) != 0)
@@ -127,12 +139,15 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     if (vfy_file_commit(out, tmp, theory, 1) != 0)
         return -1;
 
-    out = begin_script(o, f->name, f->comment, f->title, 900, 650, gp, tmp);
+    /* a key of more than POINTS_KEY_INSIDE entries beside the plot, not on it */
+    const int outside = f->nseries + f->ncurves > POINTS_KEY_INSIDE;
+    out = begin_script(o, f->name, f->comment, f->title, outside ? 1200 : 900, 650, gp, tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
+    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key %s\n%s"
                  "plot",
             gp_text(f->title), gp_text(f->xlabel), gp_text(f->ylabel),
+            outside ? "outside right top" : "top right",
             f->logx && f->logy ? "set logscale xy\n"
             : f->logy          ? "set logscale y\n"
             : f->logx          ? "set logscale x\n"
@@ -141,10 +156,14 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
         fprintf(out, "%s '%s' skip 1 using 1:%zu with lines lw 2 dt %zu title '%s'",
                 j ? "," : "", theory, j + 2, j + 1, gp_text(f->curves[j]));
     const char *bars = f->bars != NULL ? f->bars : VFY_CI_LEGEND;
-    for (size_t j = 0; j < f->nseries; j++)
-        fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %zu title '%s%s%s'",
-                f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j, 5 + 2 * j,
-                gp_text(f->series[j]), *bars ? " " : "", gp_text(bars));
+    for (size_t j = 0; j < f->nseries; j++) {
+        fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %d",
+                f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j,
+                f->pt != NULL ? f->pt[j] : 5 + 2 * (int)j);
+        if (f->lc != NULL)
+            fprintf(out, " lc rgb '%s'", palette(f->lc[j]));
+        fprintf(out, " title '%s%s%s'", gp_text(f->series[j]), *bars ? " " : "", gp_text(bars));
+    }
     fputc('\n', out);
     return finish_script(o, out, tmp, gp);
 }

@@ -12,6 +12,13 @@
  * A text, not a printf format (it holds a '%'). */
 #define VFY_CI_LEGEND "± 99.9% ci"
 
+/* The colours a series or curve may name (vfy_points.lc),
+ * 1 to VFY_FIGURE_COLOURS: blue, vermilion, reddish purple, orange, sky
+ * blue, bluish green, black, grey (Okabe and Ito's colour-blind safe set
+ * without its yellow, in an order whose first colours differ from gnuplot's
+ * first linetypes, purple and green, which draw the references). */
+#define VFY_FIGURE_COLOURS 8
+
 /* Run `gnuplot script_path` (the script names its own PNG output).  Returns
  * 1 if gnuplot ran and succeeded, 0 if gnuplot is not installed or this
  * process writes no files (vfy_writes_files), -1 if it failed. */
@@ -39,10 +46,14 @@ typedef struct vfy_points {
     const double *x;
     size_t nseries;
     const char *const *series;
-    const double *const *y, *const *ci;   /* [series][point] */
+    const double *const *y, *const *ci;   /* [series][point]; a point whose y is not
+                                             finite is an empty cell, not drawn */
     const char *bars;                     /* what the error bars are, each series'
                                              legend ends with it: NULL for
                                              VFY_CI_LEGEND, "" for none (ci all 0) */
+    const int *pt, *lc;                   /* [series]: its point type and colour
+                                             (1..VFY_FIGURE_COLOURS), or NULL: pt 5 + 2j
+                                             and gnuplot's next linetype */
     size_t nfine;
     const double *xfine;
     size_t ncurves;
@@ -53,8 +64,9 @@ typedef struct vfy_points {
 
 /* <name>-points.csv (x, each series and its confidence half-width),
  * <name>-theory.csv (the curves on their fine grid) and <name>.gp (each
- * series with error bars, its legend "SERIES " VFY_CI_LEGEND), rendered to
- * <name>.png when gnuplot is installed.  Returns 0 or -1 (errno). */
+ * series with error bars, its legend "SERIES " VFY_CI_LEGEND; a key of more
+ * than 6 series and curves beside the plot), rendered to <name>.png when
+ * gnuplot is installed.  Returns 0 or -1 (errno). */
 int vfy_write_points(const vfy_options *o, const vfy_points *f);
 
 /* Curves whose abscissa differs from curve to curve (paper E's quantities
