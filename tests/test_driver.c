@@ -934,6 +934,58 @@ static void test_points_groups(void **state)
     assert_non_null(strstr(gp, "set key top right\n"));
 }
 
+/* A grid of xy panels (figure.h, ncolumns): each column draws its own
+ * curves under its title, the rows of panels on one y scale each, the key
+ * once below the grid from the first panel's curves, with their colours
+ * and dash types; the data's blocks name their column. */
+static void test_xy_grid(void **state)
+{
+    (void)state;
+    const double x[3] = {0.0, 0.5, 1.0}, y[3] = {1.0, 2.0, 3.0}, z[3] = {-1.0, 0.0, 5.0};
+    vfy_xy_curve curves[4];
+    for (size_t j = 0; j < 4; j++)
+        curves[j] = (vfy_xy_curve){.label = j % 2 ? "late" : "early", .count = 3, .x = x,
+                                   .y = {j < 2 ? y : z, y}, .lc = 1 + (int)(j % 2),
+                                   .dt = 1 + (int)(j % 2), .column = j / 2};
+    const char *const titles[] = {"left", "right"};
+    const vfy_xy_figure fig = {.name = "driver-grid", .title = "grid", .xlabel = "x",
+                               .comment = "comment", .npanels = 2, .ylabel = {"u", "v"},
+                               .ncurves = 4, .curves = curves, .ncolumns = 2,
+                               .column_title = titles};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_xy(&o, &fig), 0);
+    char path[600], line[1024];
+    snprintf(path, sizeof path, "%s/driver-grid.gp", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t panels = 0, titled = 0, key = 0, range = 0;
+    while (fgets(line, sizeof line, f) != NULL) {
+        panels += strncmp(line, "set lmargin at screen", 21) == 0;
+        titled += strcmp(line, "set title 'left'\n") == 0
+                  || strcmp(line, "set title 'right'\n") == 0;
+        range += strcmp(line, "set yrange [-1.3:5.3]\n") == 0;   /* z's span and y's, 5% more */
+        if (strncmp(line, "plot NaN with lines", 19) == 0) {   /* the key: column 0's curves */
+            key++;
+            assert_non_null(strstr(line, "dt 1 lc rgb '#0072b2' title 'early', NaN with lines "
+                                         "lw 1.5 dt 2 lc rgb '#d55e00' title 'late'\n"));
+        } else if (strncmp(line, "plot", 4) == 0)
+            assert_non_null(strstr(line, "notitle"));
+    }
+    fclose(f);
+    assert_int_equal(panels, 4 + 1);   /* and the key's strip */
+    assert_int_equal(titled, 2);
+    assert_int_equal(range, 1);
+    assert_int_equal(key, 1);
+    snprintf(path, sizeof path, "%s/driver-grid-curves.csv", out_dir);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    size_t blocks = 0;
+    while (fgets(line, sizeof line, f) != NULL)
+        blocks += strcmp(line, "# right: late\n") == 0;
+    fclose(f);
+    assert_int_equal(blocks, 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -949,7 +1001,7 @@ int main(void)
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
         cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
-        cmocka_unit_test(test_points_groups),
+        cmocka_unit_test(test_points_groups), cmocka_unit_test(test_xy_grid),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

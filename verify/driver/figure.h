@@ -12,7 +12,7 @@
  * A text, not a printf format (it holds a '%'). */
 #define VFY_CI_LEGEND "± 99.9% ci"
 
-/* The colours a series or curve may name (vfy_points.lc),
+/* The colours a series or curve may name (vfy_points.lc, vfy_xy_curve.lc),
  * 1 to VFY_FIGURE_COLOURS: blue, vermilion, reddish purple, orange, sky
  * blue, bluish green, black, grey (Okabe and Ito's colour-blind safe set
  * without its yellow, in an order whose first colours differ from gnuplot's
@@ -80,6 +80,12 @@ typedef struct vfy_xy_curve {
     const double *x;
     const double *y[VFY_XY_PANELS];   /* per panel (NULL: not in that panel) */
     const double *ci[VFY_XY_PANELS];  /* half-widths (NULL: none) */
+    int lc;                           /* 1..VFY_FIGURE_COLOURS: its colour; 0: gnuplot's
+                                         linetype 1 + k % 8 for curve k */
+    int dt;                           /* > 0: its dash type (1 solid, 2 dashed, 3
+                                         dotted, 4 dash-dot, 5 dash-dot-dot); 0:
+                                         solid, a reference dashed */
+    size_t column;                    /* a grid's column (vfy_xy_figure.ncolumns) */
 } vfy_xy_curve;
 
 typedef struct vfy_xy_figure {
@@ -89,11 +95,21 @@ typedef struct vfy_xy_figure {
     const char *ylabel[VFY_XY_PANELS];
     size_t ncurves;
     const vfy_xy_curve *curves;
+    /* 0 or 1: the panels one above the other, each with every curve and its
+     * key.  More: a grid of npanels rows and ncolumns columns, the panel of
+     * column k drawing the curves whose column is k, under column_title[k];
+     * the panels of a row share their y range, and the key is drawn once,
+     * below the grid, from the first panel's curves: every column's curves
+     * are told apart the same way (their style and label), the columns by
+     * their titles. */
+    size_t ncolumns;
+    const char *const *column_title;
 } vfy_xy_figure;
 
 /* <name>-curves.csv (one gnuplot index block per curve: x, then each panel's
- * y and its half-width) and <name>.gp, the panels one above the other, each
- * with every curve, rendered to <name>.png when gnuplot is installed.
+ * y and its half-width; in a grid the block's comment names the column's
+ * title before the curve's label) and <name>.gp, the panels one above the
+ * other (or the grid), rendered to <name>.png when gnuplot is installed.
  * Returns 0 or -1 (errno). */
 int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f);
 
