@@ -1467,6 +1467,11 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
                 xf[k] = asd_centre(&F, k);
                 cif[k] = F.ci[k] * F.t_factor;
             }
+            /* a row's colour, the same in every panel: IHS blue, EHS vermilion, at a tau0
+             * = 0.1 their lighter kin (sky blue, orange) */
+            const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0;
+            const int cold = vfy_values_get(&row->values, "a_tau0") != 4.0;
+            c->lc = cf->lc = ehs ? (cold ? 4 : 2) : (cold ? 5 : 1);
             c->x = x;
             c->y[0] = gx.mean, c->ci[0] = cix;
             c->y[1] = gy.mean, c->ci[1] = ciy;
@@ -1511,6 +1516,8 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
                 asx_relabel(&pl, asx_index(&pl, models[j]),
                             j < 2 ? vfy_aprintf("BGK alpha=%.1f", alphas[ia])
                                   : vfy_strdup("equilibrium"));
+            b->lc = bf->lc = 7;   /* black and grey, whatever the rows' colours */
+            e->lc = ef->lc = 8;
             b->x = x, b->y[0] = bx, b->y[1] = by;
             bf->x = xs, bf->y[2] = bF;
             e->x = x, e->y[0] = e->y[1] = mg;

@@ -286,7 +286,7 @@ static void xy_grid(FILE *out, const vfy_xy_figure *f, const char *data)
     fprintf(out, "set datafile missing ''\nset multiplot title '%s'\n%s%s"
                  "set key off\nset grid\n",
             gp_text(f->title), f->logx ? "set logscale x\n" : "",
-            f->logy ? "set logscale y\n" : "");
+            f->logy ? "set logscale y\nset format y '%g'\n" : "");
     for (size_t p = 0; p < f->npanels; p++) {
         double lo, hi;
         xy_panel_range(f, p, &lo, &hi);
@@ -346,7 +346,7 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
     fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s%s"
                  "set key outside right top\nset grid\n",
             f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "",
-            f->logy ? "set logscale y\n" : "");
+            f->logy ? "set logscale y\nset format y '%g'\n" : "");
     for (size_t p = 0; p < f->npanels; p++) {
         fprintf(out, "set xlabel '%s'\nset ylabel '%s'\nplot", gp_text(f->xlabel),
                 gp_text(f->ylabel[p]));
@@ -476,19 +476,24 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
         if (one_panel_per_row)
             fprintf(f, "set title 'n = %zu'\n", n[p]);
         fprintf(f, "plot");
-        for (size_t j = 0; j < nref; j++)
-            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt 2 lw 2 title '%s'",
-                    j ? "," : "", path, 2 + j, gp_text(ref_names[j]));
+        for (size_t j = 0; j < nref; j++)   /* black, each its dash type */
+            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt %zu lw 2 lc rgb '%s' "
+                       "title '%s'",
+                    j ? "," : "", path, 2 + j, 2 + j, palette(7), gp_text(ref_names[j]));
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
             char *label = labels != NULL ? vfy_aprintf("%s: mean %s", labels[i], VFY_CI_LEGEND)
                           : n[i] == 0 ? vfy_aprintf("n = infinity (O(1/n) extrapolation) %s",
                                                     VFY_CI_LEGEND)
                                       : vfy_aprintf("n = %zu: mean %s", n[i], VFY_CI_LEGEND);
+            /* the band, and its mean as a line (a band thinner than a line still shows);
+             * six colours, then the lines dashed */
+            const char *colour = palette(1 + (int)(i % 6));
             fprintf(f, "%s '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
-                       "fs transparent solid 0.25 lc %zu title '%s'",
-                    nref || i > first ? "," : "", path, col, col + 1, col, col + 1, i + 1,
-                    gp_text(label != NULL ? label : ""));
+                       "fs transparent solid 0.25 lc rgb '%s' title '%s', '%s' skip 1 using "
+                       "1:%zu with lines lw 1 dt %zu lc rgb '%s' notitle",
+                    nref || i > first ? "," : "", path, col, col + 1, col, col + 1, colour,
+                    gp_text(label != NULL ? label : ""), path, col, 1 + i / 6, colour);
             free(label);
         }
         fputc('\n', f);

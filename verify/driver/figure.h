@@ -26,7 +26,8 @@ int vfy_gnuplot(const char *script_path);
 
 /* out_dir/<name>-curves.csv (t, the reference columns, then mean and ci of
  * each row; n[i] = 0 marks the O(1/n) extrapolation) and out_dir/<name>.gp
- * drawing each row's confidence band beside the references (one panel per row,
+ * drawing each row's confidence band and its mean (a colour per row) beside
+ * the references (black, each its dash type) (one panel per row,
  * 2 x 2 for up to four rows and two columns beyond, or all in one), rendered
  * to <name>.png when gnuplot is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
  * or "n = N" when labels is NULL, then ": mean " VFY_CI_LEGEND.  Returns 0 or -1 (errno). */
