@@ -870,6 +870,122 @@ static void test_long_description(void **state)
     }
 }
 
+/* A points figure grouped by a row value (driver.h, group_by): each group
+ * its own series, columns and symbol, "LABEL (GROUP)" in the legend with
+ * what the bars are; a row in no listed group is left out; without a list
+ * the groups are the rows' values in order (a number too); ungrouped
+ * figures are as before. */
+static const char *const group_rows[] = {
+    "a: $model=ihs;$k=4;$x=0.1;$y=1;$y_ci=0.1", "b: $model=ehs;$k=0.5;$x=0.1;$y=2;$y_ci=0.2",
+    "c: $model=ihs;$k=4;$x=0.2;$y=3;$y_ci=0.3", "d: $model=bgk;$k=0.5;$x=0.2;$y=4;$y_ci=0.4",
+    NULL};
+#define GROUP_FIGURE(SUFFIX, ...)                                                      \
+    {.kind = VFY_FIGURE_POINTS, .suffix = SUFFIX, .x = "x", .series = VFY_LIST("Y=y"),  \
+     .title = "{case}", .xlabel = "x", .ylabel = "y", __VA_ARGS__}
+static const vfy_case_desc group_desc = {
+    .scene = "grw-ex3", .no_simulation = 1, .quick_rows = {.rows = group_rows},
+    .label = "{case} {label}", .columns = "x:%g",
+    .figures = VFY_FIGURES(GROUP_FIGURE("-listed", .group_by = "model",
+                                        .groups = VFY_LIST("IHS=ihs", "EHS=ehs")),
+                           GROUP_FIGURE("-found", .group_by = "k"),
+                           GROUP_FIGURE("-none", .group_by = NULL)),
+    .title = "{case}", .notes = "notes"};
+static const vfy_case group_case = {"driver-groups", "test", "", 0, &group_desc};
+
+/* The lines of out_dir/driver-groups<suffix> without its comments, in buf. */
+static const char *group_file(const char *suffix, char *buf, size_t len)
+{
+    char path[600], line[2048];
+    snprintf(path, sizeof path, "%s/driver-groups%s", out_dir, suffix);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    buf[0] = '\0';
+    while (fgets(line, sizeof line, f) != NULL)
+        if (line[0] != '#')
+            strncat(buf, line, len - strlen(buf) - 1);
+    fclose(f);
+    return buf;
+}
+
+static void test_points_groups(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], buf[8192];
+    assert_int_equal(vfy_run_described(&group_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    assert_string_equal(group_file("-listed-points.csv", buf, sizeof buf),
+                        "x,Y (IHS),Y (IHS)_ci,Y (EHS),Y (EHS)_ci\n"
+                        "0.1,1,0.1,,\n0.1,,,2,0.2\n0.2,3,0.3,,\n");   /* bgk: in no group */
+    const char *gp = group_file("-listed.gp", buf, sizeof buf);
+    assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 7 lc rgb '#0072b2' "
+                               "title 'Y (IHS) " VFY_CI_LEGEND "'"));
+    assert_non_null(strstr(gp, "using 1:4:5 with yerrorbars pt 6 lc rgb '#d55e00' "
+                               "title 'Y (EHS) " VFY_CI_LEGEND "'"));
+    assert_string_equal(group_file("-found-points.csv", buf, sizeof buf),
+                        "x,Y (4),Y (4)_ci,Y (0.5),Y (0.5)_ci\n"
+                        "0.1,1,0.1,,\n0.1,,,2,0.2\n0.2,3,0.3,,\n0.2,,,4,0.4\n");
+    assert_string_equal(group_file("-none-points.csv", buf, sizeof buf),
+                        "x,Y,Y_ci\n0.1,1,0.1\n0.1,2,0.2\n0.2,3,0.3\n0.2,4,0.4\n");
+    gp = group_file("-none.gp", buf, sizeof buf);
+    assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 5 title 'Y " VFY_CI_LEGEND "'\n"));
+    assert_non_null(strstr(gp, "set key top right\n"));
+}
+
+/* A grid of xy panels (figure.h, ncolumns): each column draws its own
+ * curves under its title, the rows of panels on one y scale each, the key
+ * once below the grid from the first panel's curves, with their colours
+ * and dash types; the data's blocks name their column. */
+static void test_xy_grid(void **state)
+{
+    (void)state;
+    const double x[3] = {0.0, 0.5, 1.0}, y[3] = {1.0, 2.0, 3.0}, z[3] = {-1.0, 0.0, 5.0};
+    vfy_xy_curve curves[4];
+    for (size_t j = 0; j < 4; j++)
+        curves[j] = (vfy_xy_curve){.label = j % 2 ? "late" : "early", .count = 3, .x = x,
+                                   .y = {j < 2 ? y : z, y}, .lc = 1 + (int)(j % 2),
+                                   .dt = 1 + (int)(j % 2), .column = j / 2};
+    const char *const titles[] = {"left", "right"};
+    const vfy_xy_figure fig = {.name = "driver-grid", .title = "grid", .xlabel = "x",
+                               .comment = "comment", .npanels = 2, .ylabel = {"u", "v"},
+                               .ncurves = 4, .curves = curves, .ncolumns = 2,
+                               .column_title = titles};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_xy(&o, &fig), 0);
+    char path[600], line[1024];
+    snprintf(path, sizeof path, "%s/driver-grid.gp", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t panels = 0, titled = 0, key = 0, range = 0;
+    while (fgets(line, sizeof line, f) != NULL) {
+        panels += strncmp(line, "set lmargin at screen", 21) == 0;
+        titled += strcmp(line, "set title 'left'\n") == 0
+                  || strcmp(line, "set title 'right'\n") == 0;
+        range += strcmp(line, "set yrange [-1.3:5.3]\n") == 0;   /* z's span and y's, 5% more */
+        if (strncmp(line, "plot NaN with lines", 19) == 0) {   /* the key: column 0's curves */
+            key++;
+            assert_non_null(strstr(line, "dt 1 lc rgb '#0072b2' title 'early', NaN with lines "
+                                         "lw 1.5 dt 2 lc rgb '#d55e00' title 'late'\n"));
+        } else if (strncmp(line, "plot", 4) == 0)
+            assert_non_null(strstr(line, "notitle"));
+    }
+    fclose(f);
+    assert_int_equal(panels, 4 + 1);   /* and the key's strip */
+    assert_int_equal(titled, 2);
+    assert_int_equal(range, 1);
+    assert_int_equal(key, 1);
+    snprintf(path, sizeof path, "%s/driver-grid-curves.csv", out_dir);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    size_t blocks = 0;
+    while (fgets(line, sizeof line, f) != NULL)
+        blocks += strcmp(line, "# right: late\n") == 0;
+    fclose(f);
+    assert_int_equal(blocks, 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -885,6 +1001,7 @@ int main(void)
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
         cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
+        cmocka_unit_test(test_points_groups), cmocka_unit_test(test_xy_grid),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -404,6 +404,9 @@ static const char columns[] =
 static const char *const values[] = {"a_star_bgk", "Pxy_reduced_bgk", "N1_bgk",
                                      "T_ratio_bgk", NULL};
 
+/* The figures' groups: the rows' $model */
+#define AS_MODEL_GROUPS VFY_LIST("IHS=ihs", "EHS=ehs", "EHS jump scheme=ehs-jump")
+
 const vfy_case_desc vfy_as_steady = {
     .must_fail = "collisions.restitution=0.9",
     .power_keys = "shear.rate=1.05",
@@ -411,17 +414,22 @@ const vfy_case_desc vfy_as_steady = {
     .paper_rows = {.rows = paper_rows}, .quick_rows = {.rows = quick_rows, .sets = AS_QUICK_SETS},
     .derive = as_steady_window, .adjust = vfy_adjust_jump_rows,
     .values = values, .metrics = metrics, .checks = checks, .columns = columns,
+    /* IHS and EHS apart (E draws them apart: their difference is the point),
+     * each with both a tau0 (the steady state does not depend on it); the
+     * BGK model's steady state is the same for both (reference/bgk.h) */
     .figures = VFY_FIGURES(
         {.kind = VFY_FIGURE_POINTS, .x = "alpha", .series = VFY_LIST("DSMC=a_star"),
+         .group_by = "model", .groups = AS_MODEL_GROUPS,
          .refs = VFY_LIST("BGK=a_star_bgk"), .x_lo = 0.5, .x_hi = 0.95,
          .title = "{case}: steady a* against alpha, IHS and EHS, both a tau0 (paper E Fig. 14)",
-         .xlabel = "alpha", .ylabel = "a*"},
+         .xlabel = "alpha", .ylabel = "a* = a tau_eta(T)"},
         {.kind = VFY_FIGURE_POINTS, .suffix = "-stress", .x = "alpha",
          .series = VFY_LIST("-Pxy/nT=Pxy_reduced", "(Pxx-Pyy)/nT=N1", "(Pzz-Pyy)/nT=N2"),
-         .refs = VFY_LIST("BGK -Pxy/p=Pxy_reduced_bgk", "BGK (Pxx-Pyy)/p=N1_bgk"),
+         .group_by = "model", .groups = AS_MODEL_GROUPS,
+         .refs = VFY_LIST("BGK -Pxy/nT=Pxy_reduced_bgk", "BGK (Pxx-Pyy)/nT=N1_bgk"),
          .x_lo = 0.5, .x_hi = 0.95,
          .title = "{case}: steady reduced stresses against alpha (paper E Figs. 15-16)",
-         .xlabel = "alpha", .ylabel = "reduced stress"}),
+         .xlabel = "alpha", .ylabel = "reduced stress (over nT, the pressure)"}),
     .title = "{case}: paper E Figs. 14-16, the steady state of uniform shear flow, IHS and EHS "
              "beside BGK ({size} sizes)",
     .notes =
@@ -1459,6 +1467,11 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
                 xf[k] = asd_centre(&F, k);
                 cif[k] = F.ci[k] * F.t_factor;
             }
+            /* a row's colour, the same in every panel: IHS blue, EHS vermilion, at a tau0
+             * = 0.1 their lighter kin (sky blue, orange) */
+            const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0;
+            const int cold = vfy_values_get(&row->values, "a_tau0") != 4.0;
+            c->lc = cf->lc = ehs ? (cold ? 4 : 2) : (cold ? 5 : 1);
             c->x = x;
             c->y[0] = gx.mean, c->ci[0] = cix;
             c->y[1] = gy.mean, c->ci[1] = ciy;
@@ -1503,6 +1516,8 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
                 asx_relabel(&pl, asx_index(&pl, models[j]),
                             j < 2 ? vfy_aprintf("BGK alpha=%.1f", alphas[ia])
                                   : vfy_strdup("equilibrium"));
+            b->lc = bf->lc = 7;   /* black and grey, whatever the rows' colours */
+            e->lc = ef->lc = 8;
             b->x = x, b->y[0] = bx, b->y[1] = by;
             bf->x = xs, bf->y[2] = bF;
             e->x = x, e->y[0] = e->y[1] = mg;
@@ -1792,15 +1807,33 @@ static void asl_label(asx_plot *pl, const vfy_row *row, const char *what)
                                 vfy_values_get(&row->values, "initial"), what));
 }
 
-/* After the rows: E Figs. 1-4 of the slab. */
-static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+/* Style the plot's last curve, the row's: a colour per initial state (E Eq.
+ * 3.5 blue, 3.6 vermilion; `top`: their lighter kin, sky blue and orange,
+ * for the top layers), IHS solid and EHS dashed (the two lie close: E finds
+ * them practically identical). */
+static void asl_style(asx_plot *pl, const vfy_row *row, int top)
 {
-    (void)r;
-    asx_plot pl;
-    memset(&pl, 0, sizeof pl);
-    int rc = 0, nomem = 0;
-    char name[96];
-    /* E Fig. 1: s (EHS: s'/beta) against t, and s'/s */
+    if (pl->ncurves == 0)
+        return;
+    vfy_xy_curve *c = pl->curves[pl->ncurves - 1];
+    const int e35 = vfy_values_get(&row->values, "initial") == 3.5;
+    c->lc = top ? (e35 ? 5 : 4) : (e35 ? 1 : 2);
+    c->dt = vfy_values_get(&row->values, "is_ehs") == 1.0 ? 2 : 1;
+}
+
+/* Write figure f of the plot's curves and free the plot (nomem: memory ran
+ * out); vfy_write_xy's 0 or -1. */
+static int asl_write(const vfy_case_run *run, vfy_xy_figure *f, asx_plot *pl, int *nomem)
+{
+    const int rc = asx_write(run->o, f, pl);
+    *nomem |= asx_plot_free(pl);
+    return rc;
+}
+
+/* E Fig. 1: s (EHS: s'/beta) against t, and s'/s. */
+static int asl_collisions_figure(const vfy_case_run *run, int *nomem)
+{
+    asx_plot pl = {0};
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i], *ihs = vfy_row_previous(run, row);
         const double beta = sim_scene_collision_rate_factor(&row->solver);
@@ -1813,6 +1846,7 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
         if (c == NULL)
             continue;
         asl_label(&pl, row, "");
+        asl_style(&pl, row, 0);
         for (size_t k = 0; k < M; k++) {
             s[k] /= beta;
             ci[k] /= beta;
@@ -1824,87 +1858,144 @@ static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, siz
         c->ci[0] = ci;
         c->y[1] = si ? ratio : NULL;
     }
+    char name[96];
     snprintf(name, sizeof name, "%s-collisions", run->c->name);
     vfy_xy_figure f = {.name = name, .title = "paper E Fig. 1: collisions per particle s (EHS: "
                        "s'/beta) against t, and s'/s", .xlabel = "t/tau0",
                        .comment = run->comment, .npanels = 2,
                        .ylabel = {"s, s'/beta", "s'/s"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    return asl_write(run, &f, &pl, nomem);
+}
 
-    /* E Fig. 2: the profiles u_x/(U/2), n/n and T/T against y/L at five times */
-    static const double times[] = {0.13, 0.5, 1.0, 1.5, 2.0};
-    for (size_t i = 0; i < run->nrows; i++) {
-        const vfy_row *row = &run->rows[i];
-        const size_t L = row->solver.shear.layers, K = row->res.observables;
-        const double half_U = 0.5 * row->solver.shear.rate * row->solver.shear.length;
-        for (size_t q = 0; q < sizeof times / sizeof times[0]; q++) {
-            const size_t m = asl_output_at(row, times[q]);
-            double *a = asx_own(&pl, malloc(7 * L * sizeof *a));
-            vfy_xy_curve *c = a ? asx_curve(&pl, row, "", L, 0) : NULL;
-            if (c == NULL)
-                continue;
-            char what[32];
-            snprintf(what, sizeof what, " t=%g", times[q]);
-            asl_label(&pl, row, what);
-            static const int profile[3] = {SIM_PROFILE_UX, SIM_PROFILE_N, SIM_PROFILE_T};
-            for (size_t I = 0; I < L; I++) {
-                a[I] = ((double)I + 0.5) / (double)L - 0.5;
-                for (int p = 0; p < 3; p++) {
-                    const size_t col = m * K + SIM_OBS_PROFILE + (size_t)profile[p] * L + I;
-                    const double scale = p == 0 ? half_U : 1.0;
-                    a[(1 + p) * L + I] = row->res.mean[col] / scale;
-                    a[(4 + p) * L + I] = row->res.ci[col] / fabs(scale);
-                }
-            }
-            c->x = a;
+/* E Fig. 2's times t/tau0, each a colour (blue, vermilion, black, orange,
+ * sky blue; figure.h) and a dash type (solid, dashed, dotted, ...) */
+static const double asl_times[] = {0.13, 0.5, 1.0, 1.5, 2.0};
+static const int asl_time_colour[] = {1, 2, 7, 4, 5};
+#define ASL_TIMES (sizeof asl_times / sizeof asl_times[0])
+
+/* The row's profiles at E Fig. 2's times, in column `column` of the grid. */
+static void asl_profiles(asx_plot *pl, const vfy_row *row, size_t column)
+{
+    static const int profile[3] = {SIM_PROFILE_UX, SIM_PROFILE_N, SIM_PROFILE_T};
+    const size_t L = row->solver.shear.layers, K = row->res.observables;
+    const double half_U = 0.5 * row->solver.shear.rate * row->solver.shear.length;
+    for (size_t q = 0; q < ASL_TIMES; q++) {
+        const size_t m = asl_output_at(row, asl_times[q]);
+        double *a = asx_own(pl, malloc(7 * L * sizeof *a));
+        vfy_xy_curve *c = a ? asx_new_curve(pl, vfy_aprintf("t/tau0 = %g", asl_times[q]), L, 0)
+                            : NULL;
+        if (c == NULL)
+            continue;
+        for (size_t I = 0; I < L; I++) {
+            a[I] = ((double)I + 0.5) / (double)L - 0.5;
             for (int p = 0; p < 3; p++) {
-                c->y[p] = a + (1 + p) * L;
-                c->ci[p] = a + (4 + p) * L;
+                const size_t col = m * K + SIM_OBS_PROFILE + (size_t)profile[p] * L + I;
+                const double scale = p == 0 ? half_U : 1.0;
+                a[(1 + p) * L + I] = row->res.mean[col] / scale;
+                a[(4 + p) * L + I] = row->res.ci[col] / fabs(scale);
             }
         }
+        c->x = a;
+        for (int p = 0; p < 3; p++) {
+            c->y[p] = a + (1 + p) * L;
+            c->ci[p] = a + (4 + p) * L;
+        }
+        c->lc = asl_time_colour[q];
+        c->dt = 1 + (int)q;
+        c->column = column;
     }
-    snprintf(name, sizeof name, "%s-profiles", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 2: the profiles at t/tau0 = 0.13, "
-                        "0.5, 1, 1.5, 2", .xlabel = "y/L", .comment = run->comment,
-                        .npanels = 3, .ylabel = {"u_x/(U/2)", "n/n", "T/T"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+}
 
-    /* E Fig. 3: the four central and the three top layers against s */
+/* E Fig. 2: the profiles u_x/(U/2), n_I/n and T_I/T against y/L at five
+ * times, a column of panels per row. */
+static int asl_profiles_figure(const vfy_case_run *run, int *nomem)
+{
+    asx_plot pl = {0};
+    char **titles = calloc(run->nrows, sizeof *titles);
+    for (size_t i = 0; titles != NULL && i < run->nrows; i++) {
+        const vfy_row *row = &run->rows[i];
+        titles[i] = vfy_aprintf("%s from E Eq. (%g)",
+                                vfy_values_get(&row->values, "is_ehs") == 1.0 ? "EHS" : "IHS",
+                                vfy_values_get(&row->values, "initial"));
+        pl.failed |= titles[i] == NULL;
+        asl_profiles(&pl, row, i);
+    }
+    pl.failed |= titles == NULL;
+    char name[96];
+    snprintf(name, sizeof name, "%s-profiles", run->c->name);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 2: the profiles at t/tau0 = 0.13, "
+                       "0.5, 1, 1.5, 2; E Eq. (3.5): uniform, at rest; E Eq. (3.6): a shell with "
+                       "density and flow waves", .xlabel = "y/L", .comment = run->comment,
+                       .npanels = 3, .ylabel = {"u_x/(U/2) (U = aL)", "n_I/n (n the mean density)",
+                                                "T_I/T (T the slab's temperature)"},
+                       .ncolumns = titles ? run->nrows : 0,
+                       .column_title = (const char *const *)titles};
+    const int rc = titles ? asl_write(run, &f, &pl, nomem) : 0;
+    if (titles == NULL)
+        *nomem |= asx_plot_free(&pl);
+    for (size_t i = 0; titles != NULL && i < run->nrows; i++)
+        free(titles[i]);
+    free(titles);
+    return rc;
+}
+
+/* E Fig. 3: the four central and the three top layers against s. */
+static int asl_layers_figure(const vfy_case_run *run, int *nomem)
+{
     static const char *const centre[] = {"ux_centre", "n_centre", "T_centre"};
     static const char *const top[] = {"ux_top", "n_top", "T_top"};
-    static const double plus[] = {1.0, 1.0, 1.0, 1.0};
+    static const double plus[] = {1.0, 1.0, 1.0};
+    asx_plot pl = {0};
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         const double beta = sim_scene_collision_rate_factor(&row->solver);
         asx_dsmc(&pl, row, "s", beta, centre, plus, 3);
         asl_label(&pl, row, " centre");
+        asl_style(&pl, row, 0);
         asx_dsmc(&pl, row, "s", beta, top, plus, 3);
         asl_label(&pl, row, " top");
+        asl_style(&pl, row, 1);
     }
+    char name[96];
     snprintf(name, sizeof name, "%s-layers", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 3: u_x/(U/2), n/n and T/T of the "
-                        "central and the top layers against s (EHS: s'/beta)", .xlabel = "s",
-                        .comment = run->comment, .logx = 1, .npanels = 3,
-                        .ylabel = {"u_x/(U/2)", "n/n", "T/T"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 3: u_x/(U/2), n_I/n and T_I/T of the "
+                       "central and the top layers against s (EHS: s'/beta)", .xlabel = "s",
+                       .comment = run->comment, .logx = 1, .npanels = 3,
+                       .ylabel = {"u_x/(U/2) (U = aL)", "n_I/n (n the mean density)",
+                                  "T_I/T (T the slab's temperature)"}};
+    return asl_write(run, &f, &pl, nomem);
+}
 
-    /* E Fig. 4: T/T0 and the reduced stresses against s */
+/* E Fig. 4: T/T0 and the reduced stresses against s. */
+static int asl_stress_figure(const vfy_case_run *run, int *nomem)
+{
     static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
+    static const double plus[] = {1.0, 1.0, 1.0};
+    asx_plot pl = {0};
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), stress, plus, 3);
         asl_label(&pl, row, "");
+        asl_style(&pl, row, 0);
     }
+    char name[96];
     snprintf(name, sizeof name, "%s-stress", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 4: T/T0 and the reduced stresses "
-                        "against s (EHS: s'/beta)", .xlabel = "s", .comment = run->comment,
-                        .logx = 1, .npanels = 3,
-                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 4: T/T0 and the reduced stresses "
+                       "against s (EHS: s'/beta)", .xlabel = "s", .comment = run->comment,
+                       .logx = 1, .npanels = 3,
+                       .ylabel = {"T/T0 (T0 the initial temperature)", "-Pxy/nT",
+                                  "(Pxx - Pyy)/nT"}};
+    return asl_write(run, &f, &pl, nomem);
+}
+
+/* After the rows: E Figs. 1-4 of the slab. */
+static sim_status as_slab_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+{
+    (void)r;
+    int nomem = 0, rc = asl_collisions_figure(run, &nomem);
+    rc |= asl_profiles_figure(run, &nomem);
+    rc |= asl_layers_figure(run, &nomem);
+    rc |= asl_stress_figure(run, &nomem);
     return asx_figures_written(run, rc, nomem, msg, msglen);
 }
 

@@ -560,7 +560,7 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
         const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
                                 .ylabel = "beta_1/b'_1", .npoints = bins, .x = bx,
                                 .nseries = rows, .series = (const char *const *)labels,
-                                .y = betas, .ci = betacs, .nfine = bins, .xfine = bx,
+                                .y = betas, .ci = betacs, .bars = "", .nfine = bins, .xfine = bx,
                                 .ncurves = 1, .curves = curves, .yfine = yf,
                                 .comment = run->comment};
         if (vfy_write_points(run->o, &fig) != 0)

@@ -407,7 +407,8 @@ static sim_status write_power(const vfy_options *o, const power_row *rows, size_
                                 .xlabel = "CPU seconds of the case",
                                 .ylabel = "smallest relative error detected by 3 of 3 seeds",
                                 .logx = 1, .logy = 1, .npoints = n, .x = x, .nseries = 1,
-                                .series = series, .y = ys, .ci = cis, .comment = comment};
+                                .series = series, .y = ys, .ci = cis, .bars = "",
+                                .comment = comment};
         if (vfy_write_points(o, &fig) != 0)
             status = vfy_io_error("power", msg, msglen);
     }

@@ -1199,25 +1199,186 @@ static void free_strings(char **s, size_t count)
     free(s);
 }
 
-/* VFY_FIGURE_POINTS (driver.h): text[] holds the series' labels, their
- * "_ci" names and the references' labels, names[] the values' names (series
- * first); both made here. */
-static int write_points_with(vfy_case_run *run, const vfy_figure_spec *f, size_t nseries,
-                             size_t ncurves, char **text, const char **names, double *buf,
-                             const double **arrays, const char *name, const char *title)
+/* ------------------------------------------------------------ points figure */
+
+/* A POINTS figure's groups (driver.h, group_by): each one's value and label
+ * (allocated; with no group_by one group, value and label NULL). */
+typedef struct points_groups {
+    size_t count;
+    char **value, **label;
+} points_groups;
+
+static void points_groups_free(points_groups *g)
+{
+    free_strings(g->value, g->count);
+    free_strings(g->label, g->count);
+    *g = (points_groups){0};
+}
+
+/* The row's value of group_by as a text (its text, else its number with
+ * %g, else ""), allocated (NULL: out of memory). */
+static char *group_value(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    const char *text = vfy_row_text(row, name);
+    const double v = lookup(run, row, name);
+    return text != NULL ? vfy_strdup(text) : isnan(v) ? vfy_strdup("") : vfy_aprintf("%g", v);
+}
+
+/* Add group value (taken: freed on failure) labelled label (likewise). */
+static int groups_add(points_groups *g, char *value, char *label)
+{
+    char **v = realloc(g->value, (g->count + 1) * sizeof *v);
+    if (v != NULL)
+        g->value = v;
+    char **l = v != NULL ? realloc(g->label, (g->count + 1) * sizeof *l) : NULL;
+    if (l != NULL)
+        g->label = l;
+    if (l == NULL || value == NULL || label == NULL) {
+        free(value);
+        free(label);
+        return -1;
+    }
+    g->value[g->count] = value;
+    g->label[g->count++] = label;
+    return 0;
+}
+
+/* The index of value among the groups, or g->count. */
+static size_t group_index(const points_groups *g, const char *value)
+{
+    size_t k = 0;
+    while (k < g->count && strcmp(g->value[k], value) != 0)
+        k++;
+    return k;
+}
+
+/* The groups of figure f: its list, or the rows' values in order.
+ * Returns 0, or -1 when out of memory. */
+static int points_groups_make(const vfy_case_run *run, const vfy_figure_spec *f,
+                              points_groups *g)
+{
+    *g = (points_groups){0};
+    if (f->group_by == NULL)
+        return groups_add(g, vfy_strdup(""), vfy_strdup(""));
+    for (const char *const *k = f->groups; k != NULL && *k != NULL; k++) {
+        char *label = NULL;
+        const char *value = label_and_name(*k, &label);
+        if (groups_add(g, vfy_strdup(value), label) != 0)
+            return -1;
+    }
+    for (size_t i = 0; f->groups == NULL && i < run->nrows; i++) {
+        char *value = group_value(run, &run->rows[i], f->group_by);
+        if (value == NULL)
+            return -1;
+        if (*value == '\0' || group_index(g, value) < g->count)
+            free(value);   /* none, or a group already found */
+        else if (groups_add(g, value, vfy_strdup(value)) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* The group of a row (g->count: none of them). */
+static size_t points_group_of(const vfy_case_run *run, const vfy_figure_spec *f,
+                              const points_groups *g, const vfy_row *row)
+{
+    if (f->group_by == NULL)
+        return 0;
+    char *value = group_value(run, row, f->group_by);
+    const size_t k = value != NULL ? group_index(g, value) : g->count;
+    free(value);
+    return k;
+}
+
+/* What a POINTS figure is drawn from: nseries quantities (names[j], the
+ * values' names, label[j] and cinames[j] their "_ci"), ncurves references
+ * (names[nseries + k], labels[nseries + k]), the groups, and the series
+ * drawn: quantity j in group g is series j * groups + g, labelled slabel[]. */
+typedef struct points_plan {
+    size_t nseries, ncurves, nshown;
+    const char **names;
+    char **labels, **cinames, **slabel;
+    int *pt, *lc;   /* per series shown (grouped figures), else NULL */
+    points_groups g;
+} points_plan;
+
+/* The plan of figure f; returns 0, or -1 when out of memory. */
+static int points_plan_make(const vfy_case_run *run, const vfy_figure_spec *f, points_plan *pl)
+{
+    static const int group_pt[] = {7, 6, 2, 5, 4, 9, 8, 3};   /* filled, open, cross, ... */
+    const size_t nseries = list_length(f->series), ncurves = list_length(f->refs);
+    *pl = (points_plan){.nseries = nseries, .ncurves = ncurves};
+    pl->names = calloc(nseries + ncurves + 1, sizeof *pl->names);
+    pl->labels = calloc(nseries + ncurves + 1, sizeof *pl->labels);
+    pl->cinames = calloc(nseries + 1, sizeof *pl->cinames);
+    if (pl->names == NULL || pl->labels == NULL || pl->cinames == NULL
+        || points_groups_make(run, f, &pl->g) != 0)
+        return -1;
+    for (size_t j = 0; j < nseries + ncurves; j++) {
+        pl->names[j] = label_and_name(j < nseries ? f->series[j] : f->refs[j - nseries],
+                                      &pl->labels[j]);
+        if (pl->labels[j] == NULL)
+            return -1;
+        if (j < nseries && (pl->cinames[j] = vfy_aprintf("%s_ci", pl->names[j])) == NULL)
+            return -1;
+    }
+    const size_t G = pl->g.count;
+    const int grouped = f->group_by != NULL;
+    pl->nshown = nseries * G;
+    pl->slabel = calloc(pl->nshown + 1, sizeof *pl->slabel);
+    pl->pt = grouped ? calloc(pl->nshown + 1, sizeof *pl->pt) : NULL;
+    pl->lc = grouped ? calloc(pl->nshown + 1, sizeof *pl->lc) : NULL;
+    if (pl->slabel == NULL || (grouped && (pl->pt == NULL || pl->lc == NULL)))
+        return -1;
+    for (size_t j = 0; j < nseries; j++)
+        for (size_t g = 0; g < G; g++) {
+            const size_t k = j * G + g;
+            pl->slabel[k] = grouped ? vfy_aprintf("%s (%s)", pl->labels[j], pl->g.label[g])
+                                    : vfy_strdup(pl->labels[j]);
+            if (pl->slabel[k] == NULL)
+                return -1;
+            if (grouped) {
+                pl->pt[k] = group_pt[g % (sizeof group_pt / sizeof group_pt[0])];
+                pl->lc[k] = 1 + (int)(nseries == 1 ? g : j);
+            }
+        }
+    return 0;
+}
+
+static void points_plan_free(points_plan *pl)
+{
+    free(pl->names);
+    free_strings(pl->labels, pl->nseries + pl->ncurves);
+    free_strings(pl->cinames, pl->nseries);
+    free_strings(pl->slabel, pl->nshown);
+    free(pl->pt);
+    free(pl->lc);
+    points_groups_free(&pl->g);
+}
+
+/* VFY_FIGURE_POINTS (driver.h) by plan pl: buf holds x (a row each), the
+ * shown series' y and ci (rows each) and the references on their fine
+ * grid; arrays the shown series' y, their ci and the references' rows. */
+static int write_points_with(vfy_case_run *run, const vfy_figure_spec *f, const points_plan *pl,
+                             double *buf, const double **arrays, const char *name,
+                             const char *title)
 {
     enum { FINE = 81 };
-    const size_t rows = run->nrows;
+    const size_t rows = run->nrows, S = pl->nshown, G = pl->g.count;
     size_t np = 0;
-    double *x = buf, *y = x + rows, *ci = y + nseries * rows;
-    double *xfine = ci + nseries * rows, *yfine = xfine + FINE;
+    double *x = buf, *y = x + rows, *ci = y + S * rows;
+    double *xfine = ci + S * rows, *yfine = xfine + FINE;
     for (size_t i = 0; i < rows; i++) {
         const vfy_row *row = &run->rows[i];
-        int finite = 1;
-        for (size_t j = 0; j < nseries; j++) {
-            y[j * rows + np] = lookup(run, row, names[j]);
-            ci[j * rows + np] = lookup(run, row, text[nseries + j]);
-            finite &= isfinite(y[j * rows + np]);
+        const size_t group = points_group_of(run, f, &pl->g, row);
+        int finite = group < G;
+        for (size_t j = 0; j < pl->nseries; j++) {
+            const double v = lookup(run, row, pl->names[j]), c = lookup(run, row, pl->cinames[j]);
+            for (size_t g = 0; g < G; g++) {
+                y[(j * G + g) * rows + np] = g == group ? v : NAN;
+                ci[(j * G + g) * rows + np] = g == group ? c : NAN;
+            }
+            finite &= isfinite(v);
         }
         x[np] = lookup(run, row, f->x);
         np += (size_t)finite;
@@ -1226,53 +1387,44 @@ static int write_points_with(vfy_case_run *run, const vfy_figure_spec *f, size_t
     for (size_t k = 0; k < FINE; k++) {
         xfine[k] = f->x_lo + (f->x_hi - f->x_lo) * (double)k / (FINE - 1);
         at.collisions.restitution = xfine[k];
-        for (size_t j = 0; j < ncurves; j++)
-            yfine[j * FINE + k] = vfy_reference_value(names[nseries + j], &at);
+        for (size_t j = 0; j < pl->ncurves; j++)
+            yfine[j * FINE + k] = vfy_reference_value(pl->names[pl->nseries + j], &at);
     }
-    for (size_t j = 0; j < nseries; j++) {
+    for (size_t j = 0; j < S; j++) {
         arrays[j] = y + j * rows;
-        arrays[nseries + j] = ci + j * rows;
+        arrays[S + j] = ci + j * rows;
     }
-    for (size_t j = 0; j < ncurves; j++)
-        arrays[2 * nseries + j] = yfine + j * FINE;
-    const vfy_points points = {.name = name, .title = title, .xlabel = f->xlabel,
-                               .ylabel = f->ylabel, .npoints = np, .x = x, .nseries = nseries,
-                               .series = (const char *const *)text, .y = arrays,
-                               .ci = arrays + nseries, .nfine = ncurves ? FINE : 0,
-                               .xfine = xfine, .ncurves = ncurves,
-                               .curves = (const char *const *)text + 2 * nseries,
-                               .yfine = arrays + 2 * nseries, .comment = run->comment};
+    for (size_t j = 0; j < pl->ncurves; j++)
+        arrays[2 * S + j] = yfine + j * FINE;
+    const vfy_points points = {
+        .name = name, .title = title, .xlabel = f->xlabel, .ylabel = f->ylabel, .npoints = np,
+        .x = x, .nseries = S, .series = (const char *const *)pl->slabel, .y = arrays,
+        .ci = arrays + S, .pt = pl->pt, .lc = pl->lc, .nfine = pl->ncurves ? FINE : 0,
+        .xfine = xfine, .ncurves = pl->ncurves,
+        .curves = (const char *const *)pl->labels + pl->nseries, .yfine = arrays + 2 * S,
+        .comment = run->comment};
     return np > 0 ? vfy_write_points(run->o, &points) : 0;
 }
 
-/* VFY_FIGURE_POINTS (driver.h): as many series and references as the
- * description lists. */
+/* VFY_FIGURE_POINTS (driver.h): as many series, references and groups as
+ * the description makes. */
 static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
 {
     enum { FINE = 81 };
-    const size_t nseries = list_length(f->series), ncurves = list_length(f->refs);
-    const size_t nt = 2 * nseries + ncurves;
-    double *buf = malloc(((1 + 2 * nseries) * run->nrows + (1 + ncurves) * FINE) * sizeof *buf);
-    char **text = calloc(nt + 1, sizeof *text);
-    const char **names = calloc(nseries + ncurves + 1, sizeof *names);
-    const double **arrays = calloc(nt + 1, sizeof *arrays);
+    points_plan pl;
+    int rc = points_plan_make(run, f, &pl);
+    const size_t S = pl.nshown, ncurves = pl.ncurves;
+    double *buf = rc == 0 ? malloc(((1 + 2 * S) * run->nrows + (1 + ncurves) * FINE) * sizeof *buf)
+                          : NULL;
+    const double **arrays = calloc(2 * S + ncurves + 1, sizeof *arrays);
     char *title = vfy_expand_alloc(f->title, run, NULL);
     char *name = vfy_aprintf("%s%s", run->c->name, f->suffix ? f->suffix : "");
-    int rc = buf && text && names && arrays && title && name ? 0 : -1;
-    for (size_t j = 0; j < nseries && rc == 0; j++) {
-        names[j] = label_and_name(f->series[j], &text[j]);
-        text[nseries + j] = vfy_aprintf("%s_ci", names[j]);
-        rc = text[j] && text[nseries + j] ? 0 : -1;
-    }
-    for (size_t j = 0; j < ncurves && rc == 0; j++) {
-        names[nseries + j] = label_and_name(f->refs[j], &text[2 * nseries + j]);
-        rc = text[2 * nseries + j] ? 0 : -1;
-    }
-    if (rc == 0)
-        rc = write_points_with(run, f, nseries, ncurves, text, names, buf, arrays, name, title);
+    if (rc == 0 && buf && arrays && title && name)
+        rc = write_points_with(run, f, &pl, buf, arrays, name, title);
+    else
+        rc = -1;
+    points_plan_free(&pl);
     free(buf);
-    free_strings(text, nt);
-    free(names);
     free(arrays);
     free(title);
     free(name);

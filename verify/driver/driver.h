@@ -267,6 +267,17 @@ typedef struct vfy_figure_spec {
     const char *x;
     const char *const *series;       /* VFY_LIST, or NULL for none */
     double x_lo, x_hi;
+    /* POINTS: group_by names a row value that splits the rows into groups
+       (as-steady's "model": ihs, ehs): each series is drawn once per group,
+       "LABEL (GROUP)", with a symbol of its own per group and a colour per
+       series (with one series, per group), as columns of its own in the
+       points file (empty where a row is in another group).  A row's group is
+       its text of that name, or else its number (%g).  `groups` lists them
+       in order, "GROUP=value" or "value" (VFY_LIST): a row in none of them is
+       left out; NULL: every value the rows have, in the order they come,
+       labelled by the value.  NULL group_by: one group, unlabelled. */
+    const char *group_by;
+    const char *const *groups;
     const char *title, *xlabel, *ylabel;   /* title: a template */
 } vfy_figure_spec;
 /* A description's figures, ended by one of kind VFY_FIGURE_NONE:

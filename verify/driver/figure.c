@@ -10,6 +10,15 @@
 #include "text.h"
 
 enum { PATH_LEN = 1024, TMP_LEN = 1100 };   /* a report file's path, and its .tmp */
+enum { POINTS_KEY_INSIDE = 6 };   /* the most entries a points figure's key has on the plot */
+
+/* Colour k of VFY_FIGURE_COLOURS (figure.h), 1-based. */
+static const char *palette(int k)
+{
+    static const char *const colour[VFY_FIGURE_COLOURS] = {
+        "#0072b2", "#d55e00", "#cc79a7", "#e69f00", "#56b4e9", "#009e73", "#000000", "#999999"};
+    return colour[(size_t)(k > 0 ? k - 1 : 0) % VFY_FIGURE_COLOURS];
+}
 
 int vfy_gnuplot(const char *script_path)
 {
@@ -105,7 +114,10 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     for (size_t i = 0; i < f->npoints; i++) {
         fprintf(out, "%.10g", f->x[i]);
         for (size_t j = 0; j < f->nseries; j++)
-            fprintf(out, ",%.10g,%.6g", f->y[j][i], f->ci[j][i]);
+            if (isfinite(f->y[j][i]))
+                fprintf(out, ",%.10g,%.6g", f->y[j][i], f->ci[j][i]);
+            else
+                fputs(",,", out);   /* not in this series (another group's point) */
         fputc('\n', out);
     }
     if (vfy_file_commit(out, tmp, points, 1) != 0)
@@ -127,12 +139,15 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     if (vfy_file_commit(out, tmp, theory, 1) != 0)
         return -1;
 
-    out = begin_script(o, f->name, f->comment, f->title, 900, 650, gp, tmp);
+    /* a key of more than POINTS_KEY_INSIDE entries beside the plot, not on it */
+    const int outside = f->nseries + f->ncurves > POINTS_KEY_INSIDE;
+    out = begin_script(o, f->name, f->comment, f->title, outside ? 1200 : 900, 650, gp, tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key top right\n%s"
+    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key %s\n%s"
                  "plot",
             gp_text(f->title), gp_text(f->xlabel), gp_text(f->ylabel),
+            outside ? "outside right top" : "top right",
             f->logx && f->logy ? "set logscale xy\n"
             : f->logy          ? "set logscale y\n"
             : f->logx          ? "set logscale x\n"
@@ -140,19 +155,34 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, "%s '%s' skip 1 using 1:%zu with lines lw 2 dt %zu title '%s'",
                 j ? "," : "", theory, j + 2, j + 1, gp_text(f->curves[j]));
-    for (size_t j = 0; j < f->nseries; j++)
-        fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %zu title '%s ± c'",
-                f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j, 5 + 2 * j,
-                gp_text(f->series[j]));
+    const char *bars = f->bars != NULL ? f->bars : VFY_CI_LEGEND;
+    for (size_t j = 0; j < f->nseries; j++) {
+        fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %d",
+                f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j,
+                f->pt != NULL ? f->pt[j] : 5 + 2 * (int)j);
+        if (f->lc != NULL)
+            fprintf(out, " lc rgb '%s'", palette(f->lc[j]));
+        fprintf(out, " title '%s%s%s'", gp_text(f->series[j]), *bars ? " " : "", gp_text(bars));
+    }
     fputc('\n', out);
     return finish_script(o, out, tmp, gp);
 }
 
-int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
+
+/* A grid's column k of f (a title for the data's comments). */
+static const char *xy_column_title(const vfy_xy_figure *f, size_t k)
 {
-    char data[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[256];
+    return f->ncolumns > 1 && f->column_title != NULL && f->column_title[k] != NULL
+               ? f->column_title[k]
+               : "";
+}
+
+/* <name>-curves.csv of vfy_write_xy, its path into data. */
+static int xy_data(const vfy_options *o, const vfy_xy_figure *f, char *data)
+{
+    char tmp[TMP_LEN], file[256];
     snprintf(file, sizeof file, "%s-curves", f->name);
-    FILE *out = begin_file(o, file, ".csv", f->comment, data, sizeof data, tmp, sizeof tmp);
+    FILE *out = begin_file(o, file, ".csv", f->comment, data, PATH_LEN, tmp, sizeof tmp);
     if (out == NULL)
         return -1;
     fprintf(out, "# %s: one block per curve (gnuplot index)\n# %s", f->name, f->xlabel);
@@ -161,7 +191,8 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
     fputc('\n', out);
     for (size_t j = 0; j < f->ncurves; j++) {
         const vfy_xy_curve *c = &f->curves[j];
-        fprintf(out, "%s# %s\n", j ? "\n\n" : "", c->label);
+        const char *column = f->ncolumns > 1 ? xy_column_title(f, c->column) : "";
+        fprintf(out, "%s# %s%s%s\n", j ? "\n\n" : "", column, *column ? ": " : "", c->label);
         for (size_t i = 0; i < c->count; i++) {
             if (!isfinite(c->x[i]))
                 continue;
@@ -176,16 +207,146 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
             fputc('\n', out);
         }
     }
-    if (vfy_file_commit(out, tmp, data, 1) != 0)
+    return vfy_file_commit(out, tmp, data, 1);
+}
+
+/* Curve j's style: "with lines lw .. dt .. lc .. title '..'" (notitle
+ * unless titled). */
+static void xy_style(FILE *out, const vfy_xy_figure *f, size_t j, int titled)
+{
+    const vfy_xy_curve *c = &f->curves[j];
+    const int dt = c->dt > 0 ? c->dt : c->reference ? 2 : 1;
+    fprintf(out, "with lines lw %s dt %d ", c->reference ? "2" : "1.5", dt);
+    if (c->lc > 0)
+        fprintf(out, "lc rgb '%s'", palette(c->lc));
+    else
+        fprintf(out, "lc %zu", 1 + j % 8);
+    if (titled)
+        fprintf(out, " title '%s'", gp_text(c->label));
+    else
+        fputs(" notitle", out);
+}
+
+/* Curve j of f in panel p: " 'data' index j using 1:COL with lines ...". */
+static void xy_plot_curve(FILE *out, const vfy_xy_figure *f, const char *data, size_t j,
+                          size_t p, int titled)
+{
+    fprintf(out, " '%s' index %zu using 1:%zu ", data, j, 2 + 2 * p);
+    xy_style(out, f, j, titled);
+}
+
+/* The smallest and largest finite y of panel p over every curve (lo > hi:
+ * none). */
+static void xy_panel_range(const vfy_xy_figure *f, size_t p, double *lo, double *hi)
+{
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (size_t j = 0; j < f->ncurves; j++) {
+        const vfy_xy_curve *c = &f->curves[j];
+        for (size_t i = 0; c->y[p] != NULL && i < c->count; i++)
+            if (isfinite(c->x[i]) && isfinite(c->y[p][i]) && (!f->logy || c->y[p][i] > 0.0)) {
+                *lo = fmin(*lo, c->y[p][i]);
+                *hi = fmax(*hi, c->y[p][i]);
+            }
+    }
+}
+
+/* The grid's place on the page (screen coordinates): the panels between
+ * GRID_LEFT and GRID_RIGHT, GRID_BOTTOM and GRID_TOP, GRID_DX and GRID_DY
+ * apart; the key in a strip of its own below them, up to GRID_KEY. */
+#define GRID_LEFT 0.065
+#define GRID_RIGHT 0.985
+#define GRID_BOTTOM 0.1
+#define GRID_TOP 0.915
+#define GRID_DX 0.035
+#define GRID_DY 0.065
+#define GRID_KEY 0.04
+
+/* Panel (p, k) of the grid: its place, title and axis labels. */
+static void xy_grid_panel(FILE *out, const vfy_xy_figure *f, size_t p, size_t k)
+{
+    const double w = (GRID_RIGHT - GRID_LEFT - (double)(f->ncolumns - 1) * GRID_DX)
+                     / (double)f->ncolumns;
+    const double h = (GRID_TOP - GRID_BOTTOM - (double)(f->npanels - 1) * GRID_DY)
+                     / (double)f->npanels;
+    const double left = GRID_LEFT + (double)k * (w + GRID_DX);
+    const double top = GRID_TOP - (double)p * (h + GRID_DY);
+    fprintf(out, "set lmargin at screen %.4f\nset rmargin at screen %.4f\n"
+                 "set tmargin at screen %.4f\nset bmargin at screen %.4f\n",
+            left, left + w, top, top - h);
+    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n",
+            p == 0 ? gp_text(xy_column_title(f, k)) : "",
+            p + 1 == f->npanels ? gp_text(f->xlabel) : "", k == 0 ? gp_text(f->ylabel[p]) : "");
+}
+
+/* The grid of vfy_write_xy (f->ncolumns > 1), then its key: the first
+ * panel's curves, drawn once across the page below the panels. */
+static void xy_grid(FILE *out, const vfy_xy_figure *f, const char *data)
+{
+    fprintf(out, "set datafile missing ''\nset multiplot title '%s'\n%s%s"
+                 "set key off\nset grid\n",
+            gp_text(f->title), f->logx ? "set logscale x\n" : "",
+            f->logy ? "set logscale y\nset format y '%g'\n" : "");
+    for (size_t p = 0; p < f->npanels; p++) {
+        double lo, hi;
+        xy_panel_range(f, p, &lo, &hi);
+        const double pad = f->logy ? 0.0 : 0.05 * (hi - lo);
+        if (lo < hi)   /* the panels of a row on one scale */
+            fprintf(out, "set yrange [%.6g:%.6g]\n", f->logy ? lo / 1.2 : lo - pad,
+                    f->logy ? hi * 1.2 : hi + pad);
+        else
+            fputs("set autoscale y\n", out);
+        for (size_t k = 0; k < f->ncolumns; k++) {
+            xy_grid_panel(out, f, p, k);
+            fputs("plot", out);
+            int first = 1;
+            for (size_t j = 0; j < f->ncurves; j++) {
+                if (f->curves[j].y[p] == NULL || f->curves[j].column != k)
+                    continue;
+                fputs(first ? "" : ",", out);
+                xy_plot_curve(out, f, data, j, p, 0);
+                first = 0;
+            }
+            fputs(first ? " NaN notitle\n" : "\n", out);   /* an empty panel keeps its place */
+        }
+    }
+    fprintf(out, "set lmargin at screen %g\nset rmargin at screen %g\nset bmargin at screen 0\n"
+                 "set tmargin at screen %g\nunset title\nunset xlabel\nunset ylabel\n"
+                 "unset border\nunset tics\nunset grid\nunset logscale\nset xrange [0:1]\n"
+                 "set yrange [0:1]\nset key on center center horizontal samplen 4\nplot",
+            GRID_LEFT, GRID_RIGHT, GRID_KEY);
+    int first = 1;
+    for (size_t j = 0; j < f->ncurves; j++) {
+        if (f->curves[j].y[0] == NULL || f->curves[j].column != 0)
+            continue;
+        fputs(first ? " NaN " : ", NaN ", out);
+        xy_style(out, f, j, 1);
+        first = 0;
+    }
+    fputs(first ? " NaN notitle\n" : "\n", out);
+}
+
+int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
+{
+    char data[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN];
+    if (xy_data(o, f, data) != 0)
         return -1;
-    out = begin_script(o, f->name, f->comment, f->title, 1000, 330 * (int)f->npanels + 60, gp,
-                       tmp);
+    const int grid = f->ncolumns > 1;
+    FILE *out = begin_script(o, f->name, f->comment, f->title,
+                             grid ? 360 * (int)f->ncolumns + 140 : 1000,
+                             grid ? 300 * (int)f->npanels + 120 : 330 * (int)f->npanels + 60,
+                             gp, tmp);
     if (out == NULL)
         return -1;
+    if (grid) {
+        xy_grid(out, f, data);
+        fputs("unset multiplot\n", out);
+        return finish_script(o, out, tmp, gp);
+    }
     fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s%s"
                  "set key outside right top\nset grid\n",
             f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "",
-            f->logy ? "set logscale y\n" : "");
+            f->logy ? "set logscale y\nset format y '%g'\n" : "");
     for (size_t p = 0; p < f->npanels; p++) {
         fprintf(out, "set xlabel '%s'\nset ylabel '%s'\nplot", gp_text(f->xlabel),
                 gp_text(f->ylabel[p]));
@@ -193,9 +354,8 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
         for (size_t j = 0; j < f->ncurves; j++) {
             if (f->curves[j].y[p] == NULL)
                 continue;
-            fprintf(out, "%s '%s' index %zu using 1:%zu with lines lw %s dt %d lc %zu title '%s'",
-                    first ? "" : ",", data, j, 2 + 2 * p, f->curves[j].reference ? "2" : "1.5",
-                    f->curves[j].reference ? 2 : 1, 1 + j % 8, gp_text(f->curves[j].label));
+            fputs(first ? "" : ",", out);
+            xy_plot_curve(out, f, data, j, p, 1);
             first = 0;
         }
         fputc('\n', out);
@@ -316,18 +476,24 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
         if (one_panel_per_row)
             fprintf(f, "set title 'n = %zu'\n", n[p]);
         fprintf(f, "plot");
-        for (size_t j = 0; j < nref; j++)
-            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt 2 lw 2 title '%s'",
-                    j ? "," : "", path, 2 + j, gp_text(ref_names[j]));
+        for (size_t j = 0; j < nref; j++)   /* black, each its dash type */
+            fprintf(f, "%s '%s' skip 1 using 1:%zu with lines dt %zu lw 2 lc rgb '%s' "
+                       "title '%s'",
+                    j ? "," : "", path, 2 + j, 2 + j, palette(7), gp_text(ref_names[j]));
         for (size_t i = first; i < last; i++) {
             size_t col = 2 + nref + 2 * i;
-            char *label = labels != NULL ? vfy_aprintf("%s: mean ± c", labels[i])
-                          : n[i] == 0    ? vfy_aprintf("n = infinity (O(1/n) extrapolation) ± c")
-                                         : vfy_aprintf("n = %zu: mean ± c", n[i]);
+            char *label = labels != NULL ? vfy_aprintf("%s: mean %s", labels[i], VFY_CI_LEGEND)
+                          : n[i] == 0 ? vfy_aprintf("n = infinity (O(1/n) extrapolation) %s",
+                                                    VFY_CI_LEGEND)
+                                      : vfy_aprintf("n = %zu: mean %s", n[i], VFY_CI_LEGEND);
+            /* the band, and its mean as a line (a band thinner than a line still shows);
+             * six colours, then the lines dashed */
+            const char *colour = palette(1 + (int)(i % 6));
             fprintf(f, "%s '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
-                       "fs transparent solid 0.25 lc %zu title '%s'",
-                    nref || i > first ? "," : "", path, col, col + 1, col, col + 1, i + 1,
-                    gp_text(label != NULL ? label : ""));
+                       "fs transparent solid 0.25 lc rgb '%s' title '%s', '%s' skip 1 using "
+                       "1:%zu with lines lw 1 dt %zu lc rgb '%s' notitle",
+                    nref || i > first ? "," : "", path, col, col + 1, col, col + 1, colour,
+                    gp_text(label != NULL ? label : ""), path, col, 1 + i / 6, colour);
             free(label);
         }
         fputc('\n', f);

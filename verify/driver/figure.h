@@ -6,6 +6,19 @@
 
 #include "cases.h"
 
+/* What every figure's error bars and confidence bands are, the text their
+ * legends end with: the confidence half-width ci = SIM_LAMBDA_P = 3.2
+ * standard errors, two-sided p = 0.999 (sim/ensemble.h; docs/verdicts.md).
+ * A text, not a printf format (it holds a '%'). */
+#define VFY_CI_LEGEND "± 99.9% ci"
+
+/* The colours a series or curve may name (vfy_points.lc, vfy_xy_curve.lc),
+ * 1 to VFY_FIGURE_COLOURS: blue, vermilion, reddish purple, orange, sky
+ * blue, bluish green, black, grey (Okabe and Ito's colour-blind safe set
+ * without its yellow, in an order whose first colours differ from gnuplot's
+ * first linetypes, purple and green, which draw the references). */
+#define VFY_FIGURE_COLOURS 8
+
 /* Run `gnuplot script_path` (the script names its own PNG output).  Returns
  * 1 if gnuplot ran and succeeded, 0 if gnuplot is not installed or this
  * process writes no files (vfy_writes_files), -1 if it failed. */
@@ -13,10 +26,11 @@ int vfy_gnuplot(const char *script_path);
 
 /* out_dir/<name>-curves.csv (t, the reference columns, then mean and ci of
  * each row; n[i] = 0 marks the O(1/n) extrapolation) and out_dir/<name>.gp
- * drawing each row's confidence band beside the references (one panel per row,
+ * drawing each row's confidence band and its mean (a colour per row) beside
+ * the references (black, each its dash type) (one panel per row,
  * 2 x 2 for up to four rows and two columns beyond, or all in one), rendered
  * to <name>.png when gnuplot is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
- * or "n = N" when labels is NULL.  Returns 0 or -1 (errno). */
+ * or "n = N" when labels is NULL, then ": mean " VFY_CI_LEGEND.  Returns 0 or -1 (errno). */
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
                      const double *t, size_t M, size_t nref, const char *const *ref_names,
@@ -33,7 +47,14 @@ typedef struct vfy_points {
     const double *x;
     size_t nseries;
     const char *const *series;
-    const double *const *y, *const *ci;   /* [series][point] */
+    const double *const *y, *const *ci;   /* [series][point]; a point whose y is not
+                                             finite is an empty cell, not drawn */
+    const char *bars;                     /* what the error bars are, each series'
+                                             legend ends with it: NULL for
+                                             VFY_CI_LEGEND, "" for none (ci all 0) */
+    const int *pt, *lc;                   /* [series]: its point type and colour
+                                             (1..VFY_FIGURE_COLOURS), or NULL: pt 5 + 2j
+                                             and gnuplot's next linetype */
     size_t nfine;
     const double *xfine;
     size_t ncurves;
@@ -43,8 +64,10 @@ typedef struct vfy_points {
 } vfy_points;
 
 /* <name>-points.csv (x, each series and its confidence half-width),
- * <name>-theory.csv (the curves on their fine grid) and <name>.gp, rendered
- * to <name>.png when gnuplot is installed.  Returns 0 or -1 (errno). */
+ * <name>-theory.csv (the curves on their fine grid) and <name>.gp (each
+ * series with error bars, its legend "SERIES " VFY_CI_LEGEND; a key of more
+ * than 6 series and curves beside the plot), rendered to <name>.png when
+ * gnuplot is installed.  Returns 0 or -1 (errno). */
 int vfy_write_points(const vfy_options *o, const vfy_points *f);
 
 /* Curves whose abscissa differs from curve to curve (paper E's quantities
@@ -58,6 +81,12 @@ typedef struct vfy_xy_curve {
     const double *x;
     const double *y[VFY_XY_PANELS];   /* per panel (NULL: not in that panel) */
     const double *ci[VFY_XY_PANELS];  /* half-widths (NULL: none) */
+    int lc;                           /* 1..VFY_FIGURE_COLOURS: its colour; 0: gnuplot's
+                                         linetype 1 + k % 8 for curve k */
+    int dt;                           /* > 0: its dash type (1 solid, 2 dashed, 3
+                                         dotted, 4 dash-dot, 5 dash-dot-dot); 0:
+                                         solid, a reference dashed */
+    size_t column;                    /* a grid's column (vfy_xy_figure.ncolumns) */
 } vfy_xy_curve;
 
 typedef struct vfy_xy_figure {
@@ -67,11 +96,21 @@ typedef struct vfy_xy_figure {
     const char *ylabel[VFY_XY_PANELS];
     size_t ncurves;
     const vfy_xy_curve *curves;
+    /* 0 or 1: the panels one above the other, each with every curve and its
+     * key.  More: a grid of npanels rows and ncolumns columns, the panel of
+     * column k drawing the curves whose column is k, under column_title[k];
+     * the panels of a row share their y range, and the key is drawn once,
+     * below the grid, from the first panel's curves: every column's curves
+     * are told apart the same way (their style and label), the columns by
+     * their titles. */
+    size_t ncolumns;
+    const char *const *column_title;
 } vfy_xy_figure;
 
 /* <name>-curves.csv (one gnuplot index block per curve: x, then each panel's
- * y and its half-width) and <name>.gp, the panels one above the other, each
- * with every curve, rendered to <name>.png when gnuplot is installed.
+ * y and its half-width; in a grid the block's comment names the column's
+ * title before the curve's label) and <name>.gp, the panels one above the
+ * other (or the grid), rendered to <name>.png when gnuplot is installed.
  * Returns 0 or -1 (errno). */
 int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f);
 
