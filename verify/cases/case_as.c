@@ -976,17 +976,13 @@ static sim_status asx_figures_written(const vfy_case_run *run, int rc, int nomem
     return SIM_EIO;
 }
 
-/* After the rows: E's figures against s (and t, a*), one curve per row, BGK
- * beside the IHS rows (its T and stresses are the same for EHS; only its
- * clock differs, and E plots s'/beta). */
-static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg,
-                                     size_t msglen)
+/* E Figs. 5-6: s/beta and s/s0 against t, one curve per row, BGK's s0/beta
+ * beside the IHS rows; vfy_write_xy's 0 or -1, *nomem set when memory ran
+ * out. */
+static int asx_collisions_figure(const vfy_case_run *run, int *nomem)
 {
-    (void)r;
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
-    int rc = 0, nomem = 0;
-    /* E Figs. 5-6: s/beta and s/s0 against t */
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         const double beta = sim_scene_collision_rate_factor(&row->solver);
@@ -1014,27 +1010,43 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
     char name[96];
     snprintf(name, sizeof name, "%s-collisions", run->c->name);
     f.name = name;
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    const int rc = asx_write(run->o, &f, &pl);
+    *nomem |= asx_plot_free(&pl);
+    return rc;
+}
 
-    /* E Figs. 7-8: T/T0, -Pxy/nT, (Pxx - Pyy)/nT against s */
+/* E Figs. 7-8: T/T0, -Pxy/nT, (Pxx - Pyy)/nT against s, one curve per row,
+ * BGK beside the IHS rows; vfy_write_xy's 0 or -1, *nomem set when memory
+ * ran out. */
+static int asx_stress_figure(const vfy_case_run *run, int *nomem)
+{
     static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
     static const double plus[] = {1.0, 1.0, 1.0, 1.0};
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), stress, plus, 3);
         if (vfy_values_get(&row->values, "is_ehs") == 0.0)
             asx_bgk(&pl, row, 1, "TPN", 3);
     }
+    char name[96];
     snprintf(name, sizeof name, "%s-stress", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Figs. 7-8: T/T0 and the reduced "
-                        "stresses against s (EHS: s'/beta), BGK against s0", .xlabel = "s",
-                        .comment = run->comment, .logx = 1, .npanels = 3,
-                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    vfy_xy_figure f = {.name = name, .title = "paper E Figs. 7-8: T/T0 and the reduced "
+                       "stresses against s (EHS: s'/beta), BGK against s0", .xlabel = "s",
+                       .comment = run->comment, .logx = 1, .npanels = 3,
+                       .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
+    const int rc = asx_write(run->o, &f, &pl);
+    *nomem |= asx_plot_free(&pl);
+    return rc;
+}
 
-    /* E Fig. 10: eta* against a* at alpha = 0.5, s in [2, 50] */
+/* E Fig. 10: eta* against a* at alpha = 0.5, s in [2, 50], BGK beside the
+ * IHS rows; vfy_write_xy's 0 or -1, *nomem set when memory ran out. */
+static int asx_viscosity_figure(const vfy_case_run *run, int *nomem)
+{
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         if (fabs(vfy_values_get(&row->values, "alpha") - 0.5) > 1e-9)
@@ -1061,41 +1073,76 @@ static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg
             }
         }
     }
+    char name[96];
     snprintf(name, sizeof name, "%s-viscosity", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 10: eta* against a* at alpha = "
-                        "0.5 (2 <= s <= 50)", .xlabel = "a*", .comment = run->comment,
-                        .npanels = 1, .ylabel = {"eta*"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 10: eta* against a* at alpha = "
+                       "0.5 (2 <= s <= 50)", .xlabel = "a*", .comment = run->comment,
+                       .npanels = 1, .ylabel = {"eta*"}};
+    const int rc = asx_write(run->o, &f, &pl);
+    *nomem |= asx_plot_free(&pl);
+    return rc;
+}
 
-    /* E Figs. 11-13: <V12^3>/<V12^3>_0, a2, -a3 and R0..R3 against s */
+/* E Figs. 11-12: <V12^3>/<V12^3>_0, a2 and -a3 against s, one curve per
+ * row; vfy_write_xy's 0 or -1, *nomem set when memory ran out. */
+static int asx_cumulants_figure(const vfy_case_run *run, int *nomem)
+{
     static const char *const cumulants[] = {"v12_ratio", "a2", "a3"};
     static const double signs[] = {1.0, 1.0, -1.0};
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
     for (size_t i = 0; i < run->nrows; i++)
         asx_dsmc(&pl, &run->rows[i], "s",
                  sim_scene_collision_rate_factor(&run->rows[i].solver), cumulants, signs, 3);
+    char name[96];
     snprintf(name, sizeof name, "%s-cumulants", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Figs. 11-12: <V12^3>/<V12^3>_0, a2 "
-                        "and -a3 against s (EHS: s'/beta)", .xlabel = "s",
-                        .comment = run->comment, .logx = 1, .npanels = 3,
-                        .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    vfy_xy_figure f = {.name = name, .title = "paper E Figs. 11-12: <V12^3>/<V12^3>_0, a2 "
+                       "and -a3 against s (EHS: s'/beta)", .xlabel = "s",
+                       .comment = run->comment, .logx = 1, .npanels = 3,
+                       .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}};
+    const int rc = asx_write(run->o, &f, &pl);
+    *nomem |= asx_plot_free(&pl);
+    return rc;
+}
 
+/* E Fig. 13: the shell ratios R0..R3 against s, one curve per row at
+ * a tau0 = 4; vfy_write_xy's 0 or -1, *nomem set when memory ran out. */
+static int asx_shells_figure(const vfy_case_run *run, int *nomem)
+{
     static const char *const shells[] = {"R0", "R1", "R2", "R3"};
+    static const double plus[] = {1.0, 1.0, 1.0, 1.0};
+    asx_plot pl;
+    memset(&pl, 0, sizeof pl);
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         if (vfy_values_get(&row->values, "a_tau0") == 4.0)
             asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), shells,
                      plus, 4);
     }
+    char name[96];
     snprintf(name, sizeof name, "%s-shells", run->c->name);
-    f = (vfy_xy_figure){.name = name, .title = "paper E Fig. 13: the shell ratios R0..R3 "
-                        "against s at a tau0 = 4 (EHS: s'/beta)", .xlabel = "s",
-                        .comment = run->comment, .logx = 1, .npanels = 4,
-                        .ylabel = {"R0", "R1", "R2", "R3"}};
-    rc |= asx_write(run->o, &f, &pl);
-    nomem |= asx_plot_free(&pl);
+    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 13: the shell ratios R0..R3 "
+                       "against s at a tau0 = 4 (EHS: s'/beta)", .xlabel = "s",
+                       .comment = run->comment, .logx = 1, .npanels = 4,
+                       .ylabel = {"R0", "R1", "R2", "R3"}};
+    const int rc = asx_write(run->o, &f, &pl);
+    *nomem |= asx_plot_free(&pl);
+    return rc;
+}
+
+/* After the rows: E's figures against s (and t, a*), one curve per row, BGK
+ * beside the IHS rows (its T and stresses are the same for EHS; only its
+ * clock differs, and E plots s'/beta). */
+static sim_status as_transient_after(vfy_case_run *run, vfy_report *r, char *msg,
+                                     size_t msglen)
+{
+    (void)r;
+    int nomem = 0;
+    int rc = asx_collisions_figure(run, &nomem);
+    rc |= asx_stress_figure(run, &nomem);
+    rc |= asx_viscosity_figure(run, &nomem);
+    rc |= asx_cumulants_figure(run, &nomem);
+    rc |= asx_shells_figure(run, &nomem);
     return asx_figures_written(run, rc, nomem, msg, msglen);
 }
 

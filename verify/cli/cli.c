@@ -821,142 +821,155 @@ static int verify_gate(const args *a, const vfy_options *o, size_t seeds)
     return missed > 0 ? EXIT_CHECK_FAILED : EXIT_OK;
 }
 
-static int cmd_verify(int argc, char **argv)
+/* --list: the suites and every case with its suite and summary; exit 0. */
+static int list_cases(void)
 {
-    args a;
-    int rc = parse_args("verify", usage_verify, 0, argc, argv, &a);
-    if (rc >= 0)
-        return rc;
-    if (a.list) {
-        char suites[128];
-        printf("suites: quick (CI sizes), paper (every paper's case, paper sizes), and per "
-               "paper (and protocol): %s\n"
-               "cases:\n", vfy_paper_suites(suites, sizeof suites));
-        int width = 0;
-        for (size_t i = 0; i < vfy_case_count(); i++)
-            width = (int)fmax(width, (double)strlen(vfy_case_at(i)->name));
-        for (size_t i = 0; i < vfy_case_count(); i++)
-            printf("  %-*s %-6s %s%s\n", width, vfy_case_at(i)->name, vfy_case_at(i)->suite,
-                   vfy_case_at(i)->summary, vfy_case_at(i)->quick ? " [quick]" : "");
-        return EXIT_OK;
-    }
-    if (a.suite && !vfy_suite_exists(a.suite)) {
+    char suites[128];
+    printf("suites: quick (CI sizes), paper (every paper's case, paper sizes), and per "
+           "paper (and protocol): %s\n"
+           "cases:\n", vfy_paper_suites(suites, sizeof suites));
+    int width = 0;
+    for (size_t i = 0; i < vfy_case_count(); i++)
+        width = (int)fmax(width, (double)strlen(vfy_case_at(i)->name));
+    for (size_t i = 0; i < vfy_case_count(); i++)
+        printf("  %-*s %-6s %s%s\n", width, vfy_case_at(i)->name, vfy_case_at(i)->suite,
+               vfy_case_at(i)->summary, vfy_case_at(i)->quick ? " [quick]" : "");
+    return EXIT_OK;
+}
+
+/* The verify options that need no scene: -1 when they make sense together
+ * (*seeds from --seeds, 0 without it), else bad_usage's exit code. */
+static int check_verify_args(const args *a, size_t *seeds)
+{
+    if (a->suite && !vfy_suite_exists(a->suite)) {
         char suites[128], why[256];
-        snprintf(why, sizeof why, "unknown suite '%s' (allowed quick, paper, %s)", a.suite,
+        snprintf(why, sizeof why, "unknown suite '%s' (allowed quick, paper, %s)", a->suite,
                  vfy_paper_suites(suites, sizeof suites));
         return bad_usage("verify", "%s", why);
     }
     char unknown[128];
-    if (a.case_name && !vfy_case_list_check(a.case_name, unknown, sizeof unknown))
+    if (a->case_name && !vfy_case_list_check(a->case_name, unknown, sizeof unknown))
         return bad_usage("verify", "unknown case '%s' (gdsmc verify --list shows them)",
                          unknown);
-    for (size_t i = 0; i < a.nperturbs; i++) {
+    for (size_t i = 0; i < a->nperturbs; i++) {
         char key[128], why[1024];
         double factor;
-        if (vfy_perturb_parse(a.perturbs[i], key, sizeof key, &factor, why, sizeof why)
+        if (vfy_perturb_parse(a->perturbs[i], key, sizeof key, &factor, why, sizeof why)
             != SIM_OK) {
             char text[1200];
             snprintf(text, sizeof text, "--perturb %s", why);
             return bad_usage("verify", "%s", text);
         }
     }
-    size_t seeds = 0;
-    if (a.seeds != NULL) {
+    *seeds = 0;
+    if (a->seeds != NULL) {
         char *end;
-        double k = strtod(a.seeds, &end);
-        if (end == a.seeds || *end || !(k >= 2 && k <= 1000) || k != floor(k))
+        double k = strtod(a->seeds, &end);
+        if (end == a->seeds || *end || !(k >= 2 && k <= 1000) || k != floor(k))
             return bad_usage("verify", "--seeds '%s': allowed an integer 2 <= K <= 1000 (K "
-                             "runs, each with seeds derived from the scenes')", a.seeds);
-        seeds = (size_t)k;
+                             "runs, each with seeds derived from the scenes')", a->seeds);
+        *seeds = (size_t)k;
     }
-    if ((seeds > 0) + a.power + a.must_fail > 1)
+    if ((*seeds > 0) + a->power + a->must_fail > 1)
         return bad_usage("verify", "%s", "--seeds, --power and --must-fail: one at a time");
-    if (a.dry_run && (seeds > 0 || a.power || a.must_fail || a.resume || a.junit))
+    if (a->dry_run && (*seeds > 0 || a->power || a->must_fail || a->resume || a->junit))
         return bad_usage("verify", "%s", "--dry-run simulates nothing: not with --seeds, "
                          "--power, --must-fail, --resume or --junit");
-    if ((seeds > 0 || a.power || a.must_fail) && (a.nperturbs > 0 || a.solver != NULL))
+    if ((*seeds > 0 || a->power || a->must_fail) && (a->nperturbs > 0 || a->solver != NULL))
         return bad_usage("verify", "%s", "--seeds, --power and --must-fail measure the "
                          "built-in engine: not with --perturb or --solver");
-    vfy_options o = {
-        .size = a.suite && strcmp(a.suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
-        .out_dir = a.out                                             ? a.out
-                   : a.suite && strcmp(a.suite, "quick") == 0    ? "reports"
-                   : a.suite && strcmp(a.suite, "protocol") == 0 ? "reports/protocol"
-                                                                 : "reports/paper",
-        .scene_dir = a.scenes ? a.scenes : GDSMC_SOURCE_DIR "/verify/cases/scenes",
-        .overrides = a.sets,
-        .noverrides = a.nsets,
-        .solver_overrides = a.solver_sets,
-        .nsolver_overrides = a.nsolver_sets,
-        .progress = a.quiet ? NULL : stderr,
-        .resume = a.resume,
-        .perturbs = a.perturbs,
-        .nperturbs = a.nperturbs,
+    return -1;
+}
+
+/* The run's options from the command line (the report directory by suite
+ * unless --out; no solver, checkpoints or stop countdown yet). */
+static vfy_options verify_options(const args *a)
+{
+    return (vfy_options){
+        .size = a->suite && strcmp(a->suite, "quick") == 0 ? VFY_QUICK : VFY_PAPER,
+        .out_dir = a->out                                              ? a->out
+                   : a->suite && strcmp(a->suite, "quick") == 0    ? "reports"
+                   : a->suite && strcmp(a->suite, "protocol") == 0 ? "reports/protocol"
+                                                                   : "reports/paper",
+        .scene_dir = a->scenes ? a->scenes : GDSMC_SOURCE_DIR "/verify/cases/scenes",
+        .overrides = a->sets,
+        .noverrides = a->nsets,
+        .solver_overrides = a->solver_sets,
+        .nsolver_overrides = a->nsolver_sets,
+        .progress = a->quiet ? NULL : stderr,
+        .resume = a->resume,
+        .perturbs = a->perturbs,
+        .nperturbs = a->nperturbs,
     };
-    char checkpoints[1100], work[1100];
-    snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint", o.out_dir);
-    vfy_solver solver = {.command = a.solver, .timeout = 3600.0, .work_dir = work};
-    if (a.solver_timeout != NULL) {
+}
+
+/* --solver-timeout and --solver: -1 when they are good (with --solver, o
+ * runs the solver, its work directory `work` and its checkpoints under
+ * OUT/.checkpoint/solver-ID), else bad_usage's exit code. */
+static int verify_solver(const args *a, vfy_options *o, vfy_solver *solver, char *work,
+                         size_t worklen, char *checkpoints, size_t checkpointslen)
+{
+    if (a->solver_timeout != NULL) {
         char *end;
-        solver.timeout = strtod(a.solver_timeout, &end);
-        if (end == a.solver_timeout || *end || !(solver.timeout > 0 && solver.timeout <= 1e6))
+        solver->timeout = strtod(a->solver_timeout, &end);
+        if (end == a->solver_timeout || *end
+            || !(solver->timeout > 0 && solver->timeout <= 1e6))
             return bad_usage("verify", "--solver-timeout '%s': allowed 0 < S <= 1e6 seconds",
-                             a.solver_timeout);
+                             a->solver_timeout);
     }
-    if (a.solver != NULL) {
+    if (a->solver != NULL) {
         char why[128];
-        if (!vfy_solver_command_ok(a.solver, why, sizeof why)) {
+        if (!vfy_solver_command_ok(a->solver, why, sizeof why)) {
             char text[300];
-            snprintf(text, sizeof text, "--solver '%s': %s", a.solver, why);
+            snprintf(text, sizeof text, "--solver '%s': %s", a->solver, why);
             return bad_usage("verify", "%s", text);
         }
         /* another solver's results are never resumed as this one's */
-        snprintf(work, sizeof work, "%s/.solver", o.out_dir);
-        snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint/solver-%016llx", o.out_dir,
-                 (unsigned long long)vfy_solver_identity(a.solver));
-        o.solver = &solver;
+        snprintf(work, worklen, "%s/.solver", o->out_dir);
+        snprintf(checkpoints, checkpointslen, "%s/.checkpoint/solver-%016llx", o->out_dir,
+                 (unsigned long long)vfy_solver_identity(a->solver));
+        o->solver = solver;
     }
-    o.checkpoint_dir = checkpoints;
-    vfy_finished finished = {0};   /* a simulation two rows need runs once */
-    o.finished = &finished;
-    /* For tests: behave as if SIGINT arrived after K finished simulations. */
-    size_t countdown = 0;
-    const char *stop_after = getenv("GDSMC_STOP_AFTER_RUNS");
-    if (stop_after && (countdown = strtoul(stop_after, NULL, 10)) > 0)
-        o.stop_countdown = &countdown;
-    catch_stop_signals();
-    if ((rc = probe_out("verify", a.junit)) != EXIT_OK)
-        return rc;
-    if (seeds > 0 || a.power || a.must_fail)
-        return verify_gate(&a, &o, seeds);
-    if (a.dry_run) {   /* the scenes and what the checks read, under OUT/dry-run */
-        char dry[1100];
-        snprintf(dry, sizeof dry, "%s/dry-run", o.out_dir);
-        o.out_dir = a.out ? a.out : dry;
-        o.dry_run = stdout;
-        char msg[1024] = "";
-        const sim_status status = vfy_run(a.suite, a.case_name, &o, NULL, msg, sizeof msg);
-        vfy_finished_free(&finished);
-        if (status != SIM_OK) {
-            fprintf(stderr, "gdsmc verify: %s\n", msg);
-            return EXIT_BAD_INPUT;
-        }
-        return EXIT_OK;
+    return -1;
+}
+
+/* --dry-run: the scenes and what the checks read, under OUT/dry-run (or
+ * --out itself); exit 0, or 2 with the message. */
+static int verify_dry_run(const args *a, vfy_options *o)
+{
+    char dry[1100];
+    snprintf(dry, sizeof dry, "%s/dry-run", o->out_dir);
+    o->out_dir = a->out ? a->out : dry;
+    o->dry_run = stdout;
+    char msg[1024] = "";
+    const sim_status status = vfy_run(a->suite, a->case_name, o, NULL, msg, sizeof msg);
+    vfy_finished_free(o->finished);
+    if (status != SIM_OK) {
+        fprintf(stderr, "gdsmc verify: %s\n", msg);
+        return EXIT_BAD_INPUT;
     }
+    return EXIT_OK;
+}
+
+/* The cases with their report (and --junit's, timed), then the closing
+ * line: exit 0 when every check passed, 1 when one failed, 2 on bad input,
+ * 130 when stopped (the finished simulations saved in checkpoints). */
+static int verify_cases(const args *a, const vfy_options *o, const char *checkpoints)
+{
     vfy_report report;
     vfy_report_init(&report, stdout);
     char msg[1024] = "";
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    sim_status status = vfy_run(a.suite, a.case_name, &o, &report, msg, sizeof msg);
+    sim_status status = vfy_run(a->suite, a->case_name, o, &report, msg, sizeof msg);
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    vfy_finished_free(&finished);
-    if (status == SIM_OK && a.junit != NULL
-        && vfy_report_write_junit(&report, a.junit,
+    vfy_finished_free(o->finished);
+    if (status == SIM_OK && a->junit != NULL
+        && vfy_report_write_junit(&report, a->junit,
                                   (double)(t1.tv_sec - t0.tv_sec)
                                       + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec)) != 0) {
         status = SIM_EIO;
-        snprintf(msg, sizeof msg, "%s: cannot write: %s", a.junit, strerror(errno));
+        snprintf(msg, sizeof msg, "%s: cannot write: %s", a->junit, strerror(errno));
     }
     size_t counts[VFY_VERDICTS];
     memcpy(counts, report.counts, sizeof counts);
@@ -979,6 +992,44 @@ static int cmd_verify(int argc, char **argv)
         printf(", %zu %s refused by the solver", refused, refused == 1 ? "row" : "rows");
     putchar('\n');
     return failed ? EXIT_CHECK_FAILED : EXIT_OK;
+}
+
+/* gdsmc verify: --list, or the options checked and then the gate (--seeds,
+ * --power, --must-fail), --dry-run or the cases. */
+static int cmd_verify(int argc, char **argv)
+{
+    args a;
+    int rc = parse_args("verify", usage_verify, 0, argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    if (a.list)
+        return list_cases();
+    size_t seeds = 0;
+    if ((rc = check_verify_args(&a, &seeds)) >= 0)
+        return rc;
+    vfy_options o = verify_options(&a);
+    char checkpoints[1100], work[1100];
+    snprintf(checkpoints, sizeof checkpoints, "%s/.checkpoint", o.out_dir);
+    vfy_solver solver = {.command = a.solver, .timeout = 3600.0, .work_dir = work};
+    rc = verify_solver(&a, &o, &solver, work, sizeof work, checkpoints, sizeof checkpoints);
+    if (rc >= 0)
+        return rc;
+    o.checkpoint_dir = checkpoints;
+    vfy_finished finished = {0};   /* a simulation two rows need runs once */
+    o.finished = &finished;
+    /* For tests: behave as if SIGINT arrived after K finished simulations. */
+    size_t countdown = 0;
+    const char *stop_after = getenv("GDSMC_STOP_AFTER_RUNS");
+    if (stop_after && (countdown = strtoul(stop_after, NULL, 10)) > 0)
+        o.stop_countdown = &countdown;
+    catch_stop_signals();
+    if ((rc = probe_out("verify", a.junit)) != EXIT_OK)
+        return rc;
+    if (seeds > 0 || a.power || a.must_fail)
+        return verify_gate(&a, &o, seeds);
+    if (a.dry_run)
+        return verify_dry_run(&a, &o);
+    return verify_cases(&a, &o, checkpoints);
 }
 
 int gdsmc_main(int argc, char **argv)

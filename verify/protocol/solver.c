@@ -282,63 +282,55 @@ static pid_t start(char **argv, const char *log, const char *err)
     return pid;
 }
 
-sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, const char *label,
-                          sim_ensemble_result *res, vfy_result_info *info, char *msg,
-                          size_t msglen)
-{
-    memset(res, 0, sizeof *res);
-    memset(info, 0, sizeof *info);
-    char scene_path[1100], out_path[1100], log_path[1100], err_path[1100], why[200];
-    const uint64_t key = vfy_checkpoint_key(scene);
-    snprintf(scene_path, sizeof scene_path, "%s/%016" PRIx64 ".ini", solver->work_dir, key);
-    snprintf(out_path, sizeof out_path, "%s/%016" PRIx64 ".result", solver->work_dir, key);
-    snprintf(log_path, sizeof log_path, "%s/%016" PRIx64 ".log", solver->work_dir, key);
-    snprintf(err_path, sizeof err_path, "%s/%016" PRIx64 ".err", solver->work_dir, key);
-
+/* The solver's command as an argv: its words, with the scene's and the
+ * result's paths put in (substitute), pointing into buf and expanded. */
+typedef struct solver_argv {
     char *words[MAX_WORDS + 1], buf[SPLIT_BYTES], expanded[MAX_WORDS][1200];
-    int n = vfy_solver_split(solver->command, words, MAX_WORDS, buf, sizeof buf, why,
+} solver_argv;
+
+/* Split the solver's command into av with scene_path and out_path put in:
+ * SIM_OK, or SIM_EINVAL with msg (the command is bad, or a word too long). */
+static sim_status command_argv(const vfy_solver *solver, const char *scene_path,
+                               const char *out_path, solver_argv *av, char *msg, size_t msglen)
+{
+    char why[200];
+    int n = vfy_solver_split(solver->command, av->words, MAX_WORDS, av->buf, sizeof av->buf, why,
                              sizeof why);
     if (n < 0) {
         snprintf(msg, msglen, "--solver '%s': %s", solver->command, why);
         return SIM_EINVAL;
     }
     for (int k = 0; k < n; k++) {
-        if (substitute(words[k], scene_path, out_path, expanded[k], sizeof expanded[k]) != 0) {
+        if (substitute(av->words[k], scene_path, out_path, av->expanded[k],
+                       sizeof av->expanded[k]) != 0) {
             snprintf(msg, msglen, "--solver '%s': word %d is too long with the paths in it",
                      solver->command, k + 1);
             return SIM_EINVAL;
         }
-        words[k] = expanded[k];
+        av->words[k] = av->expanded[k];
     }
-    words[n] = NULL;
+    av->words[n] = NULL;
+    return SIM_OK;
+}
 
-    FILE *f = vfy_ensure_dir(solver->work_dir) == 0 ? fopen(scene_path, "w") : NULL;
-    int written = f != NULL && vfy_scene_write(f, scene) == 0;
-    if (f == NULL || fclose(f) != 0 || !written) {
-        snprintf(msg, msglen, "%s: cannot write: %s", scene_path, strerror(errno));
-        return SIM_EIO;
-    }
-    unlink(out_path);   /* a result from before must not pass for this run's */
-
-    const double wall0 = wall_now();
-    pid_t pid = start(words, log_path, err_path);
-    if (pid < 0) {
-        snprintf(msg, msglen, "%s: the solver cannot be started: '%s': %s (--solver '%s')",
-                 label, words[0], strerror(errno), solver->command);
-        return SIM_EINVAL;
-    }
-    int status = 0;
-    struct rusage ru;
+/* Wait for the solver started as pid at wall0 (polling, the pause doubling
+ * up to 50 ms): SIM_OK with its wait status and resource use; killed (its
+ * process group) on a stop request (SIM_ECANCELED), past the timeout or when
+ * waiting fails (SIM_EINVAL), with msg. */
+static sim_status await_solver(const vfy_solver *solver, const char *label, pid_t pid,
+                               double wall0, int *status, struct rusage *ru, char *msg,
+                               size_t msglen)
+{
     double pause = 1e-3;
     for (;;) {
-        pid_t done = wait4(pid, &status, WNOHANG, &ru);
+        pid_t done = wait4(pid, status, WNOHANG, ru);
         if (done == pid)
-            break;
+            return SIM_OK;
         const int stop = sim_ensemble_stop_requested();
         const int late = wall_now() - wall0 > solver->timeout;
         if (stop || late || done < 0) {
             kill(-pid, SIGKILL);
-            wait4(pid, &status, 0, &ru);
+            wait4(pid, status, 0, ru);
             if (stop) {
                 snprintf(msg, msglen, "%s: stopped (the solver killed)", label);
                 return SIM_ECANCELED;
@@ -351,8 +343,17 @@ sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, cons
         nanosleep(&ts, NULL);
         pause = fmin(2.0 * pause, 0.05);
     }
-    const double wall = wall_now() - wall0;
-    char tail[700];
+}
+
+/* How the solver ended (its wait status): SIM_OK when it exited with 0;
+ * SIM_EUNSUPPORTED with its reason (the last line of err_path) as msg when
+ * it refused; otherwise SIM_EINVAL with msg quoting the last lines of its
+ * standard error (or of its output log_path when that is empty). */
+static sim_status solver_exit_status(const vfy_solver *solver, const char *label, int status,
+                                     const char *log_path, const char *err_path, char *msg,
+                                     size_t msglen)
+{
+    char tail[700], why[200];
     if (WIFEXITED(status) && WEXITSTATUS(status) == VFY_SOLVER_REFUSES) {
         last_line(err_path, tail, 240);
         if (tail[0] != '\0') {   /* a refusal: the reason is the message */
@@ -378,6 +379,50 @@ sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, cons
                  tail[0] ? tail : "\n    (none)");
         return SIM_EINVAL;
     }
+    return SIM_OK;
+}
+
+sim_status vfy_solver_run(const vfy_solver *solver, const sim_scene *scene, const char *label,
+                          sim_ensemble_result *res, vfy_result_info *info, char *msg,
+                          size_t msglen)
+{
+    memset(res, 0, sizeof *res);
+    memset(info, 0, sizeof *info);
+    char scene_path[1100], out_path[1100], log_path[1100], err_path[1100];
+    const uint64_t key = vfy_checkpoint_key(scene);
+    snprintf(scene_path, sizeof scene_path, "%s/%016" PRIx64 ".ini", solver->work_dir, key);
+    snprintf(out_path, sizeof out_path, "%s/%016" PRIx64 ".result", solver->work_dir, key);
+    snprintf(log_path, sizeof log_path, "%s/%016" PRIx64 ".log", solver->work_dir, key);
+    snprintf(err_path, sizeof err_path, "%s/%016" PRIx64 ".err", solver->work_dir, key);
+
+    solver_argv av;
+    sim_status rc = command_argv(solver, scene_path, out_path, &av, msg, msglen);
+    if (rc != SIM_OK)
+        return rc;
+
+    FILE *f = vfy_ensure_dir(solver->work_dir) == 0 ? fopen(scene_path, "w") : NULL;
+    int written = f != NULL && vfy_scene_write(f, scene) == 0;
+    if (f == NULL || fclose(f) != 0 || !written) {
+        snprintf(msg, msglen, "%s: cannot write: %s", scene_path, strerror(errno));
+        return SIM_EIO;
+    }
+    unlink(out_path);   /* a result from before must not pass for this run's */
+
+    const double wall0 = wall_now();
+    pid_t pid = start(av.words, log_path, err_path);
+    if (pid < 0) {
+        snprintf(msg, msglen, "%s: the solver cannot be started: '%s': %s (--solver '%s')",
+                 label, av.words[0], strerror(errno), solver->command);
+        return SIM_EINVAL;
+    }
+    int status = 0;
+    struct rusage ru;
+    if ((rc = await_solver(solver, label, pid, wall0, &status, &ru, msg, msglen)) != SIM_OK)
+        return rc;
+    const double wall = wall_now() - wall0;
+    rc = solver_exit_status(solver, label, status, log_path, err_path, msg, msglen);
+    if (rc != SIM_OK)
+        return rc;
     struct stat st;
     if (stat(out_path, &st) != 0) {
         snprintf(msg, msglen, "%s: the solver exited with status 0 but wrote no result %s "
