@@ -1477,6 +1477,54 @@ static const char distribution_columns[] =
 /* BGK and local-equilibrium curves on a fine grid beside the bins. */
 enum { ASD_FINE = 121 };
 
+/* The BGK model's and the local equilibrium's marginals at points (not bin
+ * averages) into the plot, for the rows of `alpha` (last: one of them). */
+static void asd_reference_curves(asx_plot *plot, const vfy_row *last, double alpha)
+{
+    const ref_bgk_params p = vfy_bgk_params(&last->scene);
+    const double cmax = last->solver.steady.c_max;
+    double *fine = asx_own(plot, malloc(8 * ASD_FINE * sizeof *fine));
+    vfy_xy_curve *b = fine ? asx_curve(plot, last, "BGK ", ASD_FINE, 1) : NULL;
+    vfy_xy_curve *bf = b ? asx_curve(plot, last, "BGK ", ASD_FINE, 1) : NULL;
+    vfy_xy_curve *e = bf ? asx_curve(plot, last, "equilibrium ", ASD_FINE, 1) : NULL;
+    vfy_xy_curve *ef = e ? asx_curve(plot, last, "equilibrium ", ASD_FINE, 1) : NULL;
+    if (ef != NULL) {
+        double *x = fine, *bx = x + ASD_FINE, *by = bx + ASD_FINE, *xs = by + ASD_FINE;
+        double *bF = xs + ASD_FINE, *mg = bF + ASD_FINE, *mF = mg + ASD_FINE;
+        for (size_t k = 0; k < ASD_FINE; k++) {
+            x[k] = -cmax + 2.0 * cmax * (double)k / (ASD_FINE - 1);
+            xs[k] = cmax * (double)k / (ASD_FINE - 1);
+            if (ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, x[k], &bx[k], NULL, 0) != REF_OK)
+                bx[k] = NAN;
+            if (ref_bgk_steady_marginal(&p, REF_BGK_GY_PLUS, x[k], &by[k], NULL, 0) != REF_OK)
+                by[k] = NAN;
+            if (ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, xs[k], &bF[k], NULL, 0) != REF_OK)
+                bF[k] = NAN;
+            mg[k] = exp(-x[k] * x[k]) / (2.0 * sqrt(M_PI));
+            mF[k] = 4.0 * xs[k] * xs[k] * exp(-xs[k] * xs[k]) / sqrt(M_PI);
+        }
+        /* below 1e-6 the simulations hold no particle (10^9 samples at most): the
+         * curves stop there, so that E Fig. 18's range shows */
+        double *const ys[] = {bx, by, bF, mg, mF};
+        for (size_t j = 0; j < 5; j++)
+            for (size_t k = 0; k < ASD_FINE; k++)
+                if (!(ys[j][k] >= 1e-6))
+                    ys[j][k] = NAN;
+        /* one label for a model's two curves (the g panels' and F's), no row's */
+        vfy_xy_curve *const models[] = {b, bf, e, ef};
+        for (size_t j = 0; j < 4; j++)
+            asx_relabel(plot, asx_index(plot, models[j]),
+                        j < 2 ? vfy_aprintf("BGK alpha=%.1f", alpha)
+                              : vfy_strdup("equilibrium"));
+        b->lc = bf->lc = 7;   /* black and grey, whatever the rows' colours */
+        e->lc = ef->lc = 8;
+        b->x = x, b->y[0] = bx, b->y[1] = by;
+        bf->x = xs, bf->y[2] = bF;
+        e->x = x, e->y[0] = e->y[1] = mg;
+        ef->x = xs, ef->y[2] = mF;
+    }
+}
+
 /* After the rows: E Figs. 17 (linear) and 18 (logarithmic) for each alpha:
  * g_x^(+), g_y^(+) and F of every row of that alpha with their half-widths,
  * the BGK model's and the local equilibrium's. */
@@ -1527,49 +1575,7 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
         }
         if (last == NULL)
             continue;
-        /* the BGK model's and the local equilibrium's, at points (not bin averages) */
-        const ref_bgk_params p = vfy_bgk_params(&last->scene);
-        const double cmax = last->solver.steady.c_max;
-        double *fine = asx_own(&pl, malloc(8 * ASD_FINE * sizeof *fine));
-        vfy_xy_curve *b = fine ? asx_curve(&pl, last, "BGK ", ASD_FINE, 1) : NULL;
-        vfy_xy_curve *bf = b ? asx_curve(&pl, last, "BGK ", ASD_FINE, 1) : NULL;
-        vfy_xy_curve *e = bf ? asx_curve(&pl, last, "equilibrium ", ASD_FINE, 1) : NULL;
-        vfy_xy_curve *ef = e ? asx_curve(&pl, last, "equilibrium ", ASD_FINE, 1) : NULL;
-        if (ef != NULL) {
-            double *x = fine, *bx = x + ASD_FINE, *by = bx + ASD_FINE, *xs = by + ASD_FINE;
-            double *bF = xs + ASD_FINE, *mg = bF + ASD_FINE, *mF = mg + ASD_FINE;
-            for (size_t k = 0; k < ASD_FINE; k++) {
-                x[k] = -cmax + 2.0 * cmax * (double)k / (ASD_FINE - 1);
-                xs[k] = cmax * (double)k / (ASD_FINE - 1);
-                if (ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, x[k], &bx[k], NULL, 0) != REF_OK)
-                    bx[k] = NAN;
-                if (ref_bgk_steady_marginal(&p, REF_BGK_GY_PLUS, x[k], &by[k], NULL, 0) != REF_OK)
-                    by[k] = NAN;
-                if (ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, xs[k], &bF[k], NULL, 0) != REF_OK)
-                    bF[k] = NAN;
-                mg[k] = exp(-x[k] * x[k]) / (2.0 * sqrt(M_PI));
-                mF[k] = 4.0 * xs[k] * xs[k] * exp(-xs[k] * xs[k]) / sqrt(M_PI);
-            }
-            /* below 1e-6 the simulations hold no particle (10^9 samples at most): the
-             * curves stop there, so that E Fig. 18's range shows */
-            double *const ys[] = {bx, by, bF, mg, mF};
-            for (size_t j = 0; j < 5; j++)
-                for (size_t k = 0; k < ASD_FINE; k++)
-                    if (!(ys[j][k] >= 1e-6))
-                        ys[j][k] = NAN;
-            /* one label for a model's two curves (the g panels' and F's), no row's */
-            vfy_xy_curve *const models[] = {b, bf, e, ef};
-            for (size_t j = 0; j < 4; j++)
-                asx_relabel(&pl, asx_index(&pl, models[j]),
-                            j < 2 ? vfy_aprintf("BGK alpha=%.1f", alphas[ia])
-                                  : vfy_strdup("equilibrium"));
-            b->lc = bf->lc = 7;   /* black and grey, whatever the rows' colours */
-            e->lc = ef->lc = 8;
-            b->x = x, b->y[0] = bx, b->y[1] = by;
-            bf->x = xs, bf->y[2] = bF;
-            e->x = x, e->y[0] = e->y[1] = mg;
-            ef->x = xs, ef->y[2] = mF;
-        }
+        asd_reference_curves(&pl, last, alphas[ia]);
         for (int logy = 0; logy < 2; logy++) {
             char name[96], title[160];
             snprintf(name, sizeof name, "%s-%.1f%s", run->c->name, alphas[ia], logy ? "-log" : "");
