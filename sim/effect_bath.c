@@ -26,10 +26,9 @@ typedef struct bath_params {
     double theta;      /* T_b/m */
 } bath_params;
 
-static void bath_advance(const sim_flow *e, double v[3], double dt, gsl_rng *rng)
+/* The law over dt: v <- f v + s xi (the header comment). */
+static inline void bath_map(double v[3], double f, double s, gsl_rng *rng)
 {
-    const bath_params *p = e->params;
-    const double f = exp(-p->friction * dt), s = sqrt(p->theta * -expm1(-2.0 * p->friction * dt));
     double xi[3];
     sim_rng_normal3(rng, xi);
     v[0] = f * v[0] + s * xi[0];
@@ -37,18 +36,25 @@ static void bath_advance(const sim_flow *e, double v[3], double dt, gsl_rng *rng
     v[2] = f * v[2] + s * xi[2];
 }
 
+/* s = sqrt((T_b/m) (1 - e^{-2 gamma dt})), without cancellation at small dt. */
+static double bath_spread(const bath_params *p, double dt)
+{
+    return sqrt(p->theta * -expm1(-2.0 * p->friction * dt));
+}
+
+static void bath_advance(const sim_flow *e, double v[3], double dt, gsl_rng *rng)
+{
+    const bath_params *p = e->params;
+    bath_map(v, exp(-p->friction * dt), bath_spread(p, dt), rng);
+}
+
 static void bath_step(const sim_flow *e, sim_run *run, double h)
 {
     const bath_params *p = e->params;
-    const double f = exp(-p->friction * h), s = sqrt(p->theta * -expm1(-2.0 * p->friction * h));
-    gsl_rng *rng = run->rng;
+    const double f = exp(-p->friction * h), s = bath_spread(p, h);
     for (size_t i = 0; i < run->p.n; i++) {
-        double xi[3], *v = run->p.v[i];
-        sim_rng_normal3(rng, xi);
-        v[0] = f * v[0] + s * xi[0];
-        v[1] = f * v[1] + s * xi[1];
-        v[2] = f * v[2] + s * xi[2];
-        sim_run_cover(run, v);
+        bath_map(run->p.v[i], f, s, run->rng);
+        sim_run_cover(run, run->p.v[i]);
     }
 }
 
@@ -60,7 +66,7 @@ static void bath_step(const sim_flow *e, sim_run *run, double h)
 static double bath_reach(const sim_flow *e, double dt)
 {
     const bath_params *p = e->params;
-    return 7.0 * sqrt(p->theta * -expm1(-2.0 * p->friction * dt));
+    return 7.0 * bath_spread(p, dt);
 }
 
 static const sim_flow_type bath_type = {

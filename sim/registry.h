@@ -1,12 +1,14 @@
 /* The registry of effects (docs/theory.md §2.1): every effect a scene can
- * name, in one table (registry.c).  Internal to sim/.
+ * name, in one table (registry.c).
  *
  * An entry says how to tell that a scene names the effect, how to build it,
  * where it stands among the flows of a step, and which columns it adds to the
  * output row and to the steady quantities.  The engine builds itself by
- * walking the table (engine.c names no effect); steady.c and the result
- * reader take the columns' offsets from it.  A new effect is one file with
- * its type object and constructor, and one line here.
+ * walking the table (engine.c names no effect); steady.c and observe.c take
+ * the columns' offsets from it, and verify's references refuse an effect no
+ * reference models.  A new effect is one file with its type object and
+ * constructor, and one line here (its section's keys go to the scene:
+ * docs/layout.md, "Adding an effect").
  *
  * A fused flow (the homogeneous shear with the EHS drag, read from running
  * sums in one pass) declares the flows it replaces: it is used instead of
