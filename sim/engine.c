@@ -264,27 +264,16 @@ static sim_status resolve_steady(sim_engine *e, sim_error *err)
     return SIM_OK;
 }
 
-/* A flow that reads running sums beside an event process that cannot keep
- * them (with the lazy flow): refused, naming that process's section. */
-static sim_status refuse_sums(const sim_engine *e, sim_error *err)
+/* Event process ev's fire function that keeps run->sums current (at the
+ * candidates' time with current_sums), or NULL if it has none. */
+static sim_event_fire_fn sums_fire(const sim_engine *e, const sim_event *ev)
 {
-    const sim_event *lacking = &e->events[0];
-    for (size_t k = 0; k < e->nevents; k++) {
-        const sim_event_fast *fast = e->events[k].type->fast;
-        sim_event_fire_fn fire = NULL;
-        if (fast && e->current_sums && fast->select_fire_current_sums)
-            fire = fast->select_fire_current_sums(&e->events[k]);
-        else if (fast && !e->current_sums && fast->select_fire_sums)
-            fire = fast->select_fire_sums(&e->events[k], e->lazy_flow, e->bounded);
-        if (fire == NULL) {
-            lacking = &e->events[k];
-            break;
-        }
-    }
-    return sim_error_set(err, SIM_EUNSUPPORTED, lacking->type->name,
-                         "the %s reads running sums of the velocities, which the %s does not "
-                         "keep%s", e->flows[0].type->name, lacking->type->name,
-                         e->lazy_flow ? " beside a lazy flow" : "");
+    const sim_event_fast *fast = ev->type->fast;
+    if (fast == NULL)
+        return NULL;
+    if (e->current_sums)
+        return fast->select_fire_current_sums ? fast->select_fire_current_sums(ev) : NULL;
+    return fast->select_fire_sums ? fast->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
 }
 
 /* The velocity bound, and each event's fire function: with running sums
@@ -299,23 +288,23 @@ static sim_status resolve_events(sim_engine *e, sim_error *err)
             e->fixed_centre = 1;
     }
     e->sums = e->conditional || e->stage_sums;
+    size_t lacking = e->nevents;   /* the first process that cannot keep them */
     for (size_t k = 0; k < e->nevents; k++) {
-        const sim_event *ev = &e->events[k];
-        const sim_event_fast *fast = ev->type->fast;
-        if (e->current_sums)
-            e->fire[k] = fast && fast->select_fire_current_sums
-                             ? fast->select_fire_current_sums(ev) : NULL;
-        else
-            e->fire[k] = fast && fast->select_fire_sums
-                             ? fast->select_fire_sums(ev, e->lazy_flow, e->bounded) : NULL;
-        e->sums &= e->fire[k] != NULL;
+        e->fire[k] = sums_fire(e, &e->events[k]);
+        if (e->fire[k] == NULL && lacking == e->nevents)
+            lacking = k;
     }
+    e->sums &= lacking == e->nevents;
     for (size_t k = 0; k < e->nevents; k++)
         if (!e->sums)
             e->fire[k] = e->events[k].type->select_fire(&e->events[k], e->lazy_flow,
                                                          e->bounded);
-    if (e->stage_sums && !e->sums)
-        return refuse_sums(e, err);
+    if (e->stage_sums && !e->sums)   /* a flow reads the sums beside a process that cannot */
+        return sim_error_set(err, SIM_EUNSUPPORTED, e->events[lacking].type->name,
+                             "the %s reads running sums of the velocities, which the %s does "
+                             "not keep%s", e->flows[0].type->name,
+                             e->events[lacking].type->name,
+                             e->lazy_flow ? " beside a lazy flow" : "");
     e->lazy_rebound = e->bounded && e->lazy_flow;
     return SIM_OK;
 }

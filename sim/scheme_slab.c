@@ -392,6 +392,11 @@ void sim_slab_observe(const sim_slab_params *p, sim_slab *s, const sim_run *run,
 
 /* ------------------------------------------------------- the scheme object */
 
+static void slab_free_params(void *params)
+{
+    sim_slab_params_free(params);
+}
+
 static sim_status slab_build(sim_engine *e, sim_error *err)
 {
     sim_slab_params *params;
@@ -400,7 +405,7 @@ static sim_status slab_build(sim_engine *e, sim_error *err)
     if (status != SIM_OK)
         return status;
     e->scheme_params = params;
-    e->free_params = (void (*)(void *))sim_slab_params_free;
+    e->free_params = slab_free_params;
     return sim_scene_step(&e->scene, &e->h, &e->steps, err);
 }
 

@@ -90,17 +90,20 @@ typedef struct keys {
     char list[256];
 } keys;
 
-static void broken(keys *k, const char *key)
-{
-    if (strstr(k->list, key) == NULL)
-        snprintf(k->list + strlen(k->list), sizeof k->list - strlen(k->list), "%s,", key);
-}
-
+/* Whether key is an item of k's list: ",key," in ",list" (so that
+ * "collisions" is not found in "collisions.model,"). */
 static int names(const keys *k, const char *key)
 {
-    char item[72];
-    snprintf(item, sizeof item, "%s,", key);
-    return strstr(k->list, item) != NULL;
+    char item[72], list[sizeof k->list + 1];
+    snprintf(item, sizeof item, ",%s,", key);
+    snprintf(list, sizeof list, ",%s", k->list);
+    return strstr(list, item) != NULL;
+}
+
+static void broken(keys *k, const char *key)
+{
+    if (!names(k, key))
+        snprintf(k->list + strlen(k->list), sizeof k->list - strlen(k->list), "%s,", key);
 }
 
 /* engine.h: the Lees-Edwards slab. */
