@@ -462,7 +462,8 @@ static vfy_verdict hard_rule_u_exact(vfy_report *r, const char *name, vfy_case_r
         ok &= vfy_row_series(row, obs[k], mean + k * M, ci + k * M) == 0
               && vfy_row_series(row, ref[k], exact + k * M, NULL) == 0;
     if (ok)
-        v = vfy_check_zscore(r, name, mean, ci, exact, 3 * M, VFY_TOL_ZMAX, &z);
+        v = vfy_check_zscore(r, name, mean, ci, exact, 3 * M,
+                             vfy_zmax_ensembles(VFY_TOL_ZMAX, row->res.ensembles), &z);
     else
         v = vfy_check_true(r, name, 0, "no u or u_exact series in this row");
     vfy_values_set(&row->values, c->out, z);

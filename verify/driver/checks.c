@@ -167,7 +167,7 @@ vfy_verdict vfy_check_zscore(vfy_report *r, const char *name, const double *mean
                       mean[at], exact[at]);
     vfy_verdict v = worst <= zmax ? VFY_PASS : VFY_FAIL;
     return record(r, v, (judged){worst, 0.0, zmax, NULL}, name,
-                  "max |z| = %.2f at point %zu (allowed %.1f; mean %.6g, exact %.6g)", worst, at,
+                  "max |z| = %.2f at point %zu (allowed %.2f; mean %.6g, exact %.6g)", worst, at,
                   zmax, count ? mean[at] : 0.0, count ? exact[at] : 0.0);
 }
 

@@ -440,7 +440,7 @@ static vfy_verdict zscore_rule(vfy_report *r, const char *name, vfy_row *row,
         for (size_t m = 0; pair && m < M; m++)
             buf[M + m] = hypot(buf[M + m], buf[3 * M + m]);
         v = vfy_check_zscore(r, name, buf + c->from, buf + M + c->from, buf + 2 * M + c->from,
-                             M - c->from, c->tol, &z);
+                             M - c->from, vfy_zmax_ensembles(c->tol, row->res.ensembles), &z);
     }
     if (c->out != NULL && !(vfy_values_get(&row->values, c->out) >= z))
         vfy_values_set(&row->values, c->out, z);

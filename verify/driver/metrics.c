@@ -89,6 +89,15 @@ void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
 
 double vfy_student_t(double p, double dof) { return gsl_cdf_tdist_Pinv(p, dof); }
 
+double vfy_zmax_ensembles(double zmax, size_t ensembles)
+{
+    if (ensembles < 2)   /* no variance: the z-test is an exact comparison */
+        return zmax;
+    const double N = (double)ensembles;
+    const double t = gsl_cdf_tdist_Qinv(gsl_cdf_ugaussian_Q(zmax), N - 1.0) * sqrt(N / (N - 1.0));
+    return t > zmax ? t : zmax;
+}
+
 double vfy_time_average(const double *t, const double *mean, size_t count, double t_from)
 {
     double s = 0.0;

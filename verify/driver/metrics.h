@@ -43,6 +43,13 @@ void vfy_extrapolate_inverse_n(size_t rows, const size_t *n, const double *mean,
 
 /* Student's t quantile: P(T <= q) = p for dof degrees of freedom (GSL). */
 double vfy_student_t(double p, double dof);
+/* The bound on |z| = |mean - exact| / (ci / SIM_LAMBDA_P) that holds a mean of
+ * N ensembles to the same false-alarm probability per point as zmax holds a
+ * normal z: its standard error comes from the N samples' population variance
+ * (ensemble.h), so z is Student's t with N - 1 degrees of freedom times
+ * sqrt(N / (N - 1)).  Never below zmax (docs/verdicts.md; 4.5 becomes 10.0
+ * at N = 10, 4.51 at N = 2000). */
+double vfy_zmax_ensembles(double zmax, size_t ensembles);
 /* The one-sided probability of a confidence half-width: the engine's
  * SIM_LAMBDA_P = 3.2 standard errors is the normal quantile at about it. */
 #define VFY_STUDENT_P 0.9995
