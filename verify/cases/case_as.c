@@ -833,6 +833,11 @@ typedef struct asx_plot {
     double **own;
     size_t ncurves, nown;
     int failed;
+    /* paper E's transient figures (asx_by_alpha): a grid column per alpha,
+     * titled; then a curve's colour is its model's and its dash its a tau0's */
+    size_t ncolumns;
+    double *alphas;
+    char **titles;
 } asx_plot;
 
 /* Array a, owned by the plot from now on (NULL stays NULL: a series the row
@@ -876,16 +881,65 @@ static vfy_xy_curve *asx_new_curve(asx_plot *pl, char *label, size_t count, int 
     return c;
 }
 
+/* The plot's columns: the rows' alphas in the order they come, each a
+ * column of the grid titled "alpha = A" (E draws each alpha apart). */
+static void asx_by_alpha(asx_plot *pl, const vfy_case_run *run)
+{
+    for (size_t i = 0; i < run->nrows && !pl->failed; i++) {
+        const double alpha = vfy_values_get(&run->rows[i].values, "alpha");
+        size_t k = 0;
+        while (k < pl->ncolumns && pl->alphas[k] != alpha)
+            k++;
+        if (k < pl->ncolumns)
+            continue;
+        double *a = realloc(pl->alphas, (k + 1) * sizeof *a);
+        pl->alphas = a ? a : pl->alphas;
+        char **t = a ? realloc(pl->titles, (k + 1) * sizeof *t) : NULL;
+        pl->titles = t ? t : pl->titles;
+        char *title = t ? vfy_aprintf("alpha = %g", alpha) : NULL;
+        if (title == NULL) {
+            pl->failed = 1;
+            return;
+        }
+        pl->alphas[k] = alpha;
+        pl->titles[pl->ncolumns++] = title;
+    }
+}
+
+/* A figure's grid from the plot's columns (none for one alpha). */
+static void asx_grid(vfy_xy_figure *f, const asx_plot *pl)
+{
+    f->ncolumns = pl->ncolumns > 1 ? pl->ncolumns : 0;
+    f->column_title = (const char *const *)pl->titles;
+}
+
 /* A new curve of `count` points labelled from the row, or NULL when out of
- * memory. */
+ * memory.  In a plot by alpha (asx_by_alpha) the label leaves alpha to the
+ * column's title, the colour is the model's (IHS blue, EHS vermilion, a
+ * reference black) and the dash the a tau0's (4 solid, 0.1 dash-dot; a
+ * reference dashed, dotted). */
 static vfy_xy_curve *asx_curve(asx_plot *pl, const vfy_row *row, const char *what,
                                size_t count, int reference)
 {
     const char *model = vfy_row_text(row, "model");
-    return asx_new_curve(pl, vfy_aprintf("%s%s alpha=%.1f a_tau0=%g", what, model ? model : "",
-                                         vfy_values_get(&row->values, "alpha"),
-                                         vfy_values_get(&row->values, "a_tau0")),
-                         count, reference);
+    const double alpha = vfy_values_get(&row->values, "alpha");
+    const double rate = vfy_values_get(&row->values, "a_tau0");
+    if (pl->ncolumns == 0)
+        return asx_new_curve(pl, vfy_aprintf("%s%s alpha=%.1f a_tau0=%g", what,
+                                             model ? model : "", alpha, rate),
+                             count, reference);
+    const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0, hot = rate == 4.0;
+    vfy_xy_curve *c = asx_new_curve(pl, reference ? vfy_aprintf("%sa_tau0=%g", what, rate)
+                                                  : vfy_aprintf("%s a_tau0=%g",
+                                                                ehs ? "EHS" : "IHS", rate),
+                                    count, reference);
+    if (c == NULL)
+        return NULL;
+    c->lc = reference ? 7 : ehs ? 2 : 1;
+    c->dt = reference ? (hot ? 2 : 3) : (hot ? 1 : 4);
+    while (c->column < pl->ncolumns && pl->alphas[c->column] != alpha)
+        c->column++;
+    return c;
 }
 
 /* Label curve k of the plot `label` instead (allocated; NULL: out of memory,
@@ -937,6 +991,10 @@ static int asx_plot_free(asx_plot *pl)
         free(pl->labels[k]);
         free(pl->curves[k]);
     }
+    for (size_t k = 0; k < pl->ncolumns; k++)
+        free(pl->titles[k]);
+    free(pl->titles);
+    free(pl->alphas);
     free(pl->own);
     free(pl->labels);
     free(pl->curves);
@@ -1024,6 +1082,7 @@ static int asx_collisions_figure(const vfy_case_run *run, int *nomem)
 {
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
+    asx_by_alpha(&pl, run);
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         const double beta = sim_scene_collision_rate_factor(&row->solver);
@@ -1046,11 +1105,12 @@ static int asx_collisions_figure(const vfy_case_run *run, int *nomem)
     }
     vfy_xy_figure f = {.name = "", .title = "paper E Figs. 5-6: collisions per particle s "
                        "(EHS: s'/beta) and s/s0 against t", .xlabel = "t/tau0",
-                       .comment = run->comment, .npanels = 2,
+                       .comment = run->comment, .logx = 1, .npanels = 2,
                        .ylabel = {"s, s'/beta", "s/s0"}};
     char name[96];
     snprintf(name, sizeof name, "%s-collisions", run->c->name);
     f.name = name;
+    asx_grid(&f, &pl);
     const int rc = asx_write(run->o, &f, &pl);
     *nomem |= asx_plot_free(&pl);
     return rc;
@@ -1065,6 +1125,7 @@ static int asx_stress_figure(const vfy_case_run *run, int *nomem)
     static const double plus[] = {1.0, 1.0, 1.0, 1.0};
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
+    asx_by_alpha(&pl, run);
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), stress, plus, 3);
@@ -1077,6 +1138,7 @@ static int asx_stress_figure(const vfy_case_run *run, int *nomem)
                        "stresses against s (EHS: s'/beta), BGK against s0", .xlabel = "s",
                        .comment = run->comment, .logx = 1, .npanels = 3,
                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
+    asx_grid(&f, &pl);
     const int rc = asx_write(run->o, &f, &pl);
     *nomem |= asx_plot_free(&pl);
     return rc;
@@ -1132,6 +1194,7 @@ static int asx_cumulants_figure(const vfy_case_run *run, int *nomem)
     static const double signs[] = {1.0, 1.0, -1.0};
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
+    asx_by_alpha(&pl, run);
     for (size_t i = 0; i < run->nrows; i++)
         asx_dsmc(&pl, &run->rows[i], "s",
                  sim_scene_collision_rate_factor(&run->rows[i].solver), cumulants, signs, 3);
@@ -1141,6 +1204,7 @@ static int asx_cumulants_figure(const vfy_case_run *run, int *nomem)
                        "and -a3 against s (EHS: s'/beta)", .xlabel = "s",
                        .comment = run->comment, .logx = 1, .npanels = 3,
                        .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}};
+    asx_grid(&f, &pl);
     const int rc = asx_write(run->o, &f, &pl);
     *nomem |= asx_plot_free(&pl);
     return rc;
@@ -1154,6 +1218,7 @@ static int asx_shells_figure(const vfy_case_run *run, int *nomem)
     static const double plus[] = {1.0, 1.0, 1.0, 1.0};
     asx_plot pl;
     memset(&pl, 0, sizeof pl);
+    asx_by_alpha(&pl, run);
     for (size_t i = 0; i < run->nrows; i++) {
         const vfy_row *row = &run->rows[i];
         if (vfy_values_get(&row->values, "a_tau0") == 4.0)
@@ -1166,6 +1231,7 @@ static int asx_shells_figure(const vfy_case_run *run, int *nomem)
                        "against s at a tau0 = 4 (EHS: s'/beta)", .xlabel = "s",
                        .comment = run->comment, .logx = 1, .npanels = 4,
                        .ylabel = {"R0", "R1", "R2", "R3"}};
+    asx_grid(&f, &pl);
     const int rc = asx_write(run->o, &f, &pl);
     *nomem |= asx_plot_free(&pl);
     return rc;

@@ -52,6 +52,9 @@
     "particles.n=50000;particles.ensembles=16;scene.t_end=16;scene.outputs=33;"         \
     "steady.from=6"
 #define MSG_LABEL "{case} alpha={alpha:%.2f} eps*={eps_star:%g}"
+/* The figures draw the two force strengths apart (eps* = 0.05 departs from
+ * linear response): each its own symbol */
+#define MSG_EPS_GROUPS .group_by = "eps_star", .groups = VFY_LIST("eps* 0.025=0.025", "eps* 0.05=0.05")
 #define MSG_PROGRESS                                                                   \
     MSG_LABEL ": kappa'/kappa0 = {kappa:%.4f} ± {kappa_ci_t:%.4f}, b'_2 = {b2c:%.4f}, "     \
               "a2 = {a2:%.4f} ({wall_s:%.1f} s)"
@@ -626,7 +629,7 @@ const vfy_case_desc vfy_msg_kappa = {
                "modified_percent:%+.2f below_sonine:%.1f kappa_sonine:%.5f "
                "mu_star_sonine:%.5f a2:%.5f a2_ci:%.5f violations:%.0f " VFY_COST_COLUMNS,
     .figures = VFY_FIGURES({.kind = VFY_FIGURE_POINTS, .x = "alpha",
-                            .series = VFY_LIST("DSMC=kappa"),
+                            .series = VFY_LIST("DSMC=kappa"), MSG_EPS_GROUPS,
                             .refs = VFY_LIST("first Sonine=kappa_prime_sonine",
                                              "modified first Sonine=kappa_prime_modified"),
                             .x_lo = 0.3, .x_hi = 1.0,
@@ -665,6 +668,7 @@ const vfy_case_desc vfy_msg_sonine = {
     .figures = VFY_FIGURES(
         {.kind = VFY_FIGURE_POINTS, .x = "alpha",
          .series = VFY_LIST("b'_1=b1c", "b'_2=b2c", "b'_3=b3c", "b'_2 from c_x=b2xc"),
+         MSG_EPS_GROUPS,
          .title = "{case}: Sonine coefficients b'_k against alpha (paper D Fig. 4)",
          .xlabel = "alpha", .ylabel = "b'_k"}),
     .title = "{case}: paper D Figs. 2, 4, the Sonine coefficients b'_1, b'_2, b'_3 against "
