@@ -439,8 +439,8 @@ static int tails_local_slope(vfy_case_run *run, const vfy_row *row, const double
     char expected_label[48], name[96], title[200];
     snprintf(expected_label, sizeof expected_label, "b = 1 + lambda/2 = %g", expected);
     const vfy_xy_curve curves[] = {
-        {.label = "local slope (DSMC), 2 standard errors", .count = K, .x = c, .y = {b},
-         .ci = {b_ci}},
+        {.label = "local slope (DSMC), band: 2 standard errors", .count = K, .x = c,
+         .y = {b}, .ci = {b_ci}, .band = 1},
         {.label = expected_label, .reference = 1, .count = 2, .x = lx, .y = {ly}},
         {.label = "b = 2 (Gaussian)", .reference = 1, .count = 2, .x = lx, .y = {ly + 2}}};
     snprintf(name, sizeof name, "%s-local-slope", run->c->name);

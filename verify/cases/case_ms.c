@@ -507,7 +507,7 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
                                 .logy = 1, .npoints = bins, .x = c, .nseries = 1,
                                 .series = series, .y = ys, .ci = cs, .nfine = bins,
                                 .xfine = c, .ncurves = 1, .curves = curves, .yfine = yf,
-                                .comment = run->comment};
+                                .comment = run->comment, .key_inside = "bottom left"};
         if (vfy_write_points(run->o, &fig) != 0)
             status = vfy_io_error(name, msg, msglen);
         free(buf);

@@ -147,10 +147,12 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key %s\n%s"
                  "plot",
             gp_text(f->title), gp_text(f->xlabel), gp_text(f->ylabel),
-            outside ? "outside right top" : "top right",
-            f->logx && f->logy ? "set logscale xy\n"
-            : f->logy          ? "set logscale y\n"
-            : f->logx          ? "set logscale x\n"
+            outside ? "outside right top" : f->key_inside ? f->key_inside : "top right",
+            /* '%g': gnuplot's own format prints 100.0000000 on a log axis of
+               many decades */
+            f->logx && f->logy ? "set logscale xy\nset format xy '%g'\n"
+            : f->logy          ? "set logscale y\nset format y '%g'\n"
+            : f->logx          ? "set logscale x\nset format x '%g'\n"
                                : "");
     for (size_t j = 0; j < f->ncurves; j++)
         fprintf(out, "%s '%s' skip 1 using 1:%zu with lines lw 2 dt %zu title '%s'",
@@ -231,6 +233,16 @@ static void xy_style(FILE *out, const vfy_xy_figure *f, size_t j, int titled)
 static void xy_plot_curve(FILE *out, const vfy_xy_figure *f, const char *data, size_t j,
                           size_t p, int titled)
 {
+    const vfy_xy_curve *c = &f->curves[j];
+    if (c->band && c->ci[p] != NULL) {   /* the band first, under its curve */
+        fprintf(out, " '%s' index %zu using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
+                     "fs transparent solid 0.25 noborder ",
+                data, j, 2 + 2 * p, 3 + 2 * p, 2 + 2 * p, 3 + 2 * p);
+        if (c->lc > 0)
+            fprintf(out, "lc rgb '%s' notitle,", palette(c->lc));
+        else
+            fprintf(out, "lc %zu notitle,", 1 + j % 8);
+    }
     fprintf(out, " '%s' index %zu using 1:%zu ", data, j, 2 + 2 * p);
     xy_style(out, f, j, titled);
 }
@@ -343,8 +355,9 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
         fputs("unset multiplot\n", out);
         return finish_script(o, out, tmp, gp);
     }
+    /* offsets: a reference line at the data's extreme is not drawn on the border */
     fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s%s"
-                 "set key outside right top\nset grid\n",
+                 "set key outside right top\nset grid\nset offsets 0, 0, graph 0.05, graph 0.05\n",
             f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "",
             f->logy ? "set logscale y\nset format y '%g'\n" : "");
     for (size_t p = 0; p < f->npanels; p++) {

@@ -61,6 +61,9 @@ typedef struct vfy_points {
     const char *const *curves;
     const double *const *yfine;           /* [curve][fine point] */
     const char *comment;                  /* provenance, the files' first lines */
+    const char *key_inside;               /* where a key inside the plot goes, in
+                                             gnuplot's words ("bottom left"); NULL:
+                                             top right */
 } vfy_points;
 
 /* <name>-points.csv (x, each series and its confidence half-width),
@@ -87,6 +90,9 @@ typedef struct vfy_xy_curve {
                                          dotted, 4 dash-dot, 5 dash-dot-dot); 0:
                                          solid, a reference dashed */
     size_t column;                    /* a grid's column (vfy_xy_figure.ncolumns) */
+    int band;                         /* 1: ci drawn as a shaded band under the curve
+                                         (its label says what the band is); 0: ci
+                                         only in the CSV */
 } vfy_xy_curve;
 
 typedef struct vfy_xy_figure {
