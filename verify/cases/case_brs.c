@@ -144,32 +144,10 @@ const vfy_case_desc vfy_brs_ex3 =
 
 /* brs-ex4, brs-ex5 (paper B Ex 4, 5; docs/theory.md §12.3): hard spheres.  Rows with n N fixed
  * (2^21 at paper sizes, 2^14 at quick), so each row costs about the same;
- * each row runs in 32 independent batches (the variants, seeds scene
+ * each row runs in 32 independent batches (vfy_batches: seeds scene
  * seed + 1000 (row + 1) + batch): the spread of the batches' time averages
  * gives T*'s confidence interval, which a time average of correlated
  * per-time intervals cannot. */
-static const char *const steady_batches[] = {
-    "b1: $batch=0", "b2: $batch=1", "b3: $batch=2", "b4: $batch=3",
-    "b5: $batch=4", "b6: $batch=5", "b7: $batch=6", "b8: $batch=7",
-    "b9: $batch=8", "b10: $batch=9", "b11: $batch=10", "b12: $batch=11",
-    "b13: $batch=12", "b14: $batch=13", "b15: $batch=14", "b16: $batch=15",
-    "b17: $batch=16", "b18: $batch=17", "b19: $batch=18", "b20: $batch=19",
-    "b21: $batch=20", "b22: $batch=21", "b23: $batch=22", "b24: $batch=23",
-    "b25: $batch=24", "b26: $batch=25", "b27: $batch=26", "b28: $batch=27",
-    "b29: $batch=28", "b30: $batch=29", "b31: $batch=30", "b32: $batch=31",
-    NULL};
-
-/* Each batch its own seed (vfy_adjust_fn). */
-static sim_status batch_seed(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
-{
-    (void)msg;
-    (void)msglen;
-    const double batch = vfy_values_get(&row->values, "batch");
-    if (!isnan(batch))
-        solver->seed = row->scene.seed + 1000 * (row->index + 1) + (uint64_t)batch;
-    return SIM_OK;
-}
-
 static const char *const steady_needs[] = {"T_le", "T_grad", "uy_le", "uy_grad", NULL};
 static const char *const steady_values[] = {"T_star_le", "T_star_grad", NULL};
 /* T* = the batches' mean of the time average over the second half; the
@@ -287,7 +265,7 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
                                      {"particles.ensembles", "1024 256 64", NULL})},      \
      .quick_rows = {.keys = VFY_KEYS({"particles.n", "16 64 256", NULL},                  \
                                      {"particles.ensembles", "32 8 2", NULL})},           \
-     .label = "{case} n={n} batch", .variants = steady_batches, .adjust = batch_seed,    \
+     .label = "{case} n={n} batch", .batches = {32, 1000},                               \
      .needs = steady_needs, .observes = BRS_OBSERVES,                                    \
      .needs_why = "paper B's closures need collisions.kernel = hard-spheres and "        \
                   "background.kernel = hard-spheres",                                    \

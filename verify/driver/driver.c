@@ -78,10 +78,12 @@ static long variant_index(const vfy_case_desc *d, const char *variant)
 {
     if (variant == NULL || variant[0] == '\0')
         return 0;
-    for (long k = 0; d->variants && d->variants[k]; k++) {
-        size_t n = strcspn(d->variants[k], ":");
-        if (strlen(variant) == n && strncmp(d->variants[k], variant, n) == 0)
-            return k;
+    char buf[48];
+    const char *text;
+    for (size_t k = 0; (text = vfy_variant_text(d, k, buf, sizeof buf)) != NULL; k++) {
+        size_t n = strcspn(text, ":");
+        if (strlen(variant) == n && strncmp(text, variant, n) == 0)
+            return (long)k;
     }
     return -1;
 }
@@ -96,20 +98,41 @@ const sim_ensemble_result *vfy_row_result(const vfy_case_run *run, const vfy_row
 size_t vfy_variant_count(const vfy_case_desc *d)
 {
     size_t count = 0;
+    if (d->batches.count > 0)
+        return d->batches.count;
     while (d->variants && d->variants[count])
         count++;
     return count ? count : 1;
 }
 
+const char *vfy_variant_text(const vfy_case_desc *d, size_t k, char *buf, size_t len)
+{
+    if (d->batches.count > 0) {
+        if (k >= d->batches.count)
+            return NULL;
+        snprintf(buf, len, "b%zu: $batch=%zu", k + 1, k);
+        return buf;
+    }
+    if (d->variants == NULL)
+        return NULL;
+    for (size_t i = 0; i < k; i++)
+        if (d->variants[i] == NULL)
+            return NULL;
+    return d->variants[k];
+}
+
 /* Variant k of d ("NAME: SET;SET"): its name, *len characters at *name (0
- * for a case without variants); returns its settings, or NULL. */
-static const char *variant_parts(const vfy_case_desc *d, size_t k, const char **name, int *len)
+ * for a case without variants); returns its settings, or NULL.  buf holds
+ * a batch's text. */
+static const char *variant_parts(const vfy_case_desc *d, size_t k, const char **name, int *len,
+                                 char *buf, size_t buflen)
 {
     *name = "";
     *len = 0;
-    if (d->variants == NULL || d->variants[0] == NULL)
+    const char *text = vfy_variant_text(d, k, buf, buflen);
+    if (text == NULL)
         return NULL;
-    const char *text = d->variants[k], *colon = strchr(text, ':');
+    const char *colon = strchr(text, ':');
     *name = text;
     *len = (int)strcspn(text, ":");
     return colon ? colon + 1 : NULL;
@@ -128,7 +151,9 @@ static int variants_mean(const vfy_row *row, const char *name, size_t len, doubl
         memset(ci, 0, M * sizeof *ci);
     int rc = 0;
     for (size_t k = 0; k < B && rc == 0; k++) {
-        const char *v = row->run->d->variants ? row->run->d->variants[k] : "";
+        char buf[48];
+        const char *v = vfy_variant_text(row->run->d, k, buf, sizeof buf);
+        v = v ? v : "";
         char *one = vfy_aprintf("%.*s%s%.*s", (int)len, name, k ? "@" : "",
                                 k ? (int)strcspn(v, ":") : 0, v);
         rc = one != NULL ? vfy_row_series(row, one, m1, m1 + M) : -1;
@@ -793,6 +818,12 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     }
     if (status == SIM_ENOMEM)
         snprintf(msg, msglen, "out of memory");
+    if (status == SIM_OK && run->d->batches.count > 0) {
+        const double batch = vfy_values_get(&row->values, "batch");
+        if (!isnan(batch))
+            row->solver.seed = row->scene.seed
+                               + run->d->batches.seed_stride * (row->index + 1) + (uint64_t)batch;
+    }
     if (status == SIM_OK && run->d->adjust)
         status = run->d->adjust(row, &row->solver, msg, msglen);
     if (status == SIM_OK && run->d->observes)
@@ -857,8 +888,9 @@ static sim_status row_simulate(vfy_case_run *run, const vfy_sweep *s, vfy_row *r
     sim_status status = SIM_OK;
     for (size_t k = 0; k < nvariants && status == SIM_OK; k++) {
         const char *variant;
+        char vbuf[48];
         int vlen;
-        const char *sets = variant_parts(d, k, &variant, &vlen);
+        const char *sets = variant_parts(d, k, &variant, &vlen, vbuf, sizeof vbuf);
         if (vlen > 0 && (status = row_scenes(run, s, row, sets, msg, msglen)) != SIM_OK)
             break;
         vfy_text label = {0};
@@ -1832,8 +1864,9 @@ static sim_status dry_row(FILE *out, vfy_case_run *run, const vfy_sweep *s, vfy_
                           size_t k, const char *dir, char *msg, size_t msglen)
 {
     const char *variant;
+    char vbuf[48];
     int vlen;
-    const char *sets = variant_parts(run->d, k, &variant, &vlen);
+    const char *sets = variant_parts(run->d, k, &variant, &vlen, vbuf, sizeof vbuf);
     sim_status status = row_scenes(run, s, row, sets, msg, msglen);
     if (status != SIM_OK)
         return status;

@@ -305,6 +305,14 @@ typedef sim_status (*vfy_adjust_fn)(const vfy_row *row, sim_scene *solver, char 
  * with msg. */
 typedef sim_status (*vfy_hook_fn)(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen);
 
+/* Seeded batches: count independent runs of each row, the variants "b1" ..
+ * "bCOUNT" with $batch = 0 .. count - 1; batch b of row i draws from the
+ * solver seed scene seed + seed_stride (i + 1) + b. */
+typedef struct vfy_batches {
+    size_t count;
+    uint64_t seed_stride;
+} vfy_batches;
+
 typedef struct vfy_case_desc {
     const char *scene;                  /* scene file stem (NULL: the case's name) */
     const char *paper;                  /* {paper} in templates ("Table 1") */
@@ -317,6 +325,7 @@ typedef struct vfy_case_desc {
                                            "NAME: SET;SET" (NULL-terminated; NULL: once);
                                            the variants after the first have their cost
                                            values as "cpu_s@NAME" ... */
+    vfy_batches batches;                /* count > 0: the variants are seeded batches */
     const char *row_progress;           /* printed after each row (a template), or NULL */
     vfy_derive_fn derive;               /* derived settings, or NULL */
     vfy_adjust_fn adjust;               /* a row's solver scene changed, or NULL */
@@ -398,6 +407,10 @@ int vfy_run_extrapolate(vfy_case_run *run, const char *quantity, double *chi2);
 
 /* The number of variants of the description (1 without). */
 size_t vfy_variant_count(const vfy_case_desc *d);
+
+/* Variant k of the description, "NAME: SET;SET" (its batches' written into
+ * buf, "bK: $batch=K-1"), or NULL for a case without variants. */
+const char *vfy_variant_text(const vfy_case_desc *d, size_t k, char *buf, size_t len);
 
 /* Run a case: fill the report; SIM_OK when it ran (whatever the verdicts),
  * or an error with msg (a bad scene, I/O) when it could not. */

@@ -411,7 +411,9 @@ double vfy_metric_student_ci(const vfy_case_run *run, const vfy_row *row, const 
 static const char *variant_name(const vfy_case_run *run, const char *a, size_t k, char *buf,
                                 size_t len)
 {
-    const char *v = run->d->variants ? run->d->variants[k] : "";
+    char text[48];
+    const char *v = vfy_variant_text(run->d, k, text, sizeof text);
+    v = v ? v : "";
     snprintf(buf, len, "%s%s%.*s", a, k ? "@" : "", k ? (int)strcspn(v, ":") : 0, v);
     return buf;
 }
