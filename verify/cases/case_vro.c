@@ -61,18 +61,6 @@ static const char vro_columns[] =
     "var_ratio_T_min:%.3f z_T_raw:%.2f z_T:%.2f z_modes:%.2f cpu_s_sampled=cpu_s:%.2f "
     "cpu_s_conditional=cpu_s@conditional:%.2f";
 
-/* The notes name the smallest mean factor for T_raw over the rows. */
-static sim_status vro_smallest(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
-{
-    (void)r;
-    (void)msg;
-    (void)msglen;
-    double smallest = INFINITY;
-    for (size_t i = 0; i < run->nrows; i++)
-        smallest = fmin(smallest, vfy_values_get(&run->rows[i].values, "var_ratio_T_raw"));
-    vfy_values_set(&run->values, "smallest_T_raw", smallest);
-    return SIM_OK;
-}
 
 const vfy_case_desc vfy_vro_grw_ex3 = {
     .must_fail = "heating.strength=1.05 collisions.constant=1.05",
@@ -84,7 +72,9 @@ const vfy_case_desc vfy_vro_grw_ex3 = {
     .metrics = vro_metrics, .checks = vro_checks, .columns = vro_columns,
     .row_progress = "{case} n={n}: variance reduction T_raw {var_ratio_T_raw:%.3f} (min "
                     "{var_ratio_T_raw_min:%.3f}), T {var_ratio_T:%.3f} (min {var_ratio_T_min:%.3f})",
-    .after_rows = vro_smallest,
+    .case_metrics = (const vfy_metric[]){{"smallest_T_raw", vfy_metric_rows_min,
+                                           "var_ratio_T_raw", NULL, 0},
+                                          {NULL, NULL, NULL, NULL, 0}},
     .title = "{case}: variance-reduced observation, paper A Ex 3 ({size} sizes)",
     .notes = "{comment}.\n\nThe same scene and seed observed two ways at every output time: "
              "sampled (each particle's pending Brownian increment of the white-noise heating is "

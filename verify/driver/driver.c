@@ -1725,6 +1725,12 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
         r->missing = no == NULL          ? "needs quantities the solver did not report"
                      : refused != NULL ? refused
                                        : "out of memory";
+    for (const vfy_metric *m = d->case_metrics; m != NULL && m->name != NULL; m++)
+        if (vfy_values_set(&run->values, m->name, m->fn(run, NULL, m)) != 0) {
+            free(refused);
+            snprintf(msg, msglen, "out of memory");
+            return SIM_ENOMEM;
+        }
     sim_status status = d->after_rows ? d->after_rows(run, r, msg, msglen) : SIM_OK;
     r->missing = NULL;
     free(refused);

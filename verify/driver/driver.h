@@ -339,6 +339,9 @@ typedef struct vfy_case_desc {
     const vfy_paper_column *paper_columns;  /* terminated by a NULL name */
     const vfy_metric *metrics;          /* in order; terminated by a NULL name */
     const vfy_check_spec *checks;       /* in order; terminated by a NULL name */
+    const vfy_metric *case_metrics;     /* on the case's values, over its rows, before
+                                           after_rows (the function's row is NULL);
+                                           terminated by a NULL name */
     const vfy_check_spec *case_checks;  /* on the case's values, after after_rows (no
                                            row, no guard) */
     const char *columns;                /* "HEADER[=VALUE]:FORMAT ..." (vfy_column) */

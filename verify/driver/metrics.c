@@ -418,6 +418,15 @@ static const char *variant_name(const vfy_case_run *run, const char *a, size_t k
     return buf;
 }
 
+double vfy_metric_rows_min(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)row;
+    double smallest = INFINITY;
+    for (size_t i = 0; i < run->nrows; i++)
+        smallest = fmin(smallest, vfy_values_get(&run->rows[i].values, m->a));
+    return smallest;
+}
+
 double vfy_metric_variants_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     double sum = 0.0;

@@ -157,6 +157,10 @@ vfy_metric_func vfy_metric_student_ci;
  * confidence half-width, with Student's t for batches - 1 degrees of
  * freedom. */
 vfy_metric_func vfy_metric_variants_sum;
+
+/* Case metrics (vfy_case_desc.case_metrics; row NULL): the smallest value a
+ * over the rows. */
+vfy_metric_func vfy_metric_rows_min;
 vfy_metric_func vfy_metric_batch_mean;
 vfy_metric_func vfy_metric_batch_se;
 vfy_metric_func vfy_metric_batch_t_ci;
