@@ -142,55 +142,24 @@ static const char *as_steady_window(const vfy_row *row, char *buf, size_t len)
 
 /* ------------------------------------------------------------- metrics */
 
-/* A row's partner (the rows come in the order alpha, model, a tau0): kind 1,
- * for a row at a tau0 != 4, the row of the same alpha and model at a tau0 = 4
- * (the steady state must not depend on the initial shear rate); kind 2, for an
- * EHS row, the IHS row of the same alpha and a tau0 (E's comparison of the
- * models); kind 3, for a jump-scheme row (is_jump), the time-step row of the
- * same alpha, model and a tau0.  A jump row is no other row's partner.  NULL
- * for a row that has none. */
+/* A row's partners (vfy_row_partner; the rows come in the order alpha,
+ * model, a tau0): "rate", for a row at a tau0 != 4, the row of the same
+ * alpha and model at a tau0 = 4 (the steady state must not depend on the
+ * initial shear rate); "ihs", for an EHS row, the IHS row of the same alpha
+ * and a tau0 (E's comparison of the models); "time-step", for a jump-scheme
+ * row (is_jump), the time-step row of the same alpha, model and a tau0.  A
+ * jump row is no other row's partner. */
+static const vfy_partner as_partners[] = {
+    {"rate", "a_tau0!=4", "alpha is_ehs", "a_tau0=4 is_jump!=1"},
+    {"ihs", "is_ehs=1", "alpha a_tau0", "is_ehs=0 is_jump!=1"},
+    {"time-step", "is_jump=1", "alpha a_tau0 is_ehs", "is_jump!=1"},
+    {NULL, NULL, NULL, NULL}};
+
+/* The partner of kind 1 ("rate"), 2 ("ihs") or 3 ("time-step"), or NULL. */
 static const vfy_row *as_partner(const vfy_case_run *run, const vfy_row *row, int kind)
 {
-    const vfy_values *v = &row->values;
-    const double alpha = vfy_values_get(v, "alpha"), rate = vfy_values_get(v, "a_tau0");
-    const double ehs = vfy_values_get(v, "is_ehs");
-    const int jump = vfy_values_get(v, "is_jump") == 1.0;
-    if ((kind == 1 && rate == 4.0) || (kind == 2 && ehs != 1.0) || (kind == 3 && !jump))
-        return NULL;
-    for (size_t i = 0; i < row->index; i++) {
-        const vfy_values *w = &run->rows[i].values;
-        if (vfy_values_get(w, "is_jump") == 1.0)
-            continue;
-        if (vfy_values_get(w, "alpha") == alpha
-            && vfy_values_get(w, "a_tau0") == (kind == 1 ? 4.0 : rate)
-            && vfy_values_get(w, "is_ehs") == (kind == 2 ? 0.0 : ehs))
-            return &run->rows[i];
-    }
-    return NULL;
-}
-
-/* |q - q'| over the quadrature sum of their half-widths q_ci_t, with q' the
- * value of the partner of kind x (NAN without one). */
-static double as_z_partner(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
-{
-    const vfy_row *other = as_partner(run, row, (int)m->x);
-    if (other == NULL)
-        return NAN;
-    char ci[40];
-    snprintf(ci, sizeof ci, "%s_ci_t", m->a);
-    return vfy_z_pair(vfy_values_get(&row->values, m->a), vfy_values_get(&row->values, ci),
-                      vfy_values_get(&other->values, m->a), vfy_values_get(&other->values, ci));
-}
-
-/* 100 (q - q')/q' with q' the value of the partner of kind x. */
-static double as_percent_partner(const vfy_case_run *run, const vfy_row *row,
-                                 const vfy_metric *m)
-{
-    const vfy_row *other = as_partner(run, row, (int)m->x);
-    if (other == NULL)
-        return NAN;
-    const double b = vfy_values_get(&other->values, m->a);
-    return 100.0 * (vfy_values_get(&row->values, m->a) - b) / b;
+    static const char *const names[] = {"", "rate", "ihs", "time-step"};
+    return kind >= 1 && kind <= 3 ? vfy_row_partner(run, row, names[kind]) : NULL;
 }
 
 /* Which EHS rows the model comparison judges: x > 0, alpha >= x (agree);
@@ -202,22 +171,6 @@ static double as_judged(const vfy_case_run *run, const vfy_row *row, const vfy_m
     if (vfy_values_get(&row->values, "is_ehs") != 1.0 || run->o->size == VFY_QUICK)
         return 0.0;
     return m->x > 0 ? alpha >= m->x - 1e-12 : alpha <= -m->x + 1e-12;
-}
-
-/* The half-width of as_percent_partner's value (partner of kind x): 100 q/q' times
- * the quadrature sum of the relative half-widths (q_ci_t). */
-static double as_percent_ci_partner(const vfy_case_run *run, const vfy_row *row,
-                                    const vfy_metric *m)
-{
-    const vfy_row *other = as_partner(run, row, (int)m->x);
-    if (other == NULL)
-        return NAN;
-    char ci[40];
-    snprintf(ci, sizeof ci, "%s_ci_t", m->a);
-    const double a = vfy_values_get(&row->values, m->a), b = vfy_values_get(&other->values, m->a);
-    const double ra = vfy_values_get(&row->values, ci) / a;
-    const double rb = vfy_values_get(&other->values, ci) / b;
-    return 100.0 * fabs(a / b) * sqrt(ra * ra + rb * rb);
 }
 
 /* T/T0 of the steady state. */
@@ -282,26 +235,26 @@ static const vfy_metric metrics[] = {
     {"T_ratio_ci", as_T_ratio, "T_ci", NULL, 0},
     {"eta_star", vfy_metric_per, "Pxy_reduced", "a_star", 1},
     /* a tau0 = 0.1 against a tau0 = 4 (partner kind 1) */
-    {"z_a_star_rate", as_z_partner, "a_star", NULL, 1},
-    {"z_Pxy_rate", as_z_partner, "Pxy_reduced", NULL, 1},
-    {"z_N1_rate", as_z_partner, "N1", NULL, 1},
-    {"z_N2_rate", as_z_partner, "N2", NULL, 1},
-    {"z_a2_rate", as_z_partner, "a2", NULL, 1},
+    {"z_a_star_rate", vfy_metric_partner_z, "a_star", "rate", 0},
+    {"z_Pxy_rate", vfy_metric_partner_z, "Pxy_reduced", "rate", 0},
+    {"z_N1_rate", vfy_metric_partner_z, "N1", "rate", 0},
+    {"z_N2_rate", vfy_metric_partner_z, "N2", "rate", 0},
+    {"z_a2_rate", vfy_metric_partner_z, "a2", "rate", 0},
     /* EHS against IHS (partner kind 2) */
-    {"ehs_a_star_percent", as_percent_partner, "a_star", NULL, 2},
-    {"ehs_Pxy_percent", as_percent_partner, "Pxy_reduced", NULL, 2},
-    {"ehs_N1_percent", as_percent_partner, "N1", NULL, 2},
-    {"ehs_N2_percent", as_percent_partner, "N2", NULL, 2},
-    {"ehs_T_percent", as_percent_partner, "T", NULL, 2},
-    {"z_N1_model", as_z_partner, "N1", NULL, 2},
-    {"z_a_star_model", as_z_partner, "a_star", NULL, 2},
-    {"z_Pxy_model", as_z_partner, "Pxy_reduced", NULL, 2},
+    {"ehs_a_star_percent", vfy_metric_partner_percent, "a_star", "ihs", 0},
+    {"ehs_Pxy_percent", vfy_metric_partner_percent, "Pxy_reduced", "ihs", 0},
+    {"ehs_N1_percent", vfy_metric_partner_percent, "N1", "ihs", 0},
+    {"ehs_N2_percent", vfy_metric_partner_percent, "N2", "ihs", 0},
+    {"ehs_T_percent", vfy_metric_partner_percent, "T", "ihs", 0},
+    {"z_N1_model", vfy_metric_partner_z, "N1", "ihs", 0},
+    {"z_a_star_model", vfy_metric_partner_z, "a_star", "ihs", 0},
+    {"z_Pxy_model", vfy_metric_partner_z, "Pxy_reduced", "ihs", 0},
     /* the time-step row against the jump scheme (partner kind 3) */
-    {"z_Pxy_jump", as_z_partner, "Pxy_reduced", NULL, 3},
-    {"z_a_star_jump", as_z_partner, "a_star", NULL, 3},
+    {"z_Pxy_jump", vfy_metric_partner_z, "Pxy_reduced", "time-step", 0},
+    {"z_a_star_jump", vfy_metric_partner_z, "a_star", "time-step", 0},
     {"models_agree", as_judged, NULL, NULL, 0.7},
     STUDENT("T_ratio"),
-    {"ehs_T_ci_percent", as_percent_ci_partner, "T", NULL, 2},
+    {"ehs_T_ci_percent", vfy_metric_partner_percent_ci, "T", "ihs", 0},
     {"models_differ", as_judged, NULL, NULL, -0.85},
     STUDENT("v12_ratio"),
     /* E §V A: <V12^3>/<V12^3>_0 about 1 + 0.27 a2 */
@@ -449,6 +402,7 @@ static const char *const values[] = {"a_star_bgk", "Pxy_reduced_bgk", "N1_bgk",
 #define AS_MODEL_GROUPS VFY_LIST("IHS=ihs", "EHS=ehs", "EHS jump scheme=ehs-jump")
 
 const vfy_case_desc vfy_as_steady = {
+    .partners = as_partners,
     .must_fail = "collisions.restitution=0.95 shear.rate=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = paper_rows},
@@ -735,7 +689,7 @@ static const vfy_metric transient_metrics[] = {
     {"collision_ratio_ci_t", asx_collision_ratio, NULL, NULL, 1},
     {"s_ratio_end", asx_collision_ratio, NULL, NULL, 2},
     {"s_ratio_upper", asx_collision_ratio, NULL, NULL, 3},
-    {"z_collision_rate", as_z_partner, "collision_ratio", NULL, 1},
+    {"z_collision_rate", vfy_metric_partner_z, "collision_ratio", "rate", 0},
     {"s_relax", asx_s_relax, NULL, NULL, VFY_TOL_AS_S_RELAX_PERCENT},
     {"eta_ehs_percent", asx_eta_collapse, NULL, NULL, 2},
     {"eta_bgk_percent", asx_eta_collapse, NULL, NULL, 3},
@@ -1257,6 +1211,7 @@ static const char *const transient_needs[] = {"T_bgk", "Pxx_bgk", "Pyy_bgk", "Pz
                                               "Pxy_bgk", "s0_bgk", NULL};
 
 const vfy_case_desc vfy_as_transient = {
+    .partners = as_partners,
     .must_fail = "collisions.restitution=0.85",
     .power_keys = "shear.rate=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
@@ -1700,6 +1655,7 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
 }
 
 const vfy_case_desc vfy_as_distribution = {
+    .partners = as_partners,
     .must_fail = "collisions.restitution=0.8",
     .power_keys = "shear.rate=1.05",
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,

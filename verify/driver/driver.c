@@ -204,6 +204,62 @@ const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row)
     return row->index > 0 ? &run->rows[row->index - 1] : NULL;
 }
 
+/* Whether the values hold every "NAME=NUMBER" / "NAME!=NUMBER" word of cond
+ * (NULL: yes). */
+static int values_hold(const vfy_values *v, const char *cond)
+{
+    for (const char *p = cond; p != NULL && *p != '\0';) {
+        p += strspn(p, " ");
+        const size_t len = strcspn(p, " ");
+        if (len == 0)
+            break;
+        const char *eq = memchr(p, '=', len);
+        if (eq == NULL)
+            return 0;
+        const int negate = eq > p && eq[-1] == '!';
+        char name[64];
+        snprintf(name, sizeof name, "%.*s", (int)(eq - p - negate), p);
+        const int equal = vfy_values_get(v, name) == strtod(eq + 1, NULL);
+        if (equal == negate)
+            return 0;
+        p += len;
+    }
+    return 1;
+}
+
+/* Whether rows a and b have equal values for every name in the space-
+ * separated list (NaN equals nothing). */
+static int values_match(const vfy_values *a, const vfy_values *b, const char *names)
+{
+    for (const char *p = names; p != NULL && *p != '\0';) {
+        p += strspn(p, " ");
+        const size_t len = strcspn(p, " ");
+        if (len == 0)
+            break;
+        char name[64];
+        snprintf(name, sizeof name, "%.*s", (int)len, p);
+        if (vfy_values_get(a, name) != vfy_values_get(b, name))
+            return 0;
+        p += len;
+    }
+    return 1;
+}
+
+const vfy_row *vfy_row_partner(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    const vfy_partner *p = run->d->partners;
+    while (p != NULL && p->name != NULL && strcmp(p->name, name) != 0)
+        p++;
+    if (p == NULL || p->name == NULL || !values_hold(&row->values, p->when))
+        return NULL;
+    for (size_t i = 0; i < row->index; i++) {
+        const vfy_values *w = &run->rows[i].values;
+        if (values_hold(w, p->has) && values_match(w, &row->values, p->match))
+            return &run->rows[i];
+    }
+    return NULL;
+}
+
 sim_status vfy_adjust_jump_rows(const vfy_row *row, sim_scene *solver, char *msg,
                                 size_t msglen)
 {

@@ -113,6 +113,21 @@ void vfy_row_free(vfy_row *row);
 /* The row before this one, or NULL for the first. */
 const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
 
+/* A row's partner (vfy_case_desc.partners), the row a metric compares it
+ * with: for a row whose values satisfy `when`, the first earlier row whose
+ * values named in `match` equal this row's and whose values satisfy `has`.
+ * A condition is space-separated "NAME=NUMBER" or "NAME!=NUMBER" words (a
+ * value the row lacks is NaN, unequal to every number); NULL holds always.
+ * as-steady: {"rate", "a_tau0!=4", "alpha is_ehs", "a_tau0=4 is_jump!=1"},
+ * a row at a tau0 = 0.1 against the same gas at 4. */
+typedef struct vfy_partner {
+    const char *name, *when, *match, *has;
+} vfy_partner;
+
+/* Row's partner `name` of its case, or NULL: none declared by that name, or
+ * none found for this row. */
+const vfy_row *vfy_row_partner(const vfy_case_run *run, const vfy_row *row, const char *name);
+
 /* ------------------------------------------------------------ description */
 
 /* A per-row metric: defines value `name` from the row (pure functions in
@@ -337,6 +352,8 @@ typedef struct vfy_case_desc {
                                            (scene.observe_only); NULL: all */
     int no_simulation;                  /* rows evaluate references only */
     const vfy_paper_column *paper_columns;  /* terminated by a NULL name */
+    const vfy_partner *partners;        /* the rows metrics compare a row with; terminated
+                                           by a NULL name */
     const vfy_metric *metrics;          /* in order; terminated by a NULL name */
     const vfy_check_spec *checks;       /* in order; terminated by a NULL name */
     const vfy_metric *case_metrics;     /* on the case's values, over its rows, before

@@ -418,6 +418,41 @@ static const char *variant_name(const vfy_case_run *run, const char *a, size_t k
     return buf;
 }
 
+double vfy_metric_partner_z(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    const vfy_row *other = vfy_row_partner(run, row, m->b);
+    if (other == NULL)
+        return NAN;
+    char ci[64];
+    snprintf(ci, sizeof ci, "%s_ci_t", m->a);
+    return vfy_z_pair(vfy_values_get(&row->values, m->a), vfy_values_get(&row->values, ci),
+                      vfy_values_get(&other->values, m->a), vfy_values_get(&other->values, ci));
+}
+
+double vfy_metric_partner_percent(const vfy_case_run *run, const vfy_row *row,
+                                  const vfy_metric *m)
+{
+    const vfy_row *other = vfy_row_partner(run, row, m->b);
+    if (other == NULL)
+        return NAN;
+    const double b = vfy_values_get(&other->values, m->a);
+    return 100.0 * (vfy_values_get(&row->values, m->a) - b) / b;
+}
+
+double vfy_metric_partner_percent_ci(const vfy_case_run *run, const vfy_row *row,
+                                     const vfy_metric *m)
+{
+    const vfy_row *other = vfy_row_partner(run, row, m->b);
+    if (other == NULL)
+        return NAN;
+    char ci[64];
+    snprintf(ci, sizeof ci, "%s_ci_t", m->a);
+    const double a = vfy_values_get(&row->values, m->a), b = vfy_values_get(&other->values, m->a);
+    const double ra = vfy_values_get(&row->values, ci) / a;
+    const double rb = vfy_values_get(&other->values, ci) / b;
+    return 100.0 * fabs(a / b) * sqrt(ra * ra + rb * rb);
+}
+
 double vfy_metric_rows_min(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)row;

@@ -158,6 +158,14 @@ vfy_metric_func vfy_metric_student_ci;
  * freedom. */
 vfy_metric_func vfy_metric_variants_sum;
 
+/* Against the row's partner b (vfy_row_partner; NAN without one): |a - a'|
+ * over the quadrature sum of their Student's half-widths a_ci_t (how many
+ * joint half-widths apart); 100 (a - a')/a'; and that percentage's
+ * half-width, 100 |a/a'| times the quadrature sum of the relative ones. */
+vfy_metric_func vfy_metric_partner_z;
+vfy_metric_func vfy_metric_partner_percent;
+vfy_metric_func vfy_metric_partner_percent_ci;
+
 /* Case metrics (vfy_case_desc.case_metrics; row NULL): the smallest value a
  * over the rows. */
 vfy_metric_func vfy_metric_rows_min;
