@@ -17,7 +17,7 @@
  * 0.45 for 0.5 (grw-ex3, quick sizes, N = 2000) gives |z| = 19.6 at n = 64
  * and 83.7 at n = 1024.  A z whose standard error comes from few ensembles
  * is held to the same per-point probability under Student's t
- * (metrics.h: vfy_zmax_ensembles): 4.51 at N = 2000, 10.0 at N = 10. */
+ * (metrics.h: vfy_zmax_ensembles): 4.51 at N = 2000, 9.75 at N = 10. */
 #define VFY_TOL_ZMAX 4.5
 
 /* The protocol conformance case (verify/cases/case_protocol.c): steady T equals the

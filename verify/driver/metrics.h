@@ -47,7 +47,7 @@ double vfy_student_t(double p, double dof);
  * N ensembles to the same false-alarm probability per point as zmax holds a
  * normal z: its standard error comes from the N samples' population variance
  * (ensemble.h), so z is Student's t with N - 1 degrees of freedom times
- * sqrt(N / (N - 1)).  Never below zmax (docs/verdicts.md; 4.5 becomes 10.0
+ * sqrt(N / (N - 1)).  Never below zmax (docs/verdicts.md; 4.5 becomes 9.75
  * at N = 10, 4.51 at N = 2000). */
 double vfy_zmax_ensembles(double zmax, size_t ensembles);
 /* The one-sided probability of a confidence half-width: the engine's
