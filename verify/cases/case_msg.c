@@ -54,7 +54,8 @@
 #define MSG_LABEL "{case} alpha={alpha:%.2f} eps*={eps_star:%g}"
 /* The figures draw the two force strengths apart (eps* = 0.05 departs from
  * linear response): each its own symbol */
-#define MSG_EPS_GROUPS .group_by = "eps_star", .groups = VFY_LIST("eps* 0.025=0.025", "eps* 0.05=0.05")
+#define MSG_EPS_GROUPS                                                                 \
+    .group_by = "eps_star", .groups = VFY_LIST("eps* 0.025=0.025", "eps* 0.05=0.05")
 #define MSG_PROGRESS                                                                   \
     MSG_LABEL ": kappa'/kappa0 = {kappa:%.4f} ± {kappa_ci_t:%.4f}, b'_2 = {b2c:%.4f}, "     \
               "a2 = {a2:%.4f} ({wall_s:%.1f} s)"
@@ -152,7 +153,8 @@ static double msg_collision_rate(const vfy_case_run *run, const vfy_row *row,
     (void)m;
     const sim_scene *s = &row->scene;
     const double n = (double)s->particles.n, N = (double)s->particles.ensembles;
-    const double g = 4.0 * sqrt(s->particles.maxwellian.temperature / (M_PI * sim_scene_grain_mass(s)));
+    const double T0 = s->particles.maxwellian.temperature;
+    const double g = 4.0 * sqrt(T0 / (M_PI * sim_scene_grain_mass(s)));
     const double expected = N * (n - 1.0) / 2.0 * 4.0 * M_PI * s->collisions.rate
                             * sim_scene_collision_rate_factor(s) * s->collisions.constant * g
                             * s->t_end;
