@@ -130,6 +130,19 @@ static void test_student_t(void **state)
     assert_close(vfy_student_t(p, 1e6), 3.2, 1e-4, 0);
 }
 
+/* The z bound of a mean over N ensembles (vfy_zmax_ensembles): 4.5 for a
+ * normal z becomes Student's t at the same tail, times sqrt(N/(N - 1)); it
+ * tends to 4.5 and never falls below it. */
+static void test_zmax_ensembles(void **state)
+{
+    (void)state;
+    assert_close(vfy_zmax_ensembles(4.5, 10), 9.7546, 1e-4, 0);
+    assert_close(vfy_zmax_ensembles(4.5, 2000), 4.5131, 1e-4, 0);
+    assert_close(vfy_zmax_ensembles(4.5, 1), 4.5, 0, 0);
+    assert_true(vfy_zmax_ensembles(4.5, 4) > vfy_zmax_ensembles(4.5, 16));
+    assert_true(vfy_zmax_ensembles(4.5, 100000000) >= 4.5);
+}
+
 static void test_sweeps(void **state)
 {
     (void)state;
@@ -182,6 +195,51 @@ static void free_run(vfy_case_run *run)
     for (size_t i = 0; i < run->nrows; i++)
         vfy_row_free(&run->rows[i]);
     vfy_run_free(run);
+}
+
+/* Partner rows (vfy_row_partner) and the metrics against them, and a case
+ * metric over the rows: four rows (alpha, is_ehs, a_tau0); the EHS row's
+ * "ihs" partner is the IHS row of its alpha and a tau0, never a later row,
+ * a row outside `when` has none. */
+static const vfy_partner test_partners_list[] = {
+    {"ihs", "is_ehs=1", "alpha a_tau0", "is_ehs=0 is_jump!=1"}, {NULL, NULL, NULL, NULL}};
+static const vfy_case_desc partner_desc = {.partners = test_partners_list};
+
+static void test_partners(void **state)
+{
+    (void)state;
+    vfy_row rows[4];
+    memset(rows, 0, sizeof rows);
+    vfy_case_run run = {.c = &test_case, .d = &partner_desc, .o = &test_options, .rows = rows,
+                        .nrows = 4};
+    static const double table[4][5] = {/* alpha, is_ehs, a_tau0, q, q_ci_t */
+                                       {0.5, 0, 4, 2.0, 0.1},
+                                       {0.7, 0, 4, 3.0, 0.3},
+                                       {0.7, 1, 4, 3.3, 0.4},
+                                       {0.7, 1, 0.1, 9.0, 0.1}};
+    static const char *const names[5] = {"alpha", "is_ehs", "a_tau0", "q", "q_ci_t"};
+    for (size_t i = 0; i < 4; i++) {
+        rows[i].index = i;
+        rows[i].run = &run;
+        for (size_t k = 0; k < 5; k++)
+            vfy_values_set(&rows[i].values, names[k], table[i][k]);
+    }
+    assert_ptr_equal(vfy_row_partner(&run, &rows[2], "ihs"), &rows[1]);
+    assert_null(vfy_row_partner(&run, &rows[1], "ihs"));   /* not EHS */
+    assert_null(vfy_row_partner(&run, &rows[3], "ihs"));   /* no IHS row at a tau0 = 0.1 */
+    assert_null(vfy_row_partner(&run, &rows[2], "rate"));  /* not declared */
+    const vfy_metric z = {"z", vfy_metric_partner_z, "q", "ihs", 0};
+    const vfy_metric pc = {"pc", vfy_metric_partner_percent, "q", "ihs", 0};
+    const vfy_metric pci = {"pci", vfy_metric_partner_percent_ci, "q", "ihs", 0};
+    assert_close(z.fn(&run, &rows[2], &z), 0.3 / 0.5, 1e-12, 0);
+    assert_close(pc.fn(&run, &rows[2], &pc), 10.0, 1e-12, 0);
+    assert_close(pci.fn(&run, &rows[2], &pci),
+                 100.0 * 1.1 * sqrt(pow(0.4 / 3.3, 2) + pow(0.3 / 3.0, 2)), 1e-12, 0);
+    assert_true(isnan(z.fn(&run, &rows[3], &z)));
+    const vfy_metric smallest = {"smallest", vfy_metric_rows_min, "q", NULL, 0};
+    assert_close(smallest.fn(&run, NULL, &smallest), 2.0, 0, 0);
+    for (size_t i = 0; i < 4; i++)
+        vfy_row_free(&rows[i]);
 }
 
 static void test_templates(void **state)
@@ -568,21 +626,10 @@ static void test_rows_variants_adjust(void **state)
     assert_int_equal(access(path, R_OK), 0);
 }
 
-/* Batches as variants (brs-ex4's way): three seeded batches of each row, the
- * batch metrics and the mean over the variants (NAME@*), a hook that sets
+/* Seeded batches (brs-ex4's way, vfy_batches): three batches of each row,
+ * the batch metrics and the mean over the variants (NAME@*), a hook that sets
  * case values and case checks on them; the exact time average of the
  * finite-n expectation is met, a wrong printed value is not. */
-static const char *const batch_variants[] = {"b1: $batch=0", "b2: $batch=1", "b3: $batch=2",
-                                             NULL};
-static sim_status batch_seed(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
-{
-    (void)msg;
-    (void)msglen;
-    const double batch = vfy_values_get(&row->values, "batch");
-    if (!isnan(batch))
-        solver->seed = row->scene.seed + 1000 * (uint64_t)batch;
-    return SIM_OK;
-}
 static const vfy_metric batch_metrics[] = {
     {"T_star", vfy_metric_batch_mean, "T_raw", NULL, 0.5},
     {"T_star_se", vfy_metric_batch_se, "T_raw", NULL, 0.5},
@@ -618,7 +665,7 @@ static const vfy_case_desc batch_desc = {
     .scene = "grw-ex3",
     .quick_rows = {.keys = VFY_KEYS({"particles.n", "16", NULL}),
                    .sets = "particles.ensembles=300;scene.outputs=21"},
-    .needs = e2e_needs, .variants = batch_variants, .adjust = batch_seed,
+    .needs = e2e_needs, .batches = {3, 1000},
     .metrics = batch_metrics, .columns = batch_columns, .after_rows = batch_hook,
     .case_checks = batch_case_checks,
     .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T_raw@*",
@@ -991,6 +1038,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_values),      cmocka_unit_test(test_pure_metrics),
         cmocka_unit_test(test_extrapolation), cmocka_unit_test(test_student_t),
+        cmocka_unit_test(test_zmax_ensembles), cmocka_unit_test(test_partners),
         cmocka_unit_test(test_sweeps),      cmocka_unit_test(test_templates),
         cmocka_unit_test(test_rules_and_guards), cmocka_unit_test(test_end_to_end),
         cmocka_unit_test(test_observes),
