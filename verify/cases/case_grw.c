@@ -495,6 +495,15 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
         cc[k] = c;
         lnG[k] = lnf_ci[k] < 0.5 ? lnf[k] + A * pow(c, b_theory) : NAN;   /* the fit's shells */
     }
+    /* the initial Maxwellian drawn down to the steady state's smallest ln f
+     * (less 2): further down (ln f ~ -800 at r = 40) it would set the scale
+     * and flatten the steady state into a line */
+    double lnf_min = INFINITY;
+    for (size_t k = 0; k < K; k++)
+        lnf_min = isfinite(lnf[k]) ? fmin(lnf_min, lnf[k]) : lnf_min;
+    for (size_t k = 0; k < K; k++)
+        if (lnf0[k] < lnf_min - 2.0)
+            lnf0[k] = NAN;
     const double b = vfy_values_get(&row->values, "b");
     vfy_xy_curve hist[] = {
         {.label = "steady state (DSMC)", .count = K, .x = rc, .y = {lnf}, .ci = {lnf_ci}},
