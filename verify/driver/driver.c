@@ -1557,8 +1557,10 @@ static int curves_by_row_with(vfy_case_run *run, const vfy_figure_spec *f, const
                     mean[m] = NAN;
             labels[c] = vfy_aprintf("%s%s%s", label ? label : "", j ? ": " : "",
                                     j ? f->refs[j - 1] : "");
+            /* gnuplot's 8 colours in turn, each round of them dashed anew */
             curves[c] = (vfy_xy_curve){.label = labels[c] ? labels[c] : "", .reference = j > 0,
-                                       .count = M, .x = row->res.t, .y = {mean}, .ci = {ci}};
+                                       .count = M, .x = row->res.t, .y = {mean}, .ci = {ci},
+                                       .dt = j > 0 ? 0 : 1 + (int)(c / 8)};
         }
         free(label);
     }

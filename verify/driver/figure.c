@@ -437,6 +437,9 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
     return finish_script(o, f, tmp, gp);
 }
 
+/* The colours of vfy_write_curves' rows, then the same dashed. */
+#define CURVES_COLOURS 6
+
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
                         const double *t, size_t M, size_t nref, const char *const *ref_names,
@@ -478,8 +481,12 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      !one_panel_per_row ? 700 : panels <= 4 ? 900 : 450 * (int)lines, gp, tmp);
     if (f == NULL)
         return -1;
-    fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key top right\n",
-            x_from, gp_text(quantity));
+    /* more rows in one panel than colours: the key beside the plot, its
+     * entries the rows' lines (each colour's second round dashed), not
+     * their bands */
+    const int crowded = !one_panel_per_row && rows > CURVES_COLOURS;
+    fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key %s\n", x_from,
+            gp_text(quantity), crowded ? "outside right top" : "top right");
     if (one_panel_per_row)
         fprintf(f, "set multiplot layout %zu,2 title '%s'\n", lines, gp_text(title));
     else
@@ -501,12 +508,15 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                                       : vfy_aprintf("n = %zu: mean %s", n[i], VFY_CI_LEGEND);
             /* the band, and its mean as a line (a band thinner than a line still shows);
              * six colours, then the lines dashed */
-            const char *colour = palette(1 + (int)(i % 6));
+            const char *colour = palette(1 + (int)(i % CURVES_COLOURS));
+            const char *text = gp_text(label != NULL ? label : "");
             fprintf(f, "%s '%s' skip 1 using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
-                       "fs transparent solid 0.25 lc rgb '%s' title '%s', '%s' skip 1 using "
-                       "1:%zu with lines lw 1 dt %zu lc rgb '%s' notitle",
+                       "fs transparent solid 0.25 lc rgb '%s' %s%s%s, '%s' skip 1 using "
+                       "1:%zu with lines lw %d dt %zu lc rgb '%s' %s%s%s",
                     nref || i > first ? "," : "", path, col, col + 1, col, col + 1, colour,
-                    gp_text(label != NULL ? label : ""), path, col, 1 + i / 6, colour);
+                    crowded ? "notitle" : "title '", crowded ? "" : text, crowded ? "" : "'",
+                    path, col, crowded ? 2 : 1, 1 + i / CURVES_COLOURS, colour,
+                    crowded ? "title '" : "notitle", crowded ? text : "", crowded ? "'" : "");
             free(label);
         }
         fputc('\n', f);
