@@ -1,8 +1,8 @@
-# gdsmc 0.3.0 verify: scene verify/scenes/grw-ex3.ini, seed 20030328, n = 64, 64, 64, 256, 256, 256, 1024, 1024, 1024, 4096, 4096, 4096, 16384, 16384, 16384 (by row), N = 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048 ensembles (by row), 81 outputs on [0, 8]
-# cost-grw-ex3: gnuplot /tmp/paper-run/out/cost-grw-ex3.gp
+# gdsmc 0.3.0 verify: scene verify/cases/scenes/grw-ex3.ini, seed 20030328, n = 64, 64, 64, 256, 256, 256, 1024, 1024, 1024, 4096, 4096, 4096, 16384, 16384, 16384 (by row), N = 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048, 128, 512, 2048 ensembles (by row), 81 outputs on [0, 8]
+# cost-grw-ex3: gnuplot reports/paper/cost-grw-ex3.gp
 set terminal pngcairo size 1100,750 font ',10'
 set termoption noenhanced
-set output '/tmp/paper-run/out/cost-grw-ex3.png'
+set output 'reports/paper/cost-grw-ex3.png'
 set datafile separator ','
 set title 'cost-grw-ex3: Err against CPU time, T_raw'
 set xlabel 'CPU seconds (all threads)'
@@ -12,4 +12,4 @@ set format y '%.0e'
 set grid
 set key outside right top
 set label 1 'dotted: the model' at graph 0.02, graph 0.04
-plot '/tmp/paper-run/out/cost-grw-ex3-points.csv' index 0 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 1 title 'N = 128 (n grows)', '' index 0 using 1:3 with lines dt 3 lw 2 lc 1 notitle, '' index 0 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 1 notitle, '/tmp/paper-run/out/cost-grw-ex3-points.csv' index 1 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 2 title 'N = 512 (n grows)', '' index 1 using 1:3 with lines dt 3 lw 2 lc 2 notitle, '' index 1 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 2 notitle, '/tmp/paper-run/out/cost-grw-ex3-points.csv' index 2 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 3 title 'N = 2048 (n grows)', '' index 2 using 1:3 with lines dt 3 lw 2 lc 3 notitle, '' index 2 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 3 notitle, '/tmp/paper-run/out/cost-grw-ex3-points.csv' index 3 using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' title 'predicted cheapest per target (model)', '' index 3 using 1:2:4 with labels offset 0,-1.4 font ',7' tc rgb 'black' notitle, 0.01 with lines dt 2 lc rgb 'gray50' title 'targets 1e-2, 1e-3, 1e-4', 0.001 with lines dt 2 lc rgb 'gray50' notitle, 0.0001 with lines dt 2 lc rgb 'gray50' notitle
+plot 'reports/paper/cost-grw-ex3-points.csv' index 0 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 1 title 'N = 128 (n grows)', '' index 0 using 1:3 with lines dt 3 lw 2 lc 1 notitle, '' index 0 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 1 notitle, 'reports/paper/cost-grw-ex3-points.csv' index 1 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 2 title 'N = 512 (n grows)', '' index 1 using 1:3 with lines dt 3 lw 2 lc 2 notitle, '' index 1 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 2 notitle, 'reports/paper/cost-grw-ex3-points.csv' index 2 using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc 3 title 'N = 2048 (n grows)', '' index 2 using 1:3 with lines dt 3 lw 2 lc 3 notitle, '' index 2 using 1:2:4 with labels offset 0.6,0.7 font ',7' left tc lt 3 notitle, 'reports/paper/cost-grw-ex3-points.csv' index 3 using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' title 'predicted cheapest per target (model)', '' index 3 using 1:2:4 with labels offset 0,-1.4 font ',7' tc rgb 'black' notitle, 0.01 with lines dt 2 lc rgb 'gray50' title 'targets 1e-2, 1e-3, 1e-4', 0.001 with lines dt 2 lc rgb 'gray50' notitle, 0.0001 with lines dt 2 lc rgb 'gray50' notitle

@@ -1,14 +1,15 @@
-# gdsmc 0.3.0 verify: scene verify/scenes/grw-ex7.ini, seed 20030331, n = 10000000, N = 10 ensembles, 21 outputs on [0, 0.25]
-# paper A Fig. 6: ln f of the speed r, grw-ex7: gnuplot /tmp/paper-run/out/grw-ex7-histogram.gp
+# gdsmc 0.3.0 verify: scene verify/cases/scenes/grw-ex7.ini, seed 20030331, n = 10000000, N = 10 ensembles, 21 outputs on [0, 0.25]
+# paper A Fig. 6: ln f of the speed r, grw-ex7: gnuplot reports/paper/grw-ex7-histogram.gp
 set terminal pngcairo size 1000,390 font ',10'
 set termoption noenhanced
-set output '/tmp/paper-run/out/grw-ex7-histogram.png'
+set output 'reports/paper/grw-ex7-histogram.png'
 set datafile separator ','
 set datafile missing ''
 set multiplot layout 1,1 title 'paper A Fig. 6: ln f of the speed r, grw-ex7'
 set key outside right top
 set grid
+set offsets 0, 0, graph 0.05, graph 0.05
 set xlabel 'r = |v|'
 set ylabel 'ln f'
-plot '/tmp/paper-run/out/grw-ex7-histogram-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc 1 title 'steady state (DSMC)', '/tmp/paper-run/out/grw-ex7-histogram-curves.csv' index 1 using 1:2 with lines lw 2 dt 2 lc 2 title 'initial Maxwellian'
+plot 'reports/paper/grw-ex7-histogram-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc 1 title 'steady state (DSMC)', 'reports/paper/grw-ex7-histogram-curves.csv' index 1 using 1:2 with lines lw 2 dt 2 lc 2 title 'initial Maxwellian'
 unset multiplot

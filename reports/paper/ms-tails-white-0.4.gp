@@ -1,12 +1,13 @@
-# gdsmc 0.3.0 verify: scene verify/scenes/ms-white-noise.ini, verify/scenes/ms-white-noise.ini, verify/scenes/ms-gaussian.ini, verify/scenes/ms-gaussian.ini (by row), seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
-# ms-tails: G(c) = exp(1.988 c^1.5) f(c), white, alpha = 0.4: gnuplot /tmp/paper-run/out/ms-tails-white-0.4.gp
+# gdsmc 0.3.0 verify: scene verify/cases/scenes/ms-white-noise.ini, verify/cases/scenes/ms-white-noise.ini, verify/cases/scenes/ms-gaussian.ini, verify/cases/scenes/ms-gaussian.ini (by row), seed 20000601, n = 20000, N = 16 ensembles, 201 outputs on [0, 50]
+# ms-tails: G(c) = exp(1.988 c^1.5) f(c), white, alpha = 0.4: gnuplot reports/paper/ms-tails-white-0.4.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced
-set output '/tmp/paper-run/out/ms-tails-white-0.4.png'
+set output 'reports/paper/ms-tails-white-0.4.png'
 set datafile separator ','
 set title 'ms-tails: G(c) = exp(1.988 c^1.5) f(c), white, alpha = 0.4'
 set xlabel 'c'
 set ylabel 'G(c)'
-set key top right
+set key bottom left
 set logscale y
-plot '/tmp/paper-run/out/ms-tails-white-0.4-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'G of the Maxwellian', '/tmp/paper-run/out/ms-tails-white-0.4-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'G (DSMC) ± c'
+set format y '%g'
+plot 'reports/paper/ms-tails-white-0.4-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'G of the Maxwellian', 'reports/paper/ms-tails-white-0.4-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'G (DSMC) ± 99.9% ci'

@@ -1,11 +1,11 @@
-# gdsmc 0.3.0 verify: scene verify/scenes/msg.ini, seed 20070301, n = 200000, N = 16 ensembles, 201 outputs on [0, 40]
-# msg-distribution: phi(c_x^2) and its truncations, alpha = 1.0 (paper D Figs. 5-6): gnuplot /tmp/paper-run/out/msg-distribution-phi-1.0.gp
+# gdsmc 0.3.0 verify: scene verify/cases/scenes/msg.ini, seed 20070301, n = 200000, N = 16 ensembles, 201 outputs on [0, 40]
+# msg-distribution: phi(c_x^2) and its truncations, alpha = 1.0 (paper D Figs. 5-6): gnuplot reports/paper/msg-distribution-phi-1.0.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced
-set output '/tmp/paper-run/out/msg-distribution-phi-1.0.png'
+set output 'reports/paper/msg-distribution-phi-1.0.png'
 set datafile separator ','
 set title 'msg-distribution: phi(c_x^2) and its truncations, alpha = 1.0 (paper D Figs. 5-6)'
 set xlabel 'c_x^2'
 set ylabel 'phi'
 set key top right
-plot '/tmp/paper-run/out/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'phi_1', '/tmp/paper-run/out/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'phi_2', '/tmp/paper-run/out/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:4 with lines lw 2 dt 3 title 'phi_3', '/tmp/paper-run/out/msg-distribution-phi-1.0-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'phi (DSMC) ± c'
+plot 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'phi_1', 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'phi_2', 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:4 with lines lw 2 dt 3 title 'phi_3', 'reports/paper/msg-distribution-phi-1.0-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'phi (DSMC) ± 99.9% ci'

@@ -1,12 +1,13 @@
-# gdsmc 0.3.0 verify: scene verify/scenes/split-ex5.ini, seed 20100906, n = 1024, N = 1500 ensembles, 21 outputs on [0, 32]
-# split-ex5: |time-step - jump| in the time-averaged T: gnuplot /tmp/paper-run/out/split-ex5.gp
+# gdsmc 0.3.0 verify: scene verify/cases/scenes/split-ex5.ini, seed 20100906, n = 1024, N = 1500 ensembles, 21 outputs on [0, 32]
+# split-ex5: |time-step - jump| in the time-averaged T: gnuplot reports/paper/split-ex5.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced
-set output '/tmp/paper-run/out/split-ex5.png'
+set output 'reports/paper/split-ex5.png'
 set datafile separator ','
 set title 'split-ex5: |time-step - jump| in the time-averaged T'
 set xlabel 'h'
 set ylabel '|difference in T|'
 set key top right
 set logscale xy
-plot '/tmp/paper-run/out/split-ex5-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'slope 1', '/tmp/paper-run/out/split-ex5-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'slope 2', '/tmp/paper-run/out/split-ex5-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'Euler |dT| ± c', '/tmp/paper-run/out/split-ex5-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 title 'Strang |dT| ± c'
+set format xy '%g'
+plot 'reports/paper/split-ex5-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'slope 1', 'reports/paper/split-ex5-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'slope 2', 'reports/paper/split-ex5-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'Euler |dT| ± 99.9% ci', 'reports/paper/split-ex5-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 title 'Strang |dT| ± 99.9% ci'

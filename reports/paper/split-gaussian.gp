@@ -1,12 +1,13 @@
-# gdsmc 0.3.0 verify: scene verify/scenes/split-gaussian.ini, seed 20261126, n = 1024, N = 3000 ensembles, 21 outputs on [0, 32]
-# split-gaussian: |time-step - jump| in the time-averaged T: gnuplot /tmp/paper-run/out/split-gaussian.gp
+# gdsmc 0.3.0 verify: scene verify/cases/scenes/split-gaussian.ini, seed 20261126, n = 1024, N = 3000 ensembles, 21 outputs on [0, 32]
+# split-gaussian: |time-step - jump| in the time-averaged T: gnuplot reports/paper/split-gaussian.gp
 set terminal pngcairo size 900,650 font ',10'
 set termoption noenhanced
-set output '/tmp/paper-run/out/split-gaussian.png'
+set output 'reports/paper/split-gaussian.png'
 set datafile separator ','
 set title 'split-gaussian: |time-step - jump| in the time-averaged T'
 set xlabel 'h'
 set ylabel '|difference in T|'
 set key top right
 set logscale xy
-plot '/tmp/paper-run/out/split-gaussian-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'slope 1', '/tmp/paper-run/out/split-gaussian-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'slope 2', '/tmp/paper-run/out/split-gaussian-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'Euler |dT| ± c', '/tmp/paper-run/out/split-gaussian-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 title 'Strang |dT| ± c'
+set format xy '%g'
+plot 'reports/paper/split-gaussian-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'slope 1', 'reports/paper/split-gaussian-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'slope 2', 'reports/paper/split-gaussian-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'Euler |dT| ± 99.9% ci', 'reports/paper/split-gaussian-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 title 'Strang |dT| ± 99.9% ci'
