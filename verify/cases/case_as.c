@@ -860,12 +860,6 @@ static void asx_by_alpha(asx_plot *pl, const vfy_case_run *run)
     }
 }
 
-/* A figure's grid from the plot's columns (none for one alpha). */
-static void asx_grid(vfy_xy_figure *f, const asx_plot *pl)
-{
-    f->ncolumns = pl->ncolumns > 1 ? pl->ncolumns : 0;
-    f->column_title = (const char *const *)pl->titles;
-}
 
 /* A new curve of `count` points labelled from the row, or NULL when out of
  * memory.  In a plot by alpha (asx_by_alpha) the label leaves alpha to the
@@ -955,6 +949,23 @@ static int asx_plot_free(asx_plot *pl)
     const int failed = pl->failed;
     memset(pl, 0, sizeof *pl);
     return failed;
+}
+
+/* Paper E's transient figure f, named "<case>-SUFFIX", from the plot's curves:
+ * a grid with a column per alpha where asx_by_alpha found more than one.
+ * Frees the plot (*nomem set when memory ran out); vfy_write_xy's 0 or -1. */
+static int asx_transient_write(const vfy_case_run *run, const char *suffix, vfy_xy_figure *f,
+                               asx_plot *pl, int *nomem)
+{
+    char name[96];
+    snprintf(name, sizeof name, "%s-%s", run->c->name, suffix);
+    f->name = name;
+    f->comment = run->comment;
+    f->ncolumns = pl->ncolumns > 1 ? pl->ncolumns : 0;
+    f->column_title = (const char *const *)pl->titles;
+    const int rc = asx_write(run->o, f, pl);
+    *nomem |= asx_plot_free(pl);
+    return rc;
 }
 
 /* A DSMC curve of the row: x series scaled by 1/x_scale, the panels' series
@@ -1057,17 +1068,11 @@ static int asx_collisions_figure(const vfy_case_run *run, int *nomem)
         if (vfy_values_get(&row->values, "is_ehs") == 0.0)
             asx_bgk(&pl, row, 0, "S", 1);
     }
-    vfy_xy_figure f = {.name = "", .title = "paper E Figs. 5-6: collisions per particle s "
+    vfy_xy_figure f = {.title = "paper E Figs. 5-6: collisions per particle s "
                        "(EHS: s'/beta) and s/s0 against t", .xlabel = "t/tau0",
-                       .comment = run->comment, .logx = 1, .npanels = 2,
+                       .logx = 1, .npanels = 2,
                        .ylabel = {"s, s'/beta", "s/s0"}};
-    char name[96];
-    snprintf(name, sizeof name, "%s-collisions", run->c->name);
-    f.name = name;
-    asx_grid(&f, &pl);
-    const int rc = asx_write(run->o, &f, &pl);
-    *nomem |= asx_plot_free(&pl);
-    return rc;
+    return asx_transient_write(run, "collisions", &f, &pl, nomem);
 }
 
 /* E Figs. 7-8: T/T0, -Pxy/nT, (Pxx - Pyy)/nT against s, one curve per row,
@@ -1086,16 +1091,11 @@ static int asx_stress_figure(const vfy_case_run *run, int *nomem)
         if (vfy_values_get(&row->values, "is_ehs") == 0.0)
             asx_bgk(&pl, row, 1, "TPN", 3);
     }
-    char name[96];
-    snprintf(name, sizeof name, "%s-stress", run->c->name);
-    vfy_xy_figure f = {.name = name, .title = "paper E Figs. 7-8: T/T0 and the reduced "
+    vfy_xy_figure f = {.title = "paper E Figs. 7-8: T/T0 and the reduced "
                        "stresses against s (EHS: s'/beta), BGK against s0", .xlabel = "s",
-                       .comment = run->comment, .logx = 1, .npanels = 3,
+                       .logx = 1, .npanels = 3,
                        .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
-    asx_grid(&f, &pl);
-    const int rc = asx_write(run->o, &f, &pl);
-    *nomem |= asx_plot_free(&pl);
-    return rc;
+    return asx_transient_write(run, "stress", &f, &pl, nomem);
 }
 
 /* E Fig. 10: eta* against a* at alpha = 0.5, s in [2, 50], BGK beside the
@@ -1130,14 +1130,10 @@ static int asx_viscosity_figure(const vfy_case_run *run, int *nomem)
             }
         }
     }
-    char name[96];
-    snprintf(name, sizeof name, "%s-viscosity", run->c->name);
-    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 10: eta* against a* at alpha = "
-                       "0.5 (2 <= s <= 50)", .xlabel = "a*", .comment = run->comment,
+    vfy_xy_figure f = {.title = "paper E Fig. 10: eta* against a* at alpha = "
+                       "0.5 (2 <= s <= 50)", .xlabel = "a*",
                        .npanels = 1, .ylabel = {"eta*"}};
-    const int rc = asx_write(run->o, &f, &pl);
-    *nomem |= asx_plot_free(&pl);
-    return rc;
+    return asx_transient_write(run, "viscosity", &f, &pl, nomem);
 }
 
 /* E Figs. 11-12: <V12^3>/<V12^3>_0, a2 and -a3 against s, one curve per
@@ -1152,16 +1148,11 @@ static int asx_cumulants_figure(const vfy_case_run *run, int *nomem)
     for (size_t i = 0; i < run->nrows; i++)
         asx_dsmc(&pl, &run->rows[i], "s",
                  sim_scene_collision_rate_factor(&run->rows[i].solver), cumulants, signs, 3);
-    char name[96];
-    snprintf(name, sizeof name, "%s-cumulants", run->c->name);
-    vfy_xy_figure f = {.name = name, .title = "paper E Figs. 11-12: <V12^3>/<V12^3>_0, a2 "
+    vfy_xy_figure f = {.title = "paper E Figs. 11-12: <V12^3>/<V12^3>_0, a2 "
                        "and -a3 against s (EHS: s'/beta)", .xlabel = "s",
-                       .comment = run->comment, .logx = 1, .npanels = 3,
+                       .logx = 1, .npanels = 3,
                        .ylabel = {"<V12^3>/<V12^3>_0", "a2", "-a3"}};
-    asx_grid(&f, &pl);
-    const int rc = asx_write(run->o, &f, &pl);
-    *nomem |= asx_plot_free(&pl);
-    return rc;
+    return asx_transient_write(run, "cumulants", &f, &pl, nomem);
 }
 
 /* E Fig. 13: the shell ratios R0..R3 against s, one curve per row at
@@ -1179,16 +1170,11 @@ static int asx_shells_figure(const vfy_case_run *run, int *nomem)
             asx_dsmc(&pl, row, "s", sim_scene_collision_rate_factor(&row->solver), shells,
                      plus, 4);
     }
-    char name[96];
-    snprintf(name, sizeof name, "%s-shells", run->c->name);
-    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 13: the shell ratios R0..R3 "
+    vfy_xy_figure f = {.title = "paper E Fig. 13: the shell ratios R0..R3 "
                        "against s at a tau0 = 4 (EHS: s'/beta)", .xlabel = "s",
-                       .comment = run->comment, .logx = 1, .npanels = 4,
+                       .logx = 1, .npanels = 4,
                        .ylabel = {"R0", "R1", "R2", "R3"}};
-    asx_grid(&f, &pl);
-    const int rc = asx_write(run->o, &f, &pl);
-    *nomem |= asx_plot_free(&pl);
-    return rc;
+    return asx_transient_write(run, "shells", &f, &pl, nomem);
 }
 
 /* After the rows: E's figures against s (and t, a*), one curve per row, BGK
