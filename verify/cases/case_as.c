@@ -155,13 +155,6 @@ static const vfy_partner as_partners[] = {
     {"time-step", "is_jump=1", "alpha a_tau0 is_ehs", "is_jump!=1"},
     {NULL, NULL, NULL, NULL}};
 
-/* The partner of kind 1 ("rate"), 2 ("ihs") or 3 ("time-step"), or NULL. */
-static const vfy_row *as_partner(const vfy_case_run *run, const vfy_row *row, int kind)
-{
-    static const char *const names[] = {"", "rate", "ihs", "time-step"};
-    return kind >= 1 && kind <= 3 ? vfy_row_partner(run, row, names[kind]) : NULL;
-}
-
 /* Which EHS rows the model comparison judges: x > 0, alpha >= x (agree);
  * x < 0, alpha <= -x (differ).  None at quick sizes, whose half-widths
  * (n = 2000, N = 4) are wider than the differences judged. */
@@ -234,13 +227,13 @@ static const vfy_metric metrics[] = {
     {"T_ratio", as_T_ratio, "T", NULL, 0},
     {"T_ratio_ci", as_T_ratio, "T_ci", NULL, 0},
     {"eta_star", vfy_metric_per, "Pxy_reduced", "a_star", 1},
-    /* a tau0 = 0.1 against a tau0 = 4 (partner kind 1) */
+    /* a tau0 = 0.1 against a tau0 = 4 (partner "rate") */
     {"z_a_star_rate", vfy_metric_partner_z, "a_star", "rate", 0},
     {"z_Pxy_rate", vfy_metric_partner_z, "Pxy_reduced", "rate", 0},
     {"z_N1_rate", vfy_metric_partner_z, "N1", "rate", 0},
     {"z_N2_rate", vfy_metric_partner_z, "N2", "rate", 0},
     {"z_a2_rate", vfy_metric_partner_z, "a2", "rate", 0},
-    /* EHS against IHS (partner kind 2) */
+    /* EHS against IHS (partner "ihs") */
     {"ehs_a_star_percent", vfy_metric_partner_percent, "a_star", "ihs", 0},
     {"ehs_Pxy_percent", vfy_metric_partner_percent, "Pxy_reduced", "ihs", 0},
     {"ehs_N1_percent", vfy_metric_partner_percent, "N1", "ihs", 0},
@@ -249,7 +242,7 @@ static const vfy_metric metrics[] = {
     {"z_N1_model", vfy_metric_partner_z, "N1", "ihs", 0},
     {"z_a_star_model", vfy_metric_partner_z, "a_star", "ihs", 0},
     {"z_Pxy_model", vfy_metric_partner_z, "Pxy_reduced", "ihs", 0},
-    /* the time-step row against the jump scheme (partner kind 3) */
+    /* the time-step row against the jump scheme (partner "time-step") */
     {"z_Pxy_jump", vfy_metric_partner_z, "Pxy_reduced", "time-step", 0},
     {"z_a_star_jump", vfy_metric_partner_z, "a_star", "time-step", 0},
     {"models_agree", as_judged, NULL, NULL, 0.7},
@@ -594,7 +587,7 @@ static double asx_eta_collapse(const vfy_case_run *run, const vfy_row *row, cons
     if (vfy_values_get(&row->values, "is_ehs") != (m->x == 3 ? 0.0 : 1.0)
         || run->o->size == VFY_QUICK)
         return NAN;   /* quick sizes: a bin's average is +-5%, as wide as the bound */
-    const vfy_row *other = bgk ? row : as_partner(run, row, 2);
+    const vfy_row *other = bgk ? row : vfy_row_partner(run, row, "ihs");
     if (other == NULL)
         return NAN;
     const size_t M = row->res.outputs, Mo = other->res.outputs;
@@ -670,7 +663,7 @@ static double asx_bgk_T_dev(const vfy_case_run *run, const vfy_row *row, const v
 static double asx_s_models(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)m;
-    const vfy_row *ihs = as_partner(run, row, 2);
+    const vfy_row *ihs = vfy_row_partner(run, row, "ihs");
     if (ihs == NULL)
         return NAN;
     double *se = asx_series(row, "s", NULL), *si = asx_series(ihs, "s", NULL);
@@ -1326,12 +1319,12 @@ static int asd_which(const char *name)
 
 /* E §V: "the curves obtained from the two values of the shear rate practically
  * coincide" and, at alpha = 0.9, IHS and EHS are "hardly distinguishable":
- * marginal a of the row against its partner of kind x (as_partner), the
+ * marginal a of the row against its partner b (as_partners), the
  * largest |g - g'| less the joint half-width over the bins with |C| <= 2, in
  * percent of the partner's peak.  NAN without a partner. */
 static double asd_partner_dev(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    const vfy_row *other = as_partner(run, row, (int)m->x);
+    const vfy_row *other = vfy_row_partner(run, row, m->b);
     asd_marginal g, h;
     if (other == NULL || asd_get(row, m->a, &g) != 0 || asd_get(other, m->a, &h) != 0
         || g.bins != h.bins)
@@ -1393,7 +1386,7 @@ static double asd_region(const vfy_case_run *run, const vfy_row *row, const vfy_
         || vfy_values_get(&row->values, "is_ehs") != (kind == 2 ? 1.0 : 0.0)
         || run->o->size == VFY_QUICK)
         return NAN;
-    const vfy_row *other = kind == 2 ? as_partner(run, row, 2) : NULL;
+    const vfy_row *other = kind == 2 ? vfy_row_partner(run, row, "ihs") : NULL;
     asd_marginal g, h;
     if ((kind == 2 && other == NULL) || asd_get(row, m->a, &g) != 0
         || (other != NULL && asd_get(other, m->a, &h) != 0))
@@ -1426,13 +1419,13 @@ static const vfy_metric distribution_metrics[] = {
     {"v0_2v0_ci", as_shell_percent, "R1_ci", NULL, 1},
     STUDENT("R0"), STUDENT("R1"), STUDENT("R2"), STUDENT("R3"), STUDENT("below_v0"),
     STUDENT("v0_2v0"),
-    /* a tau0 = 0.1 against 4 (partner kind 1), EHS against IHS (kind 2) */
-    {"gx_rate_dev", asd_partner_dev, "gx", NULL, 1},
-    {"gy_rate_dev", asd_partner_dev, "gy", NULL, 1},
-    {"F_rate_dev", asd_partner_dev, "F", NULL, 1},
-    {"gx_model_dev", asd_partner_dev, "gx", NULL, 2},
-    {"gy_model_dev", asd_partner_dev, "gy", NULL, 2},
-    {"F_model_dev", asd_partner_dev, "F", NULL, 2},
+    /* a tau0 = 0.1 against 4 (partner "rate"), EHS against IHS ("ihs") */
+    {"gx_rate_dev", asd_partner_dev, "gx", "rate", 0},
+    {"gy_rate_dev", asd_partner_dev, "gy", "rate", 0},
+    {"F_rate_dev", asd_partner_dev, "F", "rate", 0},
+    {"gx_model_dev", asd_partner_dev, "gx", "ihs", 0},
+    {"gy_model_dev", asd_partner_dev, "gy", "ihs", 0},
+    {"F_model_dev", asd_partner_dev, "F", "ihs", 0},
     {"gx_bgk_ratio", asd_bgk_ratio, "gx", NULL, 0},
     {"gy_bgk_ratio", asd_bgk_ratio, "gy", NULL, 0},
     {"F_bgk_ratio", asd_bgk_ratio, "F", NULL, 0},
