@@ -452,11 +452,11 @@ gdsmc_add_cli_exact(cli_x_verify_out_is_file 2
                     verify --case grw-ex3 --suite quick --quiet --out ${B}/unknown-key.ini)
 # a case's own requirements on its scene (tests/scenes/cases/), before any simulation
 gdsmc_add_cli_exact(cli_x_verify_split_needs_steady 2
-                    "gdsmc verify: tests/scenes/cases/split-ex5.ini: the splitting case needs [steady] and scheme = timestep"
+                    "gdsmc verify: tests/scenes/cases/split-ex5.ini: the splitting case needs [steady] and scheme = timestep (needs [steady])"
                     verify --case split-ex5 --suite quick --quiet --scenes ${B}/cases
                     --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
 gdsmc_add_cli_exact(cli_x_verify_ms_needs_steady 2
-                    "gdsmc verify: tests/scenes/cases/ms-white-noise.ini: paper C's cases need [steady] and scheme = timestep"
+                    "gdsmc verify: tests/scenes/cases/ms-white-noise.ini: paper C's cases need [steady] and scheme = timestep (needs scene.scheme=timestep)"
                     verify --case ms-a2-white-noise --suite quick --quiet --scenes ${B}/cases
                     --out ${CMAKE_CURRENT_BINARY_DIR}/verify-cases)
 # --set collisions.kernel=hard-spheres leaves paper A's cases without their

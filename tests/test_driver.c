@@ -626,6 +626,63 @@ static void test_rows_variants_adjust(void **state)
     assert_int_equal(access(path, R_OK), 0);
 }
 
+/* Settings derived from value references (vfy_case_desc.derived): the
+ * thermostat strength that holds T0 reaches the solver in the description's
+ * format, and a reference that does not apply (a series) sets nothing; a
+ * requirement the scene does not meet stops the case, naming it. */
+static const vfy_metric derived_metrics[] = {
+    {"beta", vfy_metric_heating_strength, NULL, NULL, 0}, {NULL, NULL, NULL, NULL, 0}};
+static const vfy_case_desc derived_desc = {
+    .scene = "grw-ex5",
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "8", NULL}),
+                   .sets = "particles.ensembles=2;scene.outputs=3;scene.t_end=0.1"},
+    .derived = "heating.strength=heating_strength_T0:%.6g scene.t_end=T_exact",
+    .require = "[heating] heating.type=white-noise", .require_why = "white noise, please",
+    .metrics = derived_metrics, .columns = "beta:%.9g", .title = "{case}",
+    .notes = ""};
+static const vfy_case derived_case = {"driver-derived", "test", "", 0, &derived_desc};
+
+static void test_derived_and_required(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    char msg[512], path[600], table[1024], want[64];
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_run_described(&derived_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    /* 2 beta = the first-Sonine loss at T0 = 1, alpha = 0.5, gamma = 4 (a scene.t_end
+     * of NaN would have stopped the case) */
+    const double a2 = 4.0 / 156.25;
+    const double beta = 0.5 * 4.0 * 0.0795774715459476678 * 0.75 / 24.0 * 4.0 * M_PI * 32.0
+                        / sqrt(M_PI) * (1.0 + 3.0 * a2 / 16.0);
+    char derived[32];
+    snprintf(derived, sizeof derived, "%.6g", beta);
+    snprintf(want, sizeof want, "\nbeta\n%.9g\n", strtod(derived, NULL));
+    snprintf(path, sizeof path, "%s/driver-derived.csv", out_dir);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t got = fread(table, 1, sizeof table - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    if (strstr(table, want) == NULL)
+        print_error("wanted %s in:\n%s\n", want, table);
+    assert_non_null(strstr(table, want));
+
+    vfy_case_desc wrong = derived_desc;
+    wrong.require = "[heating] heating.type=gaussian";
+    const vfy_case wrong_case = {"driver-derived", "test", "", 0, &wrong};
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_run_described(&wrong_case, &o, &r, msg, sizeof msg), SIM_EINVAL);
+    assert_non_null(strstr(msg, "grw-ex5.ini: white noise, please (needs heating.type=gaussian)"));
+    vfy_report_free(&r);
+    wrong.require = "heating.type>gaussian";   /* a malformed word: the description's fault */
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_run_described(&wrong_case, &o, &r, msg, sizeof msg), SIM_EINVAL);
+    assert_non_null(strstr(msg, "case driver-derived: requirement on heating.type"));
+    vfy_report_free(&r);
+}
+
 /* Seeded batches (brs-ex4's way, vfy_batches): three batches of each row,
  * the batch metrics and the mean over the variants (NAME@*), a hook that sets
  * case values and case checks on them; the exact time average of the
@@ -1046,6 +1103,7 @@ int main(void)
         cmocka_unit_test(test_tail_exponent),
         cmocka_unit_test(test_tail_fit_and_adapters),
         cmocka_unit_test(test_batches_and_case_checks),
+        cmocka_unit_test(test_derived_and_required),
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
         cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),

@@ -238,6 +238,45 @@ static void test_two_maxwellians(void **state)
     assert_int_equal(s.heat_flux.present, 0);
 }
 
+/* A case's requirements of its scene (vfy_scene_requires): each kind of word
+ * holds where it should and fails where it should, naming the unmet word;
+ * a malformed word is an error, not a failed requirement. */
+static void test_requirements(void **state)
+{
+    (void)state;
+    static const char text[] = "[scene]\nscheme = timestep\ndt = 0.1\n"
+                               "[particles]\nn = 100\nmass = 2\nzero_momentum = true\n"
+                               "[collisions]\nkernel = hard-spheres\nrestitution = 0.8\n"
+                               "[steady]\nfrom = 1\nbins = 8\n";
+    sim_scene s;
+    char msg[256];
+    parse_ok(text, NULL, 0, &s);
+    assert_int_equal(vfy_scene_requires(&s, "[steady] ![heating] scene.scheme=timestep "
+                                            "particles.zero_momentum=true steady.bins>=8 "
+                                            "steady.bins<9 particles.n>99 "
+                                            "collisions.restitution<=0.8 grain_mass=2",
+                                        msg, sizeof msg),
+                     1);
+    assert_int_equal(vfy_scene_requires(&s, "", msg, sizeof msg), 1);
+    const char *const unmet[] = {"[heating]", "![steady]", "scene.scheme=jump",
+                                 "steady.bins>8", "particles.n<100", "grain_mass=1",
+                                 "heating.type=white-noise", "heating.strength>0"};
+    for (size_t i = 0; i < sizeof unmet / sizeof *unmet; i++) {
+        char words[64];
+        snprintf(words, sizeof words, "[steady] %s scene.scheme=timestep", unmet[i]);
+        assert_int_equal(vfy_scene_requires(&s, words, msg, sizeof msg), 0);
+        assert_string_equal(msg, unmet[i]);
+    }
+    const char *const malformed[] = {"[nosuch]", "[steady", "steady.nosuch=1", "steady.bins",
+                                     "scene.scheme>jump", "scene.scheme=nosuch",
+                                     "steady.bins>=x", "scene.title=x"};
+    for (size_t i = 0; i < sizeof malformed / sizeof *malformed; i++) {
+        msg[0] = '\0';
+        assert_int_equal(vfy_scene_requires(&s, malformed[i], msg, sizeof msg), -1);
+        assert_true(strlen(msg) > 0);
+    }
+}
+
 /* Absent keys keep sim_scene_defaults(); an empty section is still present. */
 static void test_defaults_and_empty_section(void **state)
 {
@@ -1126,6 +1165,7 @@ int main(void)
         cmocka_unit_test(test_timestep_and_steady_keys),
         cmocka_unit_test(test_split_and_ms_files),
         cmocka_unit_test(test_two_maxwellians),
+        cmocka_unit_test(test_requirements),
         cmocka_unit_test(test_defaults_and_empty_section),
         cmocka_unit_test(test_layout),
         cmocka_unit_test(test_overrides),

@@ -400,7 +400,7 @@ const vfy_case_desc vfy_as_steady = {
     .scene = "as", .label = AS_LABEL, .row_progress = AS_PROGRESS,
     .paper_rows = {.rows = paper_rows},
     .quick_rows = {.rows = quick_rows, .sets = AS_STEADY_QUICK_SETS},
-    .derive = as_steady_window, .adjust = vfy_adjust_jump_rows,
+    .derive = as_steady_window, .jump_rows = 1,
     .values = values, .metrics = metrics, .checks = checks, .columns = columns,
     /* IHS and EHS apart (E draws them apart: their difference is the point),
      * each with both a tau0 (the steady state does not depend on it); the

@@ -1214,18 +1214,6 @@ static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, 
     return status;
 }
 
-/* The grid needs time averages; its jump rows simulate the references'
- * scene. */
-static sim_status split_cost_adjust(const vfy_row *row, sim_scene *solver, char *msg,
-                                    size_t msglen)
-{
-    if (!solver->steady.present) {
-        snprintf(msg, msglen, "%s: the cost case needs [steady] (time averages)", solver->file);
-        return SIM_EINVAL;
-    }
-    return vfy_adjust_jump_rows(row, solver, msg, msglen);
-}
-
 static const vfy_metric split_cost_metrics[] = {
     {"ns_per_collision", vfy_metric_per, "cpu_s", "collisions", 1e9},
     {NULL, NULL, NULL, NULL, 0}};
@@ -1244,7 +1232,8 @@ const vfy_case_desc vfy_cost_split_ex5 = {
     .scene = "split-ex5",
     .paper_rows = {.rows = split_paper},
     .quick_rows = {.rows = split_quick, .sets = "scene.t_end=16;scene.outputs=11"},
-    .label = "{case} {label}", .adjust = split_cost_adjust,
+    .label = "{case} {label}", .require = "[steady]",
+    .require_why = "the cost case needs [steady] (time averages)", .jump_rows = 1,
     .row_progress = "{case} {label}: T̄ = {T:%.6f} ± {T_ci:%.6f}, {cpu_s:%.2f} CPU s",
     .metrics = split_cost_metrics, .columns = split_cost_columns,
     .after_rows = split_cost_model,

@@ -263,16 +263,6 @@ static vfy_verdict check_rel(vfy_report *r, const char *name, double value, doub
                           100.0 * dev, 100.0 * rtol);
 }
 
-/* Collisional loss rate of T of hard spheres (unit mass), docs/theory.md §11.4 with
- * the first Sonine factor:
- *   gamma (1 - alpha^2)/24 4 pi C (32/sqrt(pi)) T^{3/2} (1 + 3 a2/16). */
-static double hs_loss(const sim_scene *s, double T, double a2)
-{
-    const double alpha = s->collisions.restitution;
-    return s->collisions.rate * (1.0 - alpha * alpha) / 24.0 * 4.0 * M_PI * s->collisions.constant
-           * 32.0 / sqrt(M_PI) * pow(T, 1.5) * (1.0 + 3.0 * a2 / 16.0);
-}
-
 /* Probability of c >= c0 under the Maxwellian phi = pi^{-3/2} e^{-c^2} and
  * its first-Sonine correction: ∫_{c >= c0} phi (1 + a2 S2(c^2)) d^3c with
  * S2(x) = x^2/2 - 5x/2 + 15/8 (d = 3).  J_m = ∫_{c0}^inf c^m e^{-c^2} dc by
@@ -662,41 +652,15 @@ static double hard_metric(const vfy_case_run *run, const vfy_row *row, const vfy
 }
 #define HARD_METRIC(NAME, WHICH) {NAME, hard_metric, NULL, NULL, WHICH}
 
-/* Every hard case: paper A's units. */
-static sim_status hard_require_unit_mass(const vfy_row *row, sim_scene *solver, char *msg,
-                                         size_t msglen)
-{
-    (void)solver;
-    if (sim_scene_grain_mass(&row->scene) == 1.0)
-        return SIM_OK;
-    snprintf(msg, msglen, "%s: the hard cases use unit grain mass (paper A's units)",
-             row->scene.file);
-    return SIM_EINVAL;
-}
-
-/* The scene's requirements, checked on the reference scene. */
-#define HARD_REQUIRE(FN, WHAT, COND)                                                    \
-    static sim_status FN(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen) \
-    {                                                                                   \
-        const sim_scene *s = &row->scene;                                              \
-        if (!(COND)) {                                                                  \
-            snprintf(msg, msglen, "%s: " WHAT, s->file);                                \
-            return SIM_EINVAL;                                                          \
-        }                                                                               \
-        return hard_require_unit_mass(row, solver, msg, msglen);                        \
-    }
-HARD_REQUIRE(white_require, "needs white-noise [heating] and [steady] with pairs",
-             s->steady.present && s->steady.pairs > 0 && s->heating.present
-                 && s->heating.type == SIM_HEATING_WHITE_NOISE)
-HARD_REQUIRE(nongaussian_require, "needs scheme = timestep, zero_momentum and [steady] with "
-             "pairs and bins",
-             s->steady.present && s->steady.pairs > 0 && s->steady.bins > 0
-                 && s->scheme == SIM_SCHEME_TIMESTEP && s->particles.zero_momentum)
-HARD_REQUIRE(long_run_require, "needs [collisions] only and zero_momentum",
-             !s->heating.present && !s->background.present && s->collisions.present
-                 && s->particles.zero_momentum)
-HARD_REQUIRE(stiff_require, "needs a hard-sphere [background]",
-             s->background.present && s->background.kernel == SIM_KERNEL_HARD_SPHERES)
+/* What each case needs of its scene (vfy_scene_requires): every hard case
+ * paper A's units. */
+#define HARD_UNIT_MASS "grain_mass=1"
+#define HARD_UNIT_MASS_WHY "the hard cases use unit grain mass (paper A's units)"
+#define HARD_REQUIRE(WORDS, WHY)                                                        \
+    .require = HARD_UNIT_MASS " " WORDS, .require_why = HARD_UNIT_MASS_WHY "; this one " WHY
+#define WHITE_REQUIRE                                                                   \
+    HARD_REQUIRE("[heating] heating.type=white-noise [steady] steady.pairs>0",         \
+                 "needs white-noise [heating] and [steady] with pairs")
 
 /* The notes' frame: provenance first, wall time last. */
 #define HARD_NOTES(TEXT) "{comment}.\n\n" TEXT " Total wall time {wall_total:%.1f} s."
@@ -705,14 +669,7 @@ HARD_REQUIRE(stiff_require, "needs a hard-sphere [background]",
 /* ------------------------------------------- hard-dissipation, hard-tails */
 
 /* 2 beta = the first-Sonine loss at T0, so that the steady T is about T0. */
-static const char *dissipation_beta(const vfy_row *row, char *buf, size_t len)
-{
-    const sim_scene *s = &row->scene;
-    const double a2 = vfy_reference_value("a2_C10", s);
-    snprintf(buf, len, "heating.strength=%.17g",
-             0.5 * hs_loss(s, s->particles.maxwellian.temperature, a2));
-    return buf;
-}
+#define HARD_DERIVED "heating.strength=heating_strength_T0"
 
 static const char *const white_values[] = {"a2_C10", NULL};
 #define WHITE_METRICS                                                                  \
@@ -784,8 +741,8 @@ const vfy_case_desc vfy_hard_dissipation = {
     .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
     .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
                    .sets = STEADY_QUICK_SETS},
-    .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .derive = dissipation_beta,
-    .adjust = white_require, .values = white_values, .metrics = dissipation_metrics,
+    .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .derived = HARD_DERIVED,
+    WHITE_REQUIRE, .values = white_values, .metrics = dissipation_metrics,
     .checks = dissipation_checks, .columns = dissipation_columns,
     .title = HARD_TITLE("very strong dissipation, white-noise heated hard spheres"),
     .notes = HARD_NOTES(WHITE_NOTES " beta is set so that the first-Sonine steady T is "
@@ -806,7 +763,7 @@ const vfy_case_desc vfy_hard_tails = {
     .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"})},
     .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"}),
                    .sets = "particles.n=2000;particles.ensembles=16;steady.pairs=4000"},
-    .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .adjust = white_require,
+    .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, WHITE_REQUIRE,
     .values = white_values, .metrics = tails_metrics, .checks = tails_checks,
     .columns = tails_columns, .after_rows = tails_c_max,
     .title = HARD_TITLE("paper A Ex 7, growing majorant and overpopulated tail"),
@@ -819,17 +776,6 @@ const vfy_case_desc vfy_hard_tails = {
         "(P_tail_maxwell); the tail must reach at least P_tail_sonine - P_tail_ci.")};
 
 /* ------------------------------------------------------- hard-nongaussian */
-
-/* g so that the steady T is about T0: (2/3) g <|v|> = loss, <|v|> = sqrt(2 T0)
- * (2/sqrt(pi)) (1 - a2/8) (paper C Eq. 48), as case_ms.c. */
-static const char *nongaussian_g(const vfy_row *row, char *buf, size_t len)
-{
-    const sim_scene *s = &row->scene;
-    const double a2 = vfy_reference_value("a2_C76", s), T0 = s->particles.maxwellian.temperature;
-    snprintf(buf, len, "heating.strength=%.17g",
-             1.5 * hs_loss(s, T0, a2) / (sqrt(2.0 * T0) * 2.0 / sqrt(M_PI) * (1.0 - a2 / 8.0)));
-    return buf;
-}
 
 static const char *const nongaussian_values[] = {"a2_C76", NULL};
 static const vfy_metric nongaussian_metrics[] = {
@@ -877,7 +823,10 @@ const vfy_case_desc vfy_hard_nongaussian = {
     .label = WHITE_LABEL,
     .row_progress = WHITE_LABEL ": a2 = {a2:%.5f} (C.76 {a2_C76:%.5f}), f/phi(c < {delta:%g}) "
                                 "= {f_over_phi_0:%.3f}, max |V| {max_V:%.3g}",
-    .derive = nongaussian_g, .adjust = nongaussian_require, .values = nongaussian_values,
+    .derived = HARD_DERIVED,
+    HARD_REQUIRE("[steady] steady.pairs>0 steady.bins>0 scene.scheme=timestep "
+                 "particles.zero_momentum=true",
+                 "needs scheme = timestep, zero_momentum and [steady] with pairs and bins"), .values = nongaussian_values,
     .metrics = nongaussian_metrics, .checks = nongaussian_checks,
     .columns = nongaussian_columns,
     .title = HARD_TITLE("paper C's non-Gaussian thermostat near v = 0"),
@@ -935,7 +884,8 @@ const vfy_case_desc vfy_hard_tiny = {
     .must_fail = "collisions.constant=1.05",
     .paper_rows = {.rows = tiny_rows, .sets = "particles.ensembles=1000000;scene.outputs=41"},
     .quick_rows = {.rows = tiny_rows, .sets = "particles.ensembles=20000;scene.outputs=41"},
-    .label = "{case} {gas} n={n}", .needs = all_references, .adjust = hard_require_unit_mass,
+    .label = "{case} {gas} n={n}", .needs = all_references, .require = HARD_UNIT_MASS,
+    .require_why = HARD_UNIT_MASS_WHY,
     .metrics = tiny_metrics, .checks = tiny_checks, .columns = tiny_columns,
     .title = HARD_TITLE("tiny systems, n = 2, 3, 4"),
     .notes = HARD_NOTES(
@@ -1051,7 +1001,9 @@ const vfy_case_desc vfy_hard_long_run = {
     .must_fail = "collisions.constant=1.05",
     .paper_rows = {.rows = long_run_rows, .sets = "$events=1e9"},
     .quick_rows = {.rows = long_run_rows, .sets = "$events=1e7"},
-    .label = LONG_LABEL, .derive = long_run_times, .adjust = long_run_require,
+    .label = LONG_LABEL, .derive = long_run_times,
+    HARD_REQUIRE("![heating] ![background] [collisions] particles.zero_momentum=true",
+                 "needs [collisions] only and zero_momentum"),
     .row_progress = LONG_LABEL ": {events_per_system:%.3g} events per system, T(t_end)/T(0) = "
                                "{T_end_over_T0:%.6g}, max |V| {max_V:%.3g}",
     .metrics = long_run_metrics, .checks = long_run_checks, .columns = long_run_columns,
@@ -1157,7 +1109,9 @@ static sim_status stiff_grid(vfy_case_run *run, vfy_report *r, char *msg, size_t
 }
 const vfy_case_desc vfy_hard_stiff = {
     .paper_rows = {.rows = stiff_rows}, .quick_rows = {.rows = stiff_rows},
-    .no_simulation = 1, .adjust = stiff_require, .checks = stiff_checks,
+    .no_simulation = 1,
+    HARD_REQUIRE("[background] background.kernel=hard-spheres", "needs a hard-sphere [background]"),
+    .checks = stiff_checks,
     .columns = stiff_columns, .after_rows = stiff_grid,
     .title = HARD_TITLE("stiff references through CVODE"),
     .notes = HARD_NOTES(
@@ -1242,7 +1196,8 @@ const vfy_case_desc vfy_hard_extreme = {
     .must_fail = "heating.strength=1.05",
     .paper_rows = {.rows = extreme_paper}, .quick_rows = {.rows = extreme_quick},
     .label = EXTREME_LABEL, .needs = all_references, .derive = extreme_rate,
-    .adjust = hard_require_unit_mass, .metrics = extreme_metrics, .checks = extreme_checks,
+    .require = HARD_UNIT_MASS,
+    .require_why = HARD_UNIT_MASS_WHY, .metrics = extreme_metrics, .checks = extreme_checks,
     .columns = extreme_columns, .title = HARD_TITLE("extreme but legal parameters"),
     .notes = HARD_NOTES(
         "Maxwell rows: paper A Ex 3's heated gas (hard-extreme.ini) with restitution 1e-3, "

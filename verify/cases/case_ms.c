@@ -62,52 +62,11 @@
 
 /* ----------------------------------------------------- the row's scene */
 
-/* Collisional energy loss rate dT/dt at temperature T (grain mass 1):
- * gamma (1 - alpha^2)/24 4 pi C (32/sqrt(pi)) T^{3/2} (1 + 3 a2/16) (docs/theory.md
- * §11.4, the closure with its first Sonine factor). */
-static double ms_cooling(const sim_scene *s, double T, double a2)
-{
-    const double alpha = s->collisions.restitution;
-    return s->collisions.rate * (1.0 - alpha * alpha) / 24.0 * 4.0 * M_PI * s->collisions.constant
-           * 32.0 / sqrt(M_PI) * pow(T, 1.5) * (1.0 + 3.0 * a2 / 16.0);
-}
-
-/* The thermostat strength for which the steady T is about T0 (vfy_derive_fn):
- * white noise 2 beta = loss, Gaussian 2 zeta T0 = loss, non-Gaussian
- * (2/3) g <|v|> = loss with <|v|> = sqrt(2 T0) (2/sqrt(pi)) (1 - a2/8)
- * (paper C Eq. (48)), each with its thermostat's Sonine a2.  Nothing when
- * the scene file gives no strength (keep_temperature; or --set gave one). */
-static const char *ms_strength(const vfy_row *row, char *buf, size_t len)
-{
-    const sim_scene *s = &row->scene;
-    buf[0] = '\0';
-    if (!s->heating.present || s->heating.keep_temperature
-        || sim_scene_key_line(s, "heating.strength") < 0)
-        return buf;
-    const double T0 = s->particles.maxwellian.temperature;
-    double strength;
-    if (s->heating.type == SIM_HEATING_WHITE_NOISE)
-        strength = 0.5 * ms_cooling(s, T0, vfy_reference_value("a2_C10", s));
-    else if (s->heating.type == SIM_HEATING_GAUSSIAN)
-        strength = 0.5 * ms_cooling(s, T0, vfy_reference_value("a2_C40", s)) / T0;
-    else {
-        const double a2 = vfy_reference_value("a2_C76", s);
-        strength = 1.5 * ms_cooling(s, T0, a2)
-                   / (sqrt(2.0 * T0) * 2.0 / sqrt(M_PI) * (1.0 - a2 / 8.0));
-    }
-    snprintf(buf, len, "heating.strength=%.17g", strength);
-    return buf;
-}
-
-/* Paper C's cases measure steady states of the time-step scheme. */
-static sim_status ms_require(const vfy_row *row, sim_scene *s, char *msg, size_t msglen)
-{
-    (void)row;
-    if (s->steady.present && s->scheme == SIM_SCHEME_TIMESTEP)
-        return SIM_OK;
-    snprintf(msg, msglen, "%s: paper C's cases need [steady] and scheme = timestep", s->file);
-    return SIM_EINVAL;
-}
+/* Each row's thermostat strength holds T near T0 (heating_strength_T0);
+ * paper C's cases measure steady states of the time-step scheme. */
+#define MS_DERIVED "heating.strength=heating_strength_T0"
+#define MS_REQUIRE "[steady] scene.scheme=timestep"
+#define MS_REQUIRE_WHY "paper C's cases need [steady] and scheme = timestep"
 
 /* After the rows: the sizes line of the notes ({sizes}) and N with its
  * Student's t quantile ({N}, {N_dof}, {t_quantile}), of the first row. */
@@ -243,8 +202,9 @@ static const char a2_columns[] =
      .x_lo = 0.2, .x_hi = 1.0, .title = "{case}: a2 against alpha, " WHAT, .xlabel = "alpha", \
      .ylabel = "a2"}
 #define MS_A2(STEM, QUICK_ALPHA)                                                        \
-    .scene = STEM, .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength, \
-    .adjust = ms_require, .values = a2_values, .columns = a2_columns,                   \
+    .scene = STEM, .label = MS_LABEL, .row_progress = MS_PROGRESS,                      \
+    .derived = MS_DERIVED, .require = MS_REQUIRE, .require_why = MS_REQUIRE_WHY,        \
+    .values = a2_values, .columns = a2_columns,                                         \
     .after_rows = ms_sizes,                                                             \
     .paper_rows = {.keys = VFY_KEYS({"collisions.restitution",                          \
                                      "0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0", "alpha"})},  \
@@ -362,8 +322,9 @@ static const char table1_columns[] =
 
 const vfy_case_desc vfy_ms_table1 = {
     .must_fail = "collisions.restitution=0.95",
-    .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength,
-    .adjust = ms_require, .after_rows = ms_sizes, .values = table1_values,
+    .label = MS_LABEL, .row_progress = MS_PROGRESS, .derived = MS_DERIVED,
+    .require = MS_REQUIRE, .require_why = MS_REQUIRE_WHY, .after_rows = ms_sizes,
+    .values = table1_values,
     .paper_rows = {.rows = table1_paper_rows},
     .quick_rows = {.rows = table1_quick_rows, .sets = MS_QUICK_SETS},
     .metrics = table1_metrics, .checks = table1_checks, .columns = table1_columns,
@@ -445,18 +406,6 @@ static void ms_tail_analyse(const vfy_row *row, double *c, double *f, double *fc
     vfy_fit_tail(c, f, fc, bins, b, 2.0, SIM_LAMBDA_P, &t->A_fit2, &sd2, &K2);
     t->used3 = vfy_fit_tail(c, f, fc, bins, b, VFY_TOL_MS_TAIL_C, SIM_LAMBDA_P, &t->A_fit3,
                             &t->A_sd3, &K3);
-}
-
-/* The tails need a histogram that reaches past c = 4 (ms_require first). */
-static sim_status ms_require_tails(const vfy_row *row, sim_scene *s, char *msg, size_t msglen)
-{
-    sim_status status = ms_require(row, s, msg, msglen);
-    if (status == SIM_OK && (s->steady.bins < 8 || s->steady.c_max < 4.5)) {
-        snprintf(msg, msglen, "%s: the tails need steady.bins >= 8 and steady.c_max >= 4.5",
-                 s->file);
-        status = SIM_EINVAL;
-    }
-    return status;
 }
 
 enum { TAIL_A_THEORY, TAIL_A_FIT2, TAIL_A_FIT3, TAIL_A_SD3, TAIL_A_CI3, TAIL_USED3, TAIL_K,
@@ -569,8 +518,10 @@ static const char tails_columns[] =
 
 const vfy_case_desc vfy_ms_tails = {
     .must_fail = "collisions.restitution=0.9",
-    .label = MS_LABEL, .row_progress = MS_PROGRESS, .derive = ms_strength,
-    .adjust = ms_require_tails, .after_rows = tails_figures,
+    .label = MS_LABEL, .row_progress = MS_PROGRESS, .derived = MS_DERIVED,
+    .require = MS_REQUIRE " steady.bins>=8 steady.c_max>=4.5",
+    .require_why = MS_REQUIRE_WHY "; the tails need steady.bins >= 8 and steady.c_max >= 4.5",
+    .after_rows = tails_figures,
     .paper_rows = {.rows = tails_rows},
     .quick_rows = {.rows = tails_rows, .sets = MS_QUICK_SETS},
     .metrics = tails_metrics, .checks = tails_checks, .columns = tails_columns,

@@ -293,18 +293,6 @@ static const char split_columns[] =
     "wall_s:%.2f candidates=events:%.0f collisions:%.0f normals:%.0f "
     "ns_per_collision:%.1f";
 
-/* The jump row simulates the scene as the references see it (--set only: a
- * wrong solver changes only the time-step rows) with the jump scheme. */
-static sim_status split_adjust(const vfy_row *row, sim_scene *solver, char *msg, size_t msglen)
-{
-    if (!solver->steady.present || solver->scheme != SIM_SCHEME_TIMESTEP) {
-        snprintf(msg, msglen, "%s: the splitting case needs [steady] and scheme = timestep",
-                 solver->file);
-        return SIM_EINVAL;
-    }
-    return vfy_adjust_jump_rows(row, solver, msg, msglen);
-}
-
 /* What a given accuracy costs (the notes and a progress line): for a target
  * error eps of T̄ (relative to T̄), the step each splitting needs (from its
  * error at its smallest resolved step and its order) and the CPU time at that
@@ -450,7 +438,9 @@ static const char *const quick_rows[] = {
     .quick_rows = {.rows = quick_rows,                                                         \
                    .sets = "particles.n=200;particles.ensembles=60;scene.t_end=16;"            \
                            "scene.outputs=11"},                                                \
-    .label = "{case} {label}", .adjust = split_adjust, .metrics = split_metrics,               \
+    .label = "{case} {label}", .require = "[steady] scene.scheme=timestep",                   \
+    .require_why = "the splitting case needs [steady] and scheme = timestep", .jump_rows = 1, \
+    .metrics = split_metrics,                                                                  \
     .checks = split_checks, .columns = split_columns,                                          \
     .row_progress = "{case} {label}: T = {T:%.6f} ± {T_ci:%.6f}, a2 = {a2:%.5f} ± "            \
                     "{a2_ci:%.5f} ({wall_s:%.1f} s)"

@@ -804,20 +804,62 @@ static sim_status observe_only(const char *names, sim_scene *solver, char *msg, 
     return SIM_OK;
 }
 
-/* The description's derived settings for the row (vfy_derive_fn), in a
- * buffer grown until they fit; NULL when out of memory. */
+/* The description's settings derived from value references at the row's
+ * scene ("KEY=REFERENCE[:FORMAT] ...", vfy_case_desc.derived) as "KEY=V;"
+ * appended to *out, a NaN reference's left out; 0, or -1 when out of
+ * memory. */
+static int referenced_sets(const char *words, const vfy_row *row, vfy_text *out)
+{
+    int rc = 0;
+    for (const char *p = words + strspn(words, " "); *p && rc == 0; p += strspn(p, " ")) {
+        const size_t len = strcspn(p, " ");
+        char *word = vfy_aprintf("%.*s", (int)len, p);
+        char *eq = word ? strchr(word, '=') : NULL, *colon = eq ? strchr(eq, ':') : NULL;
+        if (word == NULL)
+            rc = -1;
+        else if (eq != NULL) {   /* a description without '=' is caught by its test */
+            *eq = '\0';
+            if (colon != NULL)
+                *colon = '\0';
+            const double v = vfy_reference_value(eq + 1, &row->scene);
+            if (!isnan(v)) {
+                char value[64];
+                snprintf(value, sizeof value, colon ? colon + 1 : "%.17g", v);
+                rc = vfy_text_printf(out, "%s=%s;", word, value);
+            }
+        }
+        free(word);
+        p += len;
+    }
+    return rc;
+}
+
+/* The description's derived settings for the row: its referenced ones, then
+ * its vfy_derive_fn's (in a buffer grown until they fit); NULL when out of
+ * memory. */
 static char *derived_sets(const vfy_case_run *run, const vfy_row *row)
 {
-    for (size_t len = 512;; len *= 2) {
+    vfy_text out = {0};
+    if (run->d->derived && referenced_sets(run->d->derived, row, &out) != 0) {
+        vfy_text_free(&out);
+        return NULL;
+    }
+    for (size_t len = 512; run->d->derive; len *= 2) {
         char *buf = malloc(len);
-        if (buf == NULL)
+        if (buf == NULL) {
+            vfy_text_free(&out);
             return NULL;
+        }
         buf[0] = '\0';
         run->d->derive(row, buf, len);
-        if (strlen(buf) + 1 < len)
-            return buf;
-        free(buf);   /* it may have been cut short: again, with twice the room */
+        const int fits = strlen(buf) + 1 < len;
+        if (fits)
+            vfy_text_printf(&out, "%s", buf);   /* a failure is vfy_text_take's NULL */
+        free(buf);
+        if (fits)   /* else it may have been cut short: again, with twice the room */
+            break;
     }
+    return vfy_text_take(&out);
 }
 
 /* The row's settings: the sweep's (its sets, an explicit row's label and
@@ -849,6 +891,28 @@ static int sweep_sets(const vfy_sweep *s, vfy_row *row, const char *extra, set_l
     return rc == 0 ? split_sets(extra, l, stem, row) : rc;
 }
 
+/* The description's requirements on the row's scenes, the references' and
+ * the solver's: SIM_OK, or SIM_EINVAL with "FILE: REQUIRE_WHY (needs WORD)"
+ * in msg. */
+static sim_status row_requirements(const vfy_case_run *run, const vfy_row *row, char *msg,
+                                   size_t msglen)
+{
+    const sim_scene *scenes[] = {&row->scene, &row->solver};
+    for (size_t i = 0; i < 2; i++) {
+        char unmet[200];
+        const int holds = vfy_scene_requires(scenes[i], run->d->require, unmet, sizeof unmet);
+        if (holds == 1)
+            continue;
+        if (holds == 0)
+            snprintf(msg, msglen, "%s: %s (needs %s)", scenes[i]->file, run->d->require_why,
+                     unmet);
+        else
+            snprintf(msg, msglen, "case %s: %s", run->c->name, unmet);
+        return SIM_EINVAL;
+    }
+    return SIM_OK;
+}
+
 /* Load row i's scenes: the sweep's settings, `extra` (a variant's, or
  * NULL), derived ones, then --set, then --solver-set. */
 static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row,
@@ -864,7 +928,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     if (status == SIM_OK)
         status = vfy_load_scene_sets(stem, run->o, (const char *const *)l.sets, l.count,
                                      &row->scene, &row->solver, msg, msglen);
-    if (status == SIM_OK && run->d->derive) {
+    if (status == SIM_OK && (run->d->derived || run->d->derive)) {
         derived = derived_sets(run, row);
         if (derived == NULL || split_sets(derived, &l, &stem, row) != 0)
             status = SIM_ENOMEM;
@@ -880,6 +944,10 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
             row->solver.seed = row->scene.seed
                                + run->d->batches.seed_stride * (row->index + 1) + (uint64_t)batch;
     }
+    if (status == SIM_OK && run->d->require)
+        status = row_requirements(run, row, msg, msglen);
+    if (status == SIM_OK && run->d->jump_rows)
+        status = vfy_adjust_jump_rows(row, &row->solver, msg, msglen);
     if (status == SIM_OK && run->d->adjust)
         status = run->d->adjust(row, &row->solver, msg, msglen);
     if (status == SIM_OK && run->d->observes)

@@ -342,7 +342,21 @@ typedef struct vfy_case_desc {
                                            values as "cpu_s@NAME" ... */
     vfy_batches batches;                /* count > 0: the variants are seeded batches */
     const char *row_progress;           /* printed after each row (a template), or NULL */
-    vfy_derive_fn derive;               /* derived settings, or NULL */
+    const char *derived;                /* settings derived from value references
+                                           (references.h) at the row's scene:
+                                           "KEY=REFERENCE[:FORMAT] ..." (FORMAT: a printf
+                                           one, %.17g when none), each applied like a
+                                           vfy_derive_fn's, one whose reference is NaN
+                                           (does not apply) left out; or NULL */
+    vfy_derive_fn derive;               /* derived settings a reference cannot give, or
+                                           NULL */
+    const char *require;                /* what the case needs of each row's scenes (both
+                                           the references' and the solver's):
+                                           vfy_scene_requires words, or NULL */
+    const char *require_why;            /* said when one is unmet: "FILE: REQUIRE_WHY" */
+    int jump_rows;                      /* rows whose text "scheme" is "jump" simulate
+                                           the references' scene with the jump scheme
+                                           (vfy_adjust_jump_rows) */
     vfy_adjust_fn adjust;               /* a row's solver scene changed, or NULL */
     const char *const *values;          /* value references (references.h) every row
                                            takes at its scene (NULL-terminated) */

@@ -113,6 +113,32 @@ static double T_steady_maxwellian_at(const sim_scene *s)
     const ref_heated_params p = vfy_heated_params(s);
     return ref_heated_vhs_T_steady_maxwellian(&p, s->collisions.exponent);
 }
+/* Paper C: the thermostat strength for which the steady T of heated hard
+ * spheres is about T0 = particles.temperature, from the collisional loss
+ * rate dT/dt = gamma (1 - alpha^2)/24 4 pi C (32/sqrt(pi)) T^{3/2} (1 + 3 a2/16)
+ * (unit mass, docs/theory.md §11.4, the first Sonine factor) with each
+ * thermostat's a2: white noise 2 beta = loss (a2 of C.10), Gaussian 2 zeta T0
+ * = loss (C.40), non-Gaussian (2/3) g <|v|> = loss with <|v|> = sqrt(2 T0)
+ * (2/sqrt(pi)) (1 - a2/8) (Eq. 48, a2 of C.76).  NAN for other kernels and
+ * without a heating strength (keep_temperature). */
+static double heating_strength_T0_at(const sim_scene *s)
+{
+    if (!s->heating.present || s->heating.keep_temperature || !s->collisions.present
+        || s->collisions.kernel != SIM_KERNEL_HARD_SPHERES)
+        return NAN;
+    const double alpha = s->collisions.restitution, T0 = s->particles.maxwellian.temperature;
+    const double a2 = s->heating.type == SIM_HEATING_WHITE_NOISE ? a2_white_noise_at(s)
+                      : s->heating.type == SIM_HEATING_GAUSSIAN  ? a2_gaussian_alt_at(s)
+                                                                 : a2_nongaussian_fit_at(s);
+    const double loss = s->collisions.rate * (1.0 - alpha * alpha) / 24.0 * 4.0 * M_PI
+                        * s->collisions.constant * 32.0 / sqrt(M_PI) * pow(T0, 1.5)
+                        * (1.0 + 3.0 * a2 / 16.0);
+    if (s->heating.type == SIM_HEATING_WHITE_NOISE)
+        return 0.5 * loss;
+    if (s->heating.type == SIM_HEATING_GAUSSIAN)
+        return 0.5 * loss / T0;
+    return 1.5 * loss / (sqrt(2.0 * T0) * 2.0 / sqrt(M_PI) * (1.0 - a2 / 8.0));
+}
 static double T_star_le_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_LE); }
 static double T_star_grad_at(const sim_scene *s) { return hs_steady(s, REF_BACKGROUND_GRAD); }
 
@@ -148,6 +174,10 @@ static const vfy_reference registry[] = {
      tail_A_white_noise_at},
     {"A_gaussian", VFY_REF_VALUE, "paper C: Gaussian-thermostat tail amplitude",
      tail_A_gaussian_at},
+    {"heating_strength_T0", VFY_REF_VALUE,
+     "paper C: the thermostat strength that holds hard spheres near T0 (first-Sonine "
+     "loss, a2 of C.10, C.40, C.76)",
+     heating_strength_T0_at},
     {"T_steady_sonine", VFY_REF_VALUE,
      "paper A Ex 5: steady T of the first-Sonine closure (a2 from C.10)", T_steady_sonine_at},
     /* values at the scene's alpha: paper D, d = 3 */

@@ -1017,41 +1017,145 @@ int vfy_scene_key_class(const char *key)
     return VFY_KEY_UNKNOWN;
 }
 
-sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
-                          size_t msglen)
+/* The description of scene key `key` ("section.key") and its section, or
+ * NULL with msg naming what is unknown. */
+static const key_desc *find_key(const char *key, int *sec, char *msg, size_t msglen)
 {
     char section[64], list[1024];
     const char *dot = strchr(key, '.');
     if (dot == NULL || (size_t)(dot - key) >= sizeof section) {
         snprintf(msg, msglen, "%s: not SECTION.KEY", key);
-        return SIM_EINVAL;
+        return NULL;
     }
     snprintf(section, sizeof section, "%.*s", (int)(dot - key), key);
-    const int sec = find_section(section);
-    if (sec < 0) {
+    *sec = find_section(section);
+    if (*sec < 0) {
         section_list(list, sizeof list);
         snprintf(msg, msglen, "%s: unknown section '%s' (allowed %s)", key, section, list);
-        return SIM_EINVAL;
+        return NULL;
     }
-    const key_desc *d = NULL;
-    for (size_t i = 0; i < NKEYS && !d; i++)
-        if (keys[i].section == sec && strcmp(keys[i].name, dot + 1) == 0)
-            d = &keys[i];
-    if (d == NULL) {
-        key_list(sec, list, sizeof list);
-        snprintf(msg, msglen, "%s: unknown key (allowed %s)", key, list);
+    for (size_t i = 0; i < NKEYS; i++)
+        if (keys[i].section == *sec && strcmp(keys[i].name, dot + 1) == 0)
+            return &keys[i];
+    key_list(*sec, list, sizeof list);
+    snprintf(msg, msglen, "%s: unknown key (allowed %s)", key, list);
+    return NULL;
+}
+
+sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
+                          size_t msglen)
+{
+    int sec;
+    const key_desc *d = find_key(key, &sec, msg, msglen);
+    if (d == NULL)
         return SIM_EINVAL;
-    }
     if (d->kind != K_REAL) {
         snprintf(msg, msglen, "%s: not a number key (a rate, constant, strength, "
                  "restitution ...): it cannot be multiplied", key);
         return SIM_EINVAL;
     }
     if (s != NULL && !section_present(s, sec)) {
-        snprintf(msg, msglen, "%s: the scene %s has no [%s] section", key, s->file, section);
+        snprintf(msg, msglen, "%s: the scene %s has no [%s] section", key, s->file,
+                 sections[sec].name);
         return SIM_EINVAL;
     }
     if (s != NULL)
         *value = *(const double *)((const char *)s + d->offset);
     return SIM_OK;
+}
+
+/* Whether requirement word `w` (len bytes) holds in s: 1, 0, or -1 with msg
+ * when the word is malformed. */
+static int requirement_holds(const sim_scene *s, const char *w, size_t len, char *msg,
+                             size_t msglen)
+{
+    char word[160];
+    if (len == 0 || len >= sizeof word) {
+        snprintf(msg, msglen, "requirement '%.*s': empty or too long", (int)len, w);
+        return -1;
+    }
+    snprintf(word, sizeof word, "%.*s", (int)len, w);
+    if (word[0] == '[' || (word[0] == '!' && word[1] == '[')) {   /* a section, present or not */
+        const int absent = word[0] == '!';
+        char name[64];
+        const char *open = word + absent + 1, *close = strchr(open, ']');
+        if (close == NULL || close[1] != '\0' || (size_t)(close - open) >= sizeof name) {
+            snprintf(msg, msglen, "requirement '%s': not [SECTION] or ![SECTION]", word);
+            return -1;
+        }
+        snprintf(name, sizeof name, "%.*s", (int)(close - open), open);
+        const int sec = find_section(name);
+        if (sec < 0) {
+            snprintf(msg, msglen, "requirement '%s': unknown section", word);
+            return -1;
+        }
+        return section_present(s, sec) != absent;
+    }
+    const size_t klen = strcspn(word, "=<>");
+    const char *op = word + klen, *rhs = op + (op[0] != '\0') + (op[1] == '=');
+    if (op[0] == '\0' || *rhs == '\0') {
+        snprintf(msg, msglen, "requirement '%s': not KEY=VALUE, KEY>X, KEY>=X, KEY<X or "
+                 "KEY<=X", word);
+        return -1;
+    }
+    op = op[0] == '=' ? "=" : op[0] == '>' ? (op[1] == '=' ? ">=" : ">")
+                                           : (op[1] == '=' ? "<=" : "<");
+    word[klen] = '\0';
+    double x;
+    if (strcmp(word, "grain_mass") == 0) {
+        x = sim_scene_grain_mass(s);
+    } else {
+        int sec;
+        const key_desc *d = find_key(word, &sec, msg, msglen);
+        if (d == NULL)
+            return -1;
+        const char *field = (const char *)s + d->offset;
+        if (d->kind == K_WORD) {
+            if (strcmp(op, "=") != 0) {
+                snprintf(msg, msglen, "requirement on %s: a word key takes KEY=WORD", word);
+                return -1;
+            }
+            for (const word_desc *wd = d->words; wd->word; wd++)
+                if (strcmp(wd->word, rhs) == 0)
+                    return section_present(s, sec) && *(const int *)field == wd->value;
+            snprintf(msg, msglen, "requirement on %s: '%s' is none of its words", word, rhs);
+            return -1;
+        }
+        if (d->kind == K_REAL)
+            x = *(const double *)field;
+        else if (d->kind == K_SIZE)
+            x = (double)*(const size_t *)field;
+        else {
+            snprintf(msg, msglen, "requirement on %s: only number and word keys", word);
+            return -1;
+        }
+        if (!section_present(s, sec))
+            return 0;
+    }
+    char *end;
+    const double v = strtod(rhs, &end);
+    if (end == rhs || *end != '\0') {
+        snprintf(msg, msglen, "requirement on %s: '%s' is not a number", word, rhs);
+        return -1;
+    }
+    return strcmp(op, "=") == 0    ? x == v
+           : strcmp(op, ">") == 0  ? x > v
+           : strcmp(op, ">=") == 0 ? x >= v
+           : strcmp(op, "<") == 0  ? x < v
+                                   : x <= v;
+}
+
+int vfy_scene_requires(const sim_scene *s, const char *words, char *msg, size_t msglen)
+{
+    for (const char *p = words + strspn(words, " "); *p; p += strspn(p, " ")) {
+        const size_t len = strcspn(p, " ");
+        const int holds = requirement_holds(s, p, len, msg, msglen);
+        if (holds <= 0) {
+            if (holds == 0)
+                snprintf(msg, msglen, "%.*s", (int)len, p);
+            return holds;
+        }
+        p += len;
+    }
+    return 1;
 }

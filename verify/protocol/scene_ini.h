@@ -90,6 +90,16 @@ int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t 
 sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
                           size_t msglen);
 
+/* Whether scene s meets every requirement in `words` (space-separated, a
+ * case's needs of its scene): "[steady]" (the section is present),
+ * "![heating]" (absent), "KEY=WORD" for a word key ("scene.scheme=timestep",
+ * "particles.zero_momentum=true"), "KEY=X", "KEY>X", "KEY>=X", "KEY<X",
+ * "KEY<=X" for a number key ("steady.bins>=8"; a key of an absent section
+ * never holds), and "grain_mass=X" (particles.mass, or mass1 for two
+ * Maxwellians).  Returns 1; 0 with the first unmet word in msg; -1 with
+ * msg saying what is malformed in a word. */
+int vfy_scene_requires(const sim_scene *s, const char *words, char *msg, size_t msglen);
+
 /* The class of scene key `key` ("section.key", docs/scenes.md): physics (a
  * solver must honour it or refuse the scene), algorithm (an engine choice a
  * solver may replace with its own, saying so in its result's
