@@ -270,6 +270,25 @@ static void test_templates(void **state)
     run.o = &paper;
     vfy_expand(buf, sizeof buf, "a{at_quick: b}{at_paper: c}", &run, NULL);
     assert_string_equal(buf, "a c");
+    /* scene keys by name, the row's or (at the case's level) the first row's, a word
+     * key as its word; the step and output interval; text on a condition */
+    sim_scene_defaults(&rows[0].solver);
+    sim_scene_defaults(&rows[1].solver);
+    rows[0].solver.particles.n = 2500;
+    rows[0].solver.t_end = 18;
+    rows[0].solver.outputs = 37;
+    rows[0].solver.splitting = SIM_SPLIT_STRANG;
+    rows[1].solver.particles.n = 64;
+    rows[1].solver.splitting = SIM_SPLIT_EULER;
+    const char *keys = "n = {particles.n}, t in [0, {scene.t_end:%g}] every "
+                       "{scene.output_interval:%g}, {scene.splitting} "
+                       "({if:scene.splitting=strang:Strang}{if:scene.splitting=euler:Euler}"
+                       "{if:particles.n=64:, n is 64}), {steady.bins}, {no.such}";
+    vfy_expand(buf, sizeof buf, keys, &run, NULL);
+    assert_string_equal(buf, "n = 2500, t in [0, 18] every 0.5, strang (Strang), nan, nan");
+    vfy_expand(buf, sizeof buf, keys, &run, &rows[1]);
+    assert_true(strncmp(buf, "n = 64, ", 8) == 0);
+    assert_non_null(strstr(buf, "euler (Euler, n is 64)"));
     free_run(&run);
 }
 

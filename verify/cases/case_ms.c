@@ -56,6 +56,13 @@
     "taken with Student's t for N - 1 = {N_dof} degrees of freedom (t = {t_quantile:%.2f} " \
     "instead of 3.2 standard errors: the half-widths come from N = {N} "          \
     "ensembles)."
+/* The sizes line of the notes, of the first row's scene. */
+#define MS_SIZES                                                                       \
+    "n = {particles.n}, N = {particles.ensembles}, h = {scene.step:%g} ("               \
+    "{if:scene.splitting=strang:Strang splitting}{if:scene.splitting=euler:Euler "      \
+    "splitting}), steady averages over the output times t in [{steady.from:%g}, "       \
+    "{scene.t_end:%g}] every {scene.output_interval:%g}, {steady.pairs} pairs per "     \
+    "sample for mu2 and mu4"
 #define MS_PROGRESS                                                                    \
     MS_LABEL ": a2 = {a2:%.5f} ± {a2_ci:%.5f}, mu4 = {mu4:%.4f} ± {mu4_ci:%.4f}, T = "  \
              "{T:%.4f} ({wall_s:%.1f} s)"
@@ -67,29 +74,6 @@
 #define MS_DERIVED "heating.strength=heating_strength_T0"
 #define MS_REQUIRE "[steady] scene.scheme=timestep"
 #define MS_REQUIRE_WHY "paper C's cases need [steady] and scheme = timestep"
-
-/* After the rows: the sizes line of the notes ({sizes}) and N with its
- * Student's t quantile ({N}, {N_dof}, {t_quantile}), of the first row. */
-static sim_status ms_sizes(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
-{
-    (void)r;
-    const sim_scene *s = &run->rows[0].solver;
-    char sizes[400];
-    snprintf(sizes, sizeof sizes, "n = %zu, N = %zu, h = %g (%s), steady averages over the "
-             "output times t in [%g, %g] every %g, %zu pairs per sample for mu2 and mu4",
-             s->particles.n, s->particles.ensembles, vfy_scene_step(s),
-             s->splitting == SIM_SPLIT_STRANG ? "Strang splitting" : "Euler splitting",
-             s->steady.from, s->t_end, sim_scene_output_time(s, 1), s->steady.pairs);
-    const double N = (double)s->particles.ensembles;
-    if (vfy_run_set_text(run, "sizes", sizes) != 0 || vfy_values_set(&run->values, "N", N) != 0
-        || vfy_values_set(&run->values, "N_dof", N - 1.0) != 0
-        || vfy_values_set(&run->values, "t_quantile", vfy_student_t(VFY_STUDENT_P, N - 1.0))
-               != 0) {
-        snprintf(msg, msglen, "%s: no room for the sizes text", run->c->name);
-        return SIM_EINVAL;
-    }
-    return SIM_OK;
-}
 
 /* ---------------------------------------------------- a2 against alpha */
 
@@ -184,7 +168,8 @@ static const char a2_columns[] =
     "ns_per_candidate=ns_per_event:%.1f";
 
 #define A2_NOTES(CHECKS)                                                               \
-    "{comment}; {sizes}.\n\nEach row is one steady state ({at_engine:time-step scheme; pairs " \
+    "{comment}; " MS_SIZES ".\n\nEach row is one steady state ({at_engine:time-step "     \
+    "scheme; pairs "                                                                   \
     "accepted by |g|, equal in distribution to paper C's contact rule, docs/theory.md §3.2; " \
     "the thermostat applied lazily or as one global scaling}{at_solver:simulated by the "  \
     "solver the first line names}). a2, a3 = time averages of the reduced cumulants; _ci = 3.2 x the standard " \
@@ -205,7 +190,6 @@ static const char a2_columns[] =
     .scene = STEM, .label = MS_LABEL, .row_progress = MS_PROGRESS,                      \
     .derived = MS_DERIVED, .require = MS_REQUIRE, .require_why = MS_REQUIRE_WHY,        \
     .values = a2_values, .columns = a2_columns,                                         \
-    .after_rows = ms_sizes,                                                             \
     .paper_rows = {.keys = VFY_KEYS({"collisions.restitution",                          \
                                      "0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0", "alpha"})},  \
     .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", QUICK_ALPHA, "alpha"}),  \
@@ -323,7 +307,7 @@ static const char table1_columns[] =
 const vfy_case_desc vfy_ms_table1 = {
     .must_fail = "collisions.restitution=0.95",
     .label = MS_LABEL, .row_progress = MS_PROGRESS, .derived = MS_DERIVED,
-    .require = MS_REQUIRE, .require_why = MS_REQUIRE_WHY, .after_rows = ms_sizes,
+    .require = MS_REQUIRE, .require_why = MS_REQUIRE_WHY,
     .values = table1_values,
     .paper_rows = {.rows = table1_paper_rows},
     .quick_rows = {.rows = table1_quick_rows, .sets = MS_QUICK_SETS},
@@ -331,7 +315,7 @@ const vfy_case_desc vfy_ms_table1 = {
     .title = "{case}: paper C Table 1, mu4 direct and through the exact steady relations "
              "({size} sizes)",
     .notes =
-        "{comment}; {sizes}.\n\nmu4_direct: pair sampling of Phi4 (paper C Eqs. (66), (67)); "
+        "{comment}; " MS_SIZES ".\n\nmu4_direct: pair sampling of Phi4 (paper C Eqs. (66), (67)); "
         "mu4_indirect: the thermostat's exact steady relation evaluated per sample with the "
         "sampled mu2 — white noise mu4 = 5 mu2 (Eq. (23)), Gaussian mu4 = 5 (1 + a2) mu2 "
         "(Eq. (38)), non-Gaussian mu4 = 2 mu2 <c^3>/<c> (Eq. (44)). _ci = 3.2 x the "
@@ -429,10 +413,11 @@ static double tail_metric(const vfy_case_run *run, const vfy_row *row, const vfy
 }
 
 /* After the rows: each row's G(c) beside the Maxwellian's (paper C Figures
- * 3, 7), then the notes' sizes. */
+ * 3, 7). */
 static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
-    sim_status status = ms_sizes(run, r, msg, msglen);
+    (void)r;
+    sim_status status = SIM_OK;
     for (size_t i = 0; i < run->nrows && status == SIM_OK; i++) {
         const vfy_row *row = &run->rows[i];
         const size_t bins = row->solver.steady.bins;
@@ -527,7 +512,7 @@ const vfy_case_desc vfy_ms_tails = {
     .metrics = tails_metrics, .checks = tails_checks, .columns = tails_columns,
     .title = "{case}: paper C high-energy tails ({size} sizes)",
     .notes =
-        "{comment}; {sizes}.\n\nf(c) = the reduced speed distribution averaged over shells of "
+        "{comment}; " MS_SIZES ".\n\nf(c) = the reduced speed distribution averaged over shells of "
         "width c_max/bins (steady.h). Theory (paper C): white noise f ~ K exp(-A c^1.5), A = "
         "(2/3)(2 d beta_1/mu2)^(1/2) (Eq. (36)); Gaussian f ~ K exp(-A c), A = d beta_1/mu2 "
         "(Eq. (42)); A_theory uses the simulated mu2, as the paper does. A_fit_c2, A_fit_c3: "

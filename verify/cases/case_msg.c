@@ -388,15 +388,12 @@ static const vfy_check_spec sonine_case_checks[] = {
      .rule = vfy_rule_absolute, .value = "a2_lin_1", .x = 0.0, .plus = "a2_lin_1_ci"},
     {.name = NULL}};
 
-/* After the rows: the linear-response table, the sizes line, and D Fig. 1:
+/* After the rows: the linear-response table and D Fig. 1:
  * kappa'(t)/kappa0 = -(64/(75 sqrt(pi))) <c^2 c_x>(t)/eps* from the rows'
  * q_x(t) at T = T0 (q_x = (m/2) v0^3 <c^2 c_x>), every row in one plot. */
-static sim_status msg_sizes(vfy_case_run *run);
 static sim_status msg_kappa_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
 {
     sim_status status = msg_linear(run, r, msg, msglen);
-    if (status == SIM_OK)
-        status = msg_sizes(run);
     const size_t M = run->rows[0].res.outputs, rows = run->nrows;
     double *mean = malloc(2 * rows * M * sizeof *mean), *ci = mean + rows * M;
     size_t *n = calloc(rows, sizeof *n);
@@ -442,34 +439,6 @@ static sim_status msg_kappa_after(vfy_case_run *run, vfy_report *r, char *msg, s
     free(n);
     free(label);
     free(labels);
-    return status;
-}
-
-/* The sizes line of the notes ({sizes}) and N with its Student's t
- * quantile ({N}, {t_quantile}), of the first row. */
-static sim_status msg_sizes(vfy_case_run *run)
-{
-    const sim_scene *s = &run->rows[0].solver;
-    char sizes[400];
-    snprintf(sizes, sizeof sizes, "n = %zu, N = %zu, dt = %g tau, steady averages over t in "
-             "[%g, %g] tau every %g tau (paper D: one system of n = 2x10^5, 200 realizations, "
-             "dt = 0.003 tau)", s->particles.n, s->particles.ensembles, s->dt, s->steady.from,
-             s->t_end, sim_scene_output_time(s, 1));
-    const double N = (double)s->particles.ensembles;
-    if (vfy_run_set_text(run, "sizes", sizes) != 0 || vfy_values_set(&run->values, "N", N) != 0
-        || vfy_values_set(&run->values, "t_quantile", vfy_student_t(VFY_STUDENT_P, N - 1.0))
-               != 0)
-        return SIM_ENOMEM;
-    return SIM_OK;
-}
-
-static sim_status msg_sonine_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
-{
-    sim_status status = msg_linear(run, r, msg, msglen);
-    if (status == SIM_OK && msg_sizes(run) != SIM_OK) {
-        snprintf(msg, msglen, "out of memory");
-        status = SIM_ENOMEM;
-    }
     return status;
 }
 
@@ -543,7 +512,7 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
                                          size_t msglen)
 {
     (void)r;
-    sim_status status = msg_sizes(run);
+    sim_status status = SIM_OK;
     const size_t bins = run->rows[0].solver.steady.bins, rows = run->nrows;
     double *buf = malloc((7 * bins + rows * bins) * sizeof *buf);
     const double **betas = calloc(2 * rows, sizeof *betas);   /* then their error bars */
@@ -618,8 +587,18 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
 
 static const char *const kappa_values[] = {"kappa_prime_sonine", "kappa_prime_modified",
                                            "kappa_sonine", "mu_star_sonine", NULL};
-#define MSG_COMMON(ROWS, QUICK)                                                             .scene = "msg", .label = MSG_LABEL, .row_progress = MSG_PROGRESS,                       .paper_rows = {.rows = ROWS}, .quick_rows = {.rows = QUICK, .sets = MSG_QUICK_SETS}
-#define MSG_T_NOTE                                                                         "_ci = 3.2 standard errors over the N = {N} independent ensembles; the checks use "     "_ci_t, Student's t for N - 1 degrees of freedom ({t_quantile:%.2f} standard errors)"
+#define MSG_COMMON(ROWS, QUICK)                                                            \
+    .scene = "msg", .label = MSG_LABEL, .row_progress = MSG_PROGRESS,                      \
+    .paper_rows = {.rows = ROWS}, .quick_rows = {.rows = QUICK, .sets = MSG_QUICK_SETS}
+/* The sizes line of the notes, of the first row's scene, and how the checks use N. */
+#define MSG_SIZES                                                                          \
+    "n = {particles.n}, N = {particles.ensembles}, dt = {scene.dt:%g} tau, steady "         \
+    "averages over t in [{steady.from:%g}, {scene.t_end:%g}] tau every "                   \
+    "{scene.output_interval:%g} tau (paper D: one system of n = 2x10^5, 200 "              \
+    "realizations, dt = 0.003 tau)"
+#define MSG_T_NOTE                                                                         \
+    "_ci = 3.2 standard errors over the N = {N} independent ensembles; the checks use "     \
+    "_ci_t, Student's t for N - 1 degrees of freedom ({t_quantile:%.2f} standard errors)"
 
 const vfy_case_desc vfy_msg_kappa = {
     .must_fail = "heat-flux.strength=1.05 collisions.constant=1.05",
@@ -640,7 +619,7 @@ const vfy_case_desc vfy_msg_kappa = {
     .title = "{case}: paper D Fig. 3, the modified thermal conductivity kappa'/kappa0 "
              "against alpha ({size} sizes)",
     .notes =
-        "{comment}; {sizes}.\n\nkappa_prime = kappa'/kappa0 = -q_x/(T eps kappa0), the time "
+        "{comment}; " MSG_SIZES ".\n\nkappa_prime = kappa'/kappa0 = -q_x/(T eps kappa0), the time "
         "average of the steady state (kappa0 the elastic first-Sonine conductivity, D Eq. "
         "2.47), per unit of the case's force; kappa_prime_sonine, kappa_sonine, mu_star_sonine: "
         "the first Sonine approximation (D Eqs. 2.42-2.47, a2 from C.40); "
@@ -661,7 +640,7 @@ const vfy_case_desc vfy_msg_sonine = {
     .must_fail = "collisions.restitution=0.95",
     .power_keys = "heat-flux.strength=1.05",
     MSG_COMMON(paper_rows, sonine_quick_rows), .metrics = sonine_metrics, .checks = sonine_checks,
-    .case_checks = sonine_case_checks, .after_rows = msg_sonine_after,
+    .case_checks = sonine_case_checks, .after_rows = msg_linear,
     .columns = "alpha:%.2f eps_star:%g b1=b1c:%.4f b1_ci=b1c_ci:%.4f b2=b2c:%.4f "
                "b2_ci=b2c_ci:%.4f b3=b3c:%.4f b3_ci=b3c_ci:%.4f b1_x=b1xc:%.4f "
                "b1_x_ci=b1xc_ci:%.4f b2_x=b2xc:%.4f b2_x_ci=b2xc_ci:%.4f b3_x=b3xc:%.4f "
@@ -676,7 +655,7 @@ const vfy_case_desc vfy_msg_sonine = {
     .title = "{case}: paper D Figs. 2, 4, the Sonine coefficients b'_1, b'_2, b'_3 against "
              "alpha ({size} sizes)",
     .notes =
-        "{comment}; {sizes}.\n\nb1..b3 = b'_k = P_k <c_x L_k^(3/2)(c^2)>/eps* (D Eq. 3.10), "
+        "{comment}; " MSG_SIZES ".\n\nb1..b3 = b'_k = P_k <c_x L_k^(3/2)(c^2)>/eps* (D Eq. 3.10), "
         "b1_x..b3_x = Q_k <c_x L_k^(1/2)(c_x^2)>/eps* (D Eq. 3.12), time averages of the "
         "steady state per unit of the case's force; z1..z3 = |b_k - b_k_x| over the "
         "quadrature sum of their half-widths (_ci_t); higher_over_b1 = max(|b'_2|, |b'_3|)/b'_1, "
@@ -699,7 +678,7 @@ const vfy_case_desc vfy_msg_distribution = {
     .title = "{case}: paper D Figs. 5-7, the first-order distribution phi(c_x^2) and the "
              "heat flux by c_x ({size} sizes)",
     .notes =
-        "{comment}; {sizes}.\n\ninner = the part of b'_1 from the c_x estimator, hence of the "
+        "{comment}; " MSG_SIZES ".\n\ninner = the part of b'_1 from the c_x estimator, hence of the "
         "heat flux (D Eq. 4.6: beta_1(6)/b'_1), carried by particles with c_x^2 <= 6: "
         "1 - b1_x_outer/b1_x; paper D prints 87% at alpha = 1 and 66% at alpha = 0.3. Figures "
         "{case}-phi-ALPHA: phi(c_x^2) = sqrt(pi) e^(c_x^2) g1(c_x)/c_x (D Eqs. 4.3-4.5; g1 the "

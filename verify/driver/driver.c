@@ -354,20 +354,82 @@ int vfy_run_second_notes(vfy_case_run *run, const char *fmt, ...)
     return run->second_notes != NULL ? 0 : -1;
 }
 
-static const char *row_string(const vfy_row *row, const char *name)
+/* The solver scene whose keys a name "SECTION.KEY" reads: the row's, or at
+ * the case's level the first row's; NULL before the rows. */
+static const sim_scene *keys_scene(const vfy_case_run *run, const vfy_row *row)
+{
+    if (row != NULL)
+        return &row->solver;
+    return run->rows != NULL && run->nrows > 0 ? &run->rows[0].solver : NULL;
+}
+
+/* Scene key `name` of the row (keys_scene) as a number (1) or a word (2), or
+ * 0; besides the keys, "scene.step" (the time step the scheme takes, 0 for
+ * the jump scheme) and "scene.output_interval" (t_end/(outputs - 1)). */
+static int scene_key(const vfy_case_run *run, const vfy_row *row, const char *name, double *v,
+                     const char **word)
+{
+    const sim_scene *s = strchr(name, '.') ? keys_scene(run, row) : NULL;
+    if (s == NULL)
+        return 0;
+    if (strcmp(name, "scene.step") == 0) {
+        *v = vfy_scene_step(s);
+        return 1;
+    }
+    if (strcmp(name, "scene.output_interval") == 0) {
+        *v = sim_scene_output_time(s, 1);
+        return 1;
+    }
+    return vfy_scene_key_value(s, name, v, word);
+}
+
+static const char *row_string(const vfy_case_run *run, const vfy_row *row, const char *name)
 {
     if (row != NULL && strcmp(name, "label") == 0)
         return row->label ? row->label : "";
     if (row != NULL && strcmp(name, "scene") == 0)
         return row->stem ? row->stem : "";
+    const char *word;
+    double v;
+    if (scene_key(run, row, name, &v, &word) == 2)
+        return word;
     return vfy_row_text(row, name);
 }
 
 static double lookup(const vfy_case_run *run, const vfy_row *row, const char *name)
 {
+    double v;
+    const char *word;
     if (row != NULL && vfy_values_has(&row->values, name))
         return vfy_values_get(&row->values, name);
+    if (scene_key(run, row, name, &v, &word) == 1)
+        return v;
     return vfy_values_get(&run->values, name);
+}
+
+/* "{if:NAME=WORD:TEXT}": whether NAME's text (a row's or the case's, a word
+ * key's) or number equals WORD. */
+static int condition_holds(const vfy_case_run *run, const vfy_row *row, const char *cond,
+                           size_t len)
+{
+    const char *eq = memchr(cond, '=', len);
+    if (eq == NULL)
+        return 0;
+    char *name = vfy_aprintf("%.*s", (int)(eq - cond), cond);
+    char *want = vfy_aprintf("%.*s", (int)(cond + len - eq - 1), eq + 1);
+    int holds = 0;
+    if (name != NULL && want != NULL) {
+        const char *text = row_string(run, row, name);
+        if (text == NULL)
+            text = run_string(run, name);
+        char *end;
+        const double x = strtod(want, &end);
+        holds = text != NULL ? strcmp(text, want) == 0
+                             : end != want && *end == '\0' && lookup(run, row, name) == x;
+    }
+    free(name);
+    free(want);
+    return holds;
 }
 
 /* One "{...}" of a template (p at its '{', close at its '}') onto out. */
@@ -384,6 +446,12 @@ static int expand_one(vfy_text *out, const char *p, const char *close,
         return at_engine != vfy_external(run->o)
                    ? vfy_text_append(out, p + 11, (size_t)(close - p - 11))
                    : 0;
+    if (strncmp(p + 1, "if:", 3) == 0) {   /* text on a condition */
+        const char *cond = p + 4, *text = memchr(cond, ':', (size_t)(close - cond));
+        return text != NULL && condition_holds(run, row, cond, (size_t)(text - cond))
+                   ? vfy_text_append(out, text + 1, (size_t)(close - text - 1))
+                   : 0;
+    }
     const size_t n = (size_t)(close - p - 1);
     const char *colon = memchr(p + 1, ':', n);
     char *name = vfy_aprintf("%.*s", (int)(colon ? (size_t)(colon - p - 1) : n), p + 1);
@@ -393,7 +461,7 @@ static int expand_one(vfy_text *out, const char *p, const char *close,
         free(fmt);
         return -1;
     }
-    const char *s = row_string(row, name);
+    const char *s = row_string(run, row, name);
     if (s == NULL)
         s = run_string(run, name);
     const double v = lookup(run, row, name);
@@ -1268,7 +1336,7 @@ static int row_cells(vfy_case_run *run, const vfy_row *row)
     for (const vfy_column *col = run->columns; col < run->columns + run->ncols; col++) {
         const char *name = col->value ? col->value : col->header;
         if (strcmp(col->format, "%s") == 0) {
-            const char *text = row_string(row, name);
+            const char *text = row_string(run, row, name);
             rc |= vfy_table_cell(&run->table, "%s", text ? text : "");
         } else {
             double v = lookup(run, row, name);
@@ -1840,6 +1908,13 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     vfy_values_set(&run->values, "wall_total", wall);
     vfy_values_set(&run->values, "rows", (double)run->nrows);
     vfy_values_set(&run->values, "outputs", (double)last->res.outputs);
+    /* the first row's ensembles, the degrees of freedom and Student's t quantile of
+       the half-widths _ci_t (the notes of cases whose rows share N) */
+    const double N = (double)run->rows[0].solver.particles.ensembles;
+    vfy_values_set(&run->values, "N", N);
+    vfy_values_set(&run->values, "N_dof", N - 1.0);
+    vfy_values_set(&run->values, "t_quantile",
+                   N >= 2.0 ? vfy_student_t(VFY_STUDENT_P, N - 1.0) : NAN);
     if (run_provenance(run) != 0) {
         snprintf(msg, msglen, "out of memory");
         return SIM_ENOMEM;

@@ -16,7 +16,13 @@
  *     steady averages by name with _ci ("a2", "a2_ci"), paper columns (a value printed by the paper for this row), the
  *     metrics and the values checks define, and the cost values cpu_s, wall_s,
  *     events, ns_per_event, collisions, background, violations, normals;
- *   - the case's: wall_total (all rows), outputs, rows, and what hooks set.
+ *   - the case's: wall_total (all rows), outputs, rows, N (the first row's
+ *     ensembles), N_dof = N - 1 and t_quantile (Student's t for N_dof, the
+ *     half-widths _ci_t), and what hooks set;
+ *   - a scene key by its name, "particles.n", "scene.splitting" (a word key
+ *     is text): the row's solver scene, the first row's at the case's level;
+ *     and "scene.step" (the time step the scheme takes) and
+ *     "scene.output_interval".
  * Series (one value per output time) are the result's observables by their
  * column names ("T", "T_raw", "ux", ...) and the scene's references by name
  * ("T_exact", ...; scene_refs.h).
@@ -28,7 +34,9 @@
  * {comment} (the provenance line) are always there, and {label} and
  * {scene} (the stem of its scene file) in a row;
  * "{at_quick:TEXT}" is TEXT at quick sizes and nothing at paper sizes,
- * "{at_paper:TEXT}" the converse; "{at_engine:TEXT}" is TEXT when the
+ * "{at_paper:TEXT}" the converse; "{if:NAME=WORD:TEXT}" is TEXT when
+ * NAME's text or number is WORD ("{if:scene.splitting=strang:Strang}");
+ * "{at_engine:TEXT}" is TEXT when the
  * built-in engine simulated (how it did), "{at_solver:TEXT}" when an
  * external solver did; a hook's case texts (vfy_run_set_text) by name;
  * a value an external solver did not report prints "(not reported)".

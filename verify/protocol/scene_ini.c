@@ -1064,6 +1064,40 @@ sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, ch
     return SIM_OK;
 }
 
+int vfy_scene_key_value(const sim_scene *s, const char *key, double *value, const char **word)
+{
+    int sec;
+    char msg[8];
+    const key_desc *d = strchr(key, '.') ? find_key(key, &sec, msg, sizeof msg) : NULL;
+    if (d == NULL || !section_present(s, sec))
+        return 0;
+    const char *field = (const char *)s + d->offset;
+    switch (d->kind) {
+    case K_REAL:
+        *value = *(const double *)field;
+        return 1;
+    case K_SIZE:
+        *value = (double)*(const size_t *)field;
+        return 1;
+    case K_U64:
+        *value = (double)*(const uint64_t *)field;
+        return 1;
+    case K_TEXT:
+        *word = field;
+        return 2;
+    case K_WORD:
+        for (const word_desc *wd = d->words; wd->word; wd++)
+            if (*(const int *)field == wd->value) {
+                *word = wd->word;
+                return 2;
+            }
+        return 0;
+    case K_VEC3:
+        return 0;
+    }
+    return 0;
+}
+
 /* Whether requirement word `w` (len bytes) holds in s: 1, 0, or -1 with msg
  * when the word is malformed. */
 static int requirement_holds(const sim_scene *s, const char *w, size_t len, char *msg,

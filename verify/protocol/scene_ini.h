@@ -90,6 +90,12 @@ int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t 
 sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
                           size_t msglen);
 
+/* The value of scene key `key` ("section.key") in s, set or defaulted: 1
+ * with a number key's value in *value (a real, a count, the seed), 2 with a
+ * word or text key's text in *word ("strang"; valid while s is), 0 when
+ * there is no such key, it is a vector, or its section is absent. */
+int vfy_scene_key_value(const sim_scene *s, const char *key, double *value, const char **word);
+
 /* Whether scene s meets every requirement in `words` (space-separated, a
  * case's needs of its scene): "[steady]" (the section is present),
  * "![heating]" (absent), "KEY=WORD" for a word key ("scene.scheme=timestep",
