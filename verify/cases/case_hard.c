@@ -750,14 +750,6 @@ const vfy_case_desc vfy_hard_dissipation = {
 
 /* The scene's own alpha = 0.1, beta = 30; quick: n = 2000, N = 16, 4000
  * pairs (t in [0, 1], samples t >= 0.25). */
-static sim_status tails_c_max(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
-{
-    (void)r;
-    (void)msg;
-    (void)msglen;
-    vfy_values_set(&run->values, "c_max", run->rows[0].solver.steady.c_max);
-    return SIM_OK;
-}
 const vfy_case_desc vfy_hard_tails = {
     .must_fail = "heating.strength=1.05",
     .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"})},
@@ -765,13 +757,13 @@ const vfy_case_desc vfy_hard_tails = {
                    .sets = "particles.n=2000;particles.ensembles=16;steady.pairs=4000"},
     .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, WHITE_REQUIRE,
     .values = white_values, .metrics = tails_metrics, .checks = tails_checks,
-    .columns = tails_columns, .after_rows = tails_c_max,
+    .columns = tails_columns,
     .title = HARD_TITLE("paper A Ex 7, growing majorant and overpopulated tail"),
     .notes = HARD_NOTES(
         "Paper A Ex 7 (docs/theory.md §11.5): hard spheres, alpha = 0.1, beta = 30, gamma = 16, C = 1/(4 "
         "pi), T0 = 1, heated to T about 3: the majorant U_max grows and the tail fills (f ~ "
         "exp(-A c^{{3/2})). " WHITE_NOTES " P_tail: the steady probability of c >= 3 (reduced "
-        "speed) from the shells of the histogram (to c = {c_max:%g}), against the first "
+        "speed) from the shells of the histogram (to c = {steady.c_max:%g}), against the first "
         "Sonine approximation with a2 of (C.10) (P_tail_sonine) and the Maxwellian "
         "(P_tail_maxwell); the tail must reach at least P_tail_sonine - P_tail_ci.")};
 
@@ -1098,21 +1090,12 @@ static const vfy_check_spec stiff_checks[] = {
 static const char stiff_columns[] =
     "model=model_name:%s K:%g method=method_name:%s status:%s T_end:%.10g T_steady:%.10g "
     "rel_dev:%.2g message:%s";
-static sim_status stiff_grid(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
-{
-    (void)r;
-    (void)msg;
-    (void)msglen;
-    vfy_values_set(&run->values, "ode_outputs", (double)run->rows[0].scene.outputs);
-    vfy_values_set(&run->values, "ode_t_end", run->rows[0].scene.t_end);
-    return SIM_OK;
-}
 const vfy_case_desc vfy_hard_stiff = {
     .paper_rows = {.rows = stiff_rows}, .quick_rows = {.rows = stiff_rows},
     .no_simulation = 1,
     HARD_REQUIRE("[background] background.kernel=hard-spheres", "needs a hard-sphere [background]"),
     .checks = stiff_checks,
-    .columns = stiff_columns, .after_rows = stiff_grid,
+    .columns = stiff_columns,
     .title = HARD_TITLE("stiff references through CVODE"),
     .notes = HARD_NOTES(
         "Paper B's hard-sphere closures, local equilibrium (B.21) and Grad (B.22), with K = "
@@ -1120,7 +1103,7 @@ const vfy_case_desc vfy_hard_stiff = {
         "loss), and the Maxwell-kernel moment equations (B.13) with Kn = 100 and 1e-4 against "
         "their closed form (B.15), integrated with CVODE (rtol 1e-10, atol 1e-12; BDF with "
         "Newton, Adams with fixed-point iteration, and Adams with at most " TIGHT_STEPS_TEXT
-        " steps per output interval) on {ode_outputs} output times of [0, {ode_t_end:%g}]. "
+        " steps per output interval) on {scene.outputs} output times of [0, {scene.t_end:%g}]. "
         "T_steady: the closure's steady state by GSL's Brent root finder, or (B.18). Verdict: "
         "success with every value finite, T > 0, T(t_end) within 1e-06 of T_steady (and the "
         "whole trajectory within 1e-06 of the closed form); BDF and Adams must succeed, the "
@@ -1134,13 +1117,15 @@ const vfy_case_desc vfy_hard_stiff = {
  * majorant is recomputed from the synchronised system at each output time
  * only, and from T0 = 1e8 (U_max about 8e4, while T falls below 10^6 within
  * t = 0.002) the first interval is nearly all fictitious candidates, about
- * 4e7 (n - 1)/255 per unit time. */
+ * 4e7 (n - 1)/255 per unit time.  The rate = 1e6 row runs the same events as
+ * the scene's rate = 4 in t_end scaled by 4/1e6: 8 -> 3.2e-5. */
 #define MAXWELL_SIZES(N) "particles.n=64;particles.ensembles=" N ";scene.outputs=41"
 #define HS_SIZES(N, M) "particles.n=256;particles.ensembles=" N ";scene.outputs=" M ";scene.t_end=6"
 #define EXTREME_ROWS(NM, NH)                                                            \
     {"alpha=1e-3: scene=hard-extreme;collisions.restitution=1e-3;" MAXWELL_SIZES(NM),     \
      "alpha=1: scene=hard-extreme;collisions.restitution=1;" MAXWELL_SIZES(NM),           \
-     "rate=1e6: scene=hard-extreme;$rate=1e6;" MAXWELL_SIZES(NM),                         \
+     "rate=1e6: scene=hard-extreme;collisions.rate=1e6;scene.t_end=3.2e-5;"               \
+     MAXWELL_SIZES(NM),                                                                  \
      "T0=1e-8: scene=hard-extreme;particles.temperature=1e-8;" MAXWELL_SIZES(NM),         \
      "T0=1e8: scene=hard-extreme;particles.temperature=1e8;" MAXWELL_SIZES(NM),           \
      "hard-spheres T0=1e-8: scene=grw-ex5;particles.temperature=1e-8;" HS_SIZES(NH, "601"), \
@@ -1148,17 +1133,6 @@ const vfy_case_desc vfy_hard_stiff = {
      NULL}
 static const char *const extreme_paper[] = EXTREME_ROWS("40000", "2000");
 static const char *const extreme_quick[] = EXTREME_ROWS("4000", "200");
-
-/* rate = 1e6 ($rate): the same events in t_end scaled by rate0/rate. */
-static const char *extreme_rate(const vfy_row *row, char *buf, size_t len)
-{
-    const double rate = vfy_values_get(&row->values, "rate");
-    buf[0] = '\0';
-    if (rate > 0.0)
-        snprintf(buf, len, "collisions.rate=%.17g;scene.t_end=%.17g", rate,
-                 row->scene.t_end * (row->scene.collisions.rate / rate));
-    return buf;
-}
 
 static const vfy_metric extreme_metrics[] = {
     HARD_METRIC("t_end", Q_T_END), HARD_METRIC("T_end", Q_T_FINAL),
@@ -1195,8 +1169,7 @@ static const char extreme_columns[] =
 const vfy_case_desc vfy_hard_extreme = {
     .must_fail = "heating.strength=1.05",
     .paper_rows = {.rows = extreme_paper}, .quick_rows = {.rows = extreme_quick},
-    .label = EXTREME_LABEL, .needs = all_references, .derive = extreme_rate,
-    .require = HARD_UNIT_MASS,
+    .label = EXTREME_LABEL, .needs = all_references, .require = HARD_UNIT_MASS,
     .require_why = HARD_UNIT_MASS_WHY, .metrics = extreme_metrics, .checks = extreme_checks,
     .columns = extreme_columns, .title = HARD_TITLE("extreme but legal parameters"),
     .notes = HARD_NOTES(
