@@ -166,6 +166,8 @@ static const vfy_metric steady_metrics[] = {
     {"wall_s", vfy_metric_variants_sum, "wall_s", NULL, 0},
     {"ns_per_event", vfy_metric_per, "cpu_s", "events", 1e9},
     {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
+    {"T_grad_end", vfy_metric_final_mean, "T_grad", NULL, 0},
+    {"nN", vfy_metric_product, "n", "N", 1},
     {NULL, NULL, NULL, NULL, 0}};
 static const vfy_check_spec steady_checks[] = {
     {.name = "{case} n={n} majorant violations", .rule = vfy_rule_violations, .value = "violations"},
@@ -175,52 +177,19 @@ static const char steady_columns[] =
     "violations:%.0f "
     VFY_COST_COLUMNS;
 
-/* n -> infinity: of T* (its value, half-width and the fit's chi^2), and of
- * T(t) at every output time for the figure; the closures' steady states and
- * the Grad closure at t_end for the case checks. */
-static sim_status steady_extrapolate(vfy_case_run *run, vfy_report *r, char *msg,
-                                     size_t msglen)
-{
-    (void)r;
-    const size_t rows = run->nrows, M = run->rows[0].res.outputs;
-    double *buf = malloc((3 * rows + M) * sizeof *buf);
-    size_t *n = malloc(rows * sizeof *n);
-    if (buf == NULL || n == NULL || vfy_run_extrapolate(run, "T@*", NULL) != 0) {
-        free(buf);
-        free(n);
-        snprintf(msg, msglen, "out of memory");
-        return SIM_ENOMEM;
-    }
-    double *T_star = buf, *sd = buf + rows, *grad = buf + 3 * rows, T_inf, T_sd, chi2;
-    for (size_t i = 0; i < rows; i++) {
-        n[i] = run->rows[i].solver.particles.n;
-        T_star[i] = vfy_values_get(&run->rows[i].values, "T_star");
-        sd[i] = vfy_values_get(&run->rows[i].values, "T_star_sd");
-    }
-    vfy_extrapolate_inverse_n(rows, n, T_star, sd, &T_inf, &T_sd, &chi2);
-    const vfy_row *first = &run->rows[0];
-    vfy_row_series(first, "T_grad", grad, NULL);
-    const double t_end = first->solver.t_end;
-    vfy_values_set(&run->values, "T_inf", T_inf);
-    vfy_values_set(&run->values, "T_inf_ci", SIM_LAMBDA_P * T_sd);
-    vfy_values_set(&run->values, "chi2", chi2);
-    vfy_values_set(&run->values, "T_grad_end", grad[M - 1]);
-    vfy_values_set(&run->values, "T_star_le", vfy_values_get(&first->values, "T_star_le"));
-    vfy_values_set(&run->values, "T_star_grad", vfy_values_get(&first->values, "T_star_grad"));
-    vfy_values_set(&run->values, "nN", (double)n[0] * vfy_values_get(&first->values, "N"));
-    vfy_values_set(&run->values, "t_from", 0.5 * t_end);
-    vfy_values_set(&run->values, "t_end", t_end);
-    if (run->o->progress) {
-        char line[256];
-        fprintf(run->o->progress, "   %s\n",
-                vfy_expand(line, sizeof line, "{case}: kinetic T* = {T_inf:%.5f} ± "
-                           "{T_inf_ci:%.5f}; closures LE {T_star_le:%.5f}, Grad "
-                           "{T_star_grad:%.5f}", run, NULL));
-    }
-    free(buf);
-    free(n);
-    return SIM_OK;
-}
+/* n -> infinity: T* (its value, half-width and the fit's chi^2), the
+ * closures' steady states and the Grad closure at t_end for the case checks;
+ * the figure extrapolates T(t) at every output time. */
+static const vfy_metric steady_case_metrics[] = {
+    {"T_inf", vfy_metric_rows_extrapolate, "T_star", "T_star_sd", 0},
+    {"T_inf_ci", vfy_metric_rows_extrapolate, "T_star", "T_star_sd", 1},
+    {"chi2", vfy_metric_rows_extrapolate, "T_star", "T_star_sd", 2},
+    {"T_grad_end", vfy_metric_first_row, "T_grad_end", NULL, 0},
+    {"T_star_le", vfy_metric_first_row, "T_star_le", NULL, 0},
+    {"T_star_grad", vfy_metric_first_row, "T_star_grad", NULL, 0},
+    {"nN", vfy_metric_first_row, "nN", NULL, 0},
+    {"t_from", vfy_metric_product, "scene.t_end", NULL, 0.5},
+    {NULL, NULL, NULL, NULL, 0}};
 
 /* The checks on the extrapolation, against the T* paper B prints (KINETIC,
  * LE, GRAD) to VFY_TOL_BRS_PRINTED_DIGITS decimals. */
@@ -246,7 +215,8 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
 
 #define STEADY_NOTES(KINETIC, LE, GRAD)                                                \
     "{comment}; n N = {nN} per row in 32 independent batches (seeds seed + 1000 row + "   \
-    "batch).\n\nT_star = time average over t in [{t_from:%g}, {t_end:%g}] of the ensemble " \
+    "batch).\n\nT_star = time average over t in [{t_from:%g}, {scene.t_end:%g}] of the "    \
+    "ensemble "                                                                           \
     "mean of the centred T; T_star_ci = t-quantile(0.9995, 31) x the standard error over " \
     "the batches. Extrapolated to n = infinity (weighted least squares in 1/n): kinetic "  \
     "T* = {T_inf:%.5f} ± {T_inf_ci:%.5f} (paper " KINETIC "), judged within half a unit of " \
@@ -270,7 +240,10 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
      .needs_why = "paper B's closures need collisions.kernel = hard-spheres and "        \
                   "background.kernel = hard-spheres",                                    \
      .values = steady_values, .metrics = steady_metrics, .checks = steady_checks,        \
-     .columns = steady_columns, .after_rows = steady_extrapolate, .case_checks = CHECKS, \
+     .columns = steady_columns, .case_metrics = steady_case_metrics,                      \
+     .case_progress = "{case}: kinetic T* = {T_inf:%.5f} ± {T_inf_ci:%.5f}; closures LE "    \
+                      "{T_star_le:%.5f}, Grad {T_star_grad:%.5f}",                           \
+     .case_checks = CHECKS,                                                               \
      .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T@*",\
                              .refs = VFY_LIST("T_le", "T_grad"), .extrapolated = 1},      \
                             {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy@*",\

@@ -407,6 +407,11 @@ static double lookup(const vfy_case_run *run, const vfy_row *row, const char *na
     return vfy_values_get(&run->values, name);
 }
 
+double vfy_value(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    return lookup(run, row, name);
+}
+
 /* "{if:NAME=WORD:TEXT}": whether NAME's text (a row's or the case's, a word
  * key's) or number equals WORD. */
 static int condition_holds(const vfy_case_run *run, const vfy_row *row, const char *cond,
@@ -1743,6 +1748,9 @@ static int curves_shared(vfy_case_run *run, const vfy_figure_spec *f, const char
                          const char *title, const char *quantity)
 {
     const vfy_row *last = &run->rows[run->nrows - 1];
+    if (f->extrapolated && run->extra_mean == NULL
+        && vfy_run_extrapolate(run, f->quantity, NULL) != 0)
+        return -1;
     const int extra = f->extrapolated && run->extra_mean != NULL;
     const size_t M = last->res.outputs, rows = run->nrows + (size_t)extra;
     const size_t nref = list_length(f->refs);
@@ -1937,6 +1945,11 @@ static sim_status finish(vfy_case_run *run, vfy_report *r, char *msg, size_t msg
     free(refused);
     if (status != SIM_OK)
         return status;
+    if (d->case_progress && run->o->progress) {
+        char *line = vfy_expand_alloc(d->case_progress, run, NULL);
+        fprintf(run->o->progress, "   %s\n", line != NULL ? line : d->case_progress);
+        free(line);
+    }
     run_checks(run, NULL, d->case_checks, r);
     double cpu = 0.0;
     for (size_t i = 0; i < run->nrows; i++) {

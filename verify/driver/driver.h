@@ -118,6 +118,11 @@ int vfy_row_set_text(vfy_row *row, const char *name, const char *text);
  * and its results (zeroed members are fine). */
 void vfy_row_free(vfy_row *row);
 
+/* Value `name` as templates, checks and metrics see it: the row's own (row
+ * may be NULL), else a scene key of the row's scene (the first row's at the
+ * case's level), else the case's; NAN when none. */
+double vfy_value(const vfy_case_run *run, const vfy_row *row, const char *name);
+
 /* The row before this one, or NULL for the first. */
 const vfy_row *vfy_row_previous(const vfy_case_run *run, const vfy_row *row);
 
@@ -281,7 +286,9 @@ typedef struct vfy_figure_spec {
                                         or NULL for none */
     double x_from;                   /* the t axis starts here */
     int panel_per_row;               /* one panel per row (every row), or one plot */
-    int extrapolated;                /* draw the hook's n = infinity curve too */
+    int extrapolated;                /* draw the n = infinity curve too: the O(1/n)
+                                        extrapolation of the quantity over the rows
+                                        (vfy_run_extrapolate, unless a hook made one) */
     /* POINTS: x is a row value; each series a value with its "_ci" ("LABEL=name"
        or "name"); a row where one of them is not finite is left out.  The
        references are drawn on 81 points of [x_lo, x_hi], each at a copy of the
@@ -381,6 +388,8 @@ typedef struct vfy_case_desc {
     const vfy_metric *case_metrics;     /* on the case's values, over its rows, before
                                            after_rows (the function's row is NULL);
                                            terminated by a NULL name */
+    const char *case_progress;          /* printed after the case's metrics and hook
+                                           (a template), or NULL */
     const vfy_check_spec *case_checks;  /* on the case's values, after after_rows (no
                                            row, no guard) */
     const char *columns;                /* "HEADER[=VALUE]:FORMAT ..." (vfy_column) */

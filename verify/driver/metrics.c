@@ -333,11 +333,42 @@ double vfy_metric_ratio_previous(const vfy_case_run *run, const vfy_row *row, co
                 : NAN;
 }
 
-/* Row value `name` (the row's own, else the case's). */
+/* Value `name` (vfy_value: the row's own, a scene key, else the case's). */
 static double value_of(const vfy_case_run *run, const vfy_row *row, const char *name)
 {
-    return vfy_values_has(&row->values, name) ? vfy_values_get(&row->values, name)
-                                                : vfy_values_get(&run->values, name);
+    return vfy_value(run, row, name);
+}
+
+double vfy_metric_product(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    return m->x * value_of(run, row, m->a) * (m->b ? value_of(run, row, m->b) : 1.0);
+}
+
+double vfy_metric_first_row(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)row;
+    return run->nrows > 0 ? vfy_values_get(&run->rows[0].values, m->a) : NAN;
+}
+
+double vfy_metric_rows_extrapolate(const vfy_case_run *run, const vfy_row *row,
+                                   const vfy_metric *m)
+{
+    (void)row;
+    const size_t rows = run->nrows;
+    double *y = malloc(2 * rows * sizeof *y);
+    size_t *n = malloc(rows * sizeof *n);
+    double inf = NAN, sd = NAN, chi2 = NAN;
+    if (y != NULL && n != NULL && rows > 0) {
+        for (size_t i = 0; i < rows; i++) {
+            n[i] = run->rows[i].solver.particles.n;
+            y[i] = vfy_values_get(&run->rows[i].values, m->a);
+            y[rows + i] = vfy_values_get(&run->rows[i].values, m->b);
+        }
+        vfy_extrapolate_inverse_n(rows, n, y, y + rows, &inf, &sd, &chi2);
+    }
+    free(y);
+    free(n);
+    return m->x == 0.0 ? inf : m->x == 1.0 ? SIM_LAMBDA_P * sd : chi2;
 }
 
 double vfy_metric_sum(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
