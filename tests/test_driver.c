@@ -238,6 +238,27 @@ static void test_partners(void **state)
     assert_true(isnan(z.fn(&run, &rows[3], &z)));
     const vfy_metric smallest = {"smallest", vfy_metric_rows_min, "q", NULL, 0};
     assert_close(smallest.fn(&run, NULL, &smallest), 2.0, 0, 0);
+    const vfy_metric first = {"first", vfy_metric_first_row, "q", NULL, 0};
+    assert_close(first.fn(&run, NULL, &first), 2.0, 0, 0);
+    const vfy_metric product = {"qa", vfy_metric_product, "q", "alpha", 2.0};
+    assert_close(product.fn(&run, &rows[2], &product), 2.0 * 3.3 * 0.7, 1e-15, 0);
+    /* the O(1/n) extrapolation over the rows: q = 1 + 2/n exactly gives 1, chi^2 0;
+     * a row off by 10 standard errors gives a large chi^2 */
+    static const size_t n[4] = {10, 20, 40, 80};
+    for (size_t i = 0; i < 4; i++) {
+        rows[i].solver.particles.n = n[i];
+        vfy_values_set(&rows[i].values, "q", 1.0 + 2.0 / (double)n[i]);
+        vfy_values_set(&rows[i].values, "q_sd", 0.01);
+    }
+    vfy_metric x = {"q_inf", vfy_metric_rows_extrapolate, "q", "q_sd", 0};
+    assert_close(x.fn(&run, NULL, &x), 1.0, 1e-12, 0);
+    x.x = 1;
+    const double ci = x.fn(&run, NULL, &x);
+    assert_true(ci > 0.0 && ci < 3.2 * 0.01 * 2.0);
+    x.x = 2;
+    assert_close(x.fn(&run, NULL, &x), 0.0, 0, 1e-12);
+    vfy_values_set(&rows[3].values, "q", 1.0 + 2.0 / 80.0 + 0.1);
+    assert_close(x.fn(&run, NULL, &x), 48.69565217391, 1e-9, 0);   /* by hand: 1120/23 */
     for (size_t i = 0; i < 4; i++)
         vfy_row_free(&rows[i]);
 }
