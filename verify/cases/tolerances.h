@@ -340,6 +340,12 @@
  * (docs/history/2026-11-27-gate.md).  At paper sizes a* lies up to 7.2% from
  * BGK, -Pxy/nT up to 3.0%. */
 #define VFY_TOL_AS_BGK_SANITY_RTOL 0.10
+/* Paper E prints its steady numbers at alpha = 0.9, a tau0 = 4 as "about"
+ * -Pxy/nT 0.33 and (Pxx - Pyy)/nT 0.24 (2 decimals) and T_s/T0 147 (none):
+ * judged within half a unit of the last printed decimal plus our Student's
+ * half-width (vfy_check_printed). */
+#define VFY_TOL_AS_E_PRINTED_DECIMALS 2
+#define VFY_TOL_AS_E_PRINTED_DECIMALS_T_RATIO 0
 /* E §V C: BGK "does a very good job ..., especially in the case of the EHS
  * system": EHS a*, -Pxy/nT and (Pxx - Pyy)/nT within 5% of BGK plus the
  * half-width.  At paper sizes EHS lies at most 2.8% from BGK but in (Pxx -
