@@ -419,3 +419,44 @@ ref_status ref_bgk_solve(const ref_bgk_params *p, const double *t, size_t nt,
     free(y);
     return st;
 }
+
+ref_status ref_bgk_relaxation_time(const ref_bgk_params *p, double band, double *t_relaxed,
+                                   char *msg, size_t msglen)
+{
+    ref_bgk_steady st;
+    ref_status status = ref_bgk_steady_state(p, &st, msg, msglen);
+    if (status != REF_OK)
+        return status;
+    if (!(band > 0.0) || !t_relaxed) {
+        ref_say(msg, msglen, "band = %g is not positive or t_relaxed is NULL", band);
+        return REF_EINVAL;
+    }
+    enum { NT = 4000 };
+    double *t = malloc(2 * NT * sizeof *t);
+    if (!t) {
+        ref_say(msg, msglen, "cannot allocate %d output times", NT);
+        return REF_ENOMEM;
+    }
+    double *T = t + NT;
+    const ref_bgk_output out = {.T = T};
+    const double Ts = st.T_ratio * p->T0;
+    status = REF_ESOLVER;
+    ref_say(msg, msglen, "T(t) not within %g of its steady value by t = 1e5", band);
+    for (double t_max = 64.0; t_max <= 1e5; t_max *= 2) {
+        for (size_t k = 0; k < NT; k++)
+            t[k] = t_max * (double)k / (NT - 1);
+        if ((status = ref_bgk_solve(p, t, NT, NULL, &out, msg, msglen)) != REF_OK)
+            break;
+        size_t last = 0;   /* the last time still outside the band */
+        for (size_t k = 0; k < NT; k++)
+            if (!(fabs(T[k] / Ts - 1.0) <= band))
+                last = k;
+        if (last + 1 < NT * 3 / 4) {   /* the band holds over the last quarter at least */
+            *t_relaxed = t[last + 1];
+            break;
+        }
+        status = REF_ESOLVER;
+    }
+    free(t);
+    return status;
+}

@@ -242,4 +242,15 @@ ref_status ref_bgk_solve(const ref_bgk_params *p, const double *t, size_t nt,
                          const ref_ode_options *opt, const ref_bgk_output *out, char *msg,
                          size_t msglen);
 
+/* *t_relaxed = the time after which T(t) from the initial state of p stays
+ * within the relative band of its steady value T_s: the first of 4000
+ * equally spaced times on [0, t_max] after the last outside it, t_max = 64,
+ * 128, ... 65536 until the band holds over the last quarter of [0, t_max] at
+ * least.  paper E's models relax on the same time scale 1/zeta0, so the
+ * steady averages of a simulation start there.  REF_EINVAL for what
+ * ref_bgk_steady_state rejects or band <= 0; REF_ESOLVER when the band is
+ * not reached by t = 65536; the failures of ref_bgk_solve. */
+ref_status ref_bgk_relaxation_time(const ref_bgk_params *p, double band, double *t_relaxed,
+                                   char *msg, size_t msglen);
+
 #endif

@@ -1023,10 +1023,41 @@ static void test_trap_marginal(void **state)
     assert_true(v > 0.25);
 }
 
+/* The relaxation time (ref_bgk_relaxation_time): T(t) is within the band of
+ * T_s from it on and outside it just before; a narrower band takes longer, a
+ * cold start (a tau0 = 0.1) longer than a hot one; bad arguments refused. */
+static void test_relaxation_time(void **state)
+{
+    (void)state;
+    ref_bgk_params p = params(0.7, 4.0);
+    ref_bgk_steady st;
+    char msg[256];
+    assert_int_equal(ref_bgk_steady_state(&p, &st, msg, sizeof msg), REF_OK);
+    double t_r, t_wide, t_cold;
+    assert_int_equal(ref_bgk_relaxation_time(&p, 1e-4, &t_r, msg, sizeof msg), REF_OK);
+    assert_int_equal(ref_bgk_relaxation_time(&p, 1e-2, &t_wide, msg, sizeof msg), REF_OK);
+    assert_true(t_wide < t_r);
+    const double t[3] = {0.0, 0.98 * t_r, t_r};
+    double T[3];
+    const ref_bgk_output out = {.T = T};
+    assert_int_equal(ref_bgk_solve(&p, t, 3, NULL, &out, msg, sizeof msg), REF_OK);
+    const double Ts = st.T_ratio * p.T0;
+    assert_true(fabs(T[2] / Ts - 1.0) <= 1e-4);
+    assert_true(fabs(T[1] / Ts - 1.0) > 1e-4);
+    ref_bgk_params q = params(0.7, 0.1);
+    assert_int_equal(ref_bgk_relaxation_time(&q, 1e-4, &t_cold, msg, sizeof msg), REF_OK);
+    assert_true(t_cold > 10.0 * t_r);
+    assert_int_equal(ref_bgk_relaxation_time(&p, 0.0, &t_r, msg, sizeof msg), REF_EINVAL);
+    assert_int_equal(ref_bgk_relaxation_time(&p, 1e-4, NULL, msg, sizeof msg), REF_EINVAL);
+    p.shear_rate = 0.0;   /* no steady state */
+    assert_int_equal(ref_bgk_relaxation_time(&p, 1e-4, &t_r, msg, sizeof msg), REF_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rates),
+        cmocka_unit_test(test_relaxation_time),
         cmocka_unit_test(test_steady_check_values),
         cmocka_unit_test(test_steady_independent_of_shear_rate),
         cmocka_unit_test(test_wrong_beta_is_told_apart),

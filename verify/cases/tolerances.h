@@ -305,11 +305,6 @@
 
 /* ---------------------------------------------------------- paper E (as) */
 
-/* as-steady averages from the time the BGK model's T(t) stays within this
- * relative band of its steady value (as_steady_window): a* ~ T^(-1/2) is then
- * within 5e-5 of its steady value, 1/30 of the smallest half-width of a* at
- * paper sizes (0.0010 on 0.67, N = 8). */
-#define VFY_TOL_AS_RELAX 1e-4
 /* Two estimates of one steady state agree within the quadrature sum of their
  * Student's t half-widths, z = |q - q'| / sqrt(c^2 + c'^2) <= 1: a tau0 =
  * 0.1 against 4 (E §V: the steady state does not depend on the initial shear

@@ -83,6 +83,24 @@ BGK(eta_star_bgk, eta_star)
 BGK(T_ratio_bgk, T_ratio)
 #undef BGK
 
+/* Paper E: when the BGK model's T(t) from the scene's initial state stays
+ * within RELAX_BAND of its steady value (ref_bgk_relaxation_time), the start
+ * of a steady average (as-steady's window: from there to 1.25 times it).  At
+ * 1e-4, a* ~ T^(-1/2) is within 5e-5 of its steady value, 1/30 of the
+ * smallest half-width of a* at paper sizes (0.0010 on 0.67, N = 8); a tau0 = 4
+ * gives t = 12.4-19.1 over alpha = 0.5-0.95, a tau0 = 0.1 (cooled first) t =
+ * 415-633.  NAN without a steady state (no shear, alpha = 1). */
+#define RELAX_BAND 1e-4
+static double t_relaxed_bgk_at(const sim_scene *s)
+{
+    if (!s->shear.present || !s->collisions.present)
+        return NAN;
+    const ref_bgk_params p = vfy_bgk_params(s);
+    double t;
+    return ref_bgk_relaxation_time(&p, RELAX_BAND, &t, NULL, 0) == REF_OK ? t : NAN;
+}
+static double t_end_relaxed_bgk_at(const sim_scene *s) { return 1.25 * t_relaxed_bgk_at(s); }
+
 /* Paper B's hard-sphere closures' steady temperature (GSL Brent root of
  * dT/dt at u = u_B), for hard spheres in a hard-sphere background. */
 static double hs_steady(const sim_scene *s, ref_background_closure closure)
@@ -205,6 +223,11 @@ static const vfy_reference registry[] = {
     {"N2_bgk", VFY_REF_VALUE, "paper E, BGK model: steady (Pzz - Pyy)/p (0)", N2_bgk_at},
     {"eta_star_bgk", VFY_REF_VALUE, "paper E, BGK model: steady eta* = (-Pxy/p)/a*",
      eta_star_bgk_at},
+    {"t_relaxed_bgk", VFY_REF_VALUE,
+     "paper E, BGK model: the time after which T(t) stays within 1e-4 of its steady value",
+     t_relaxed_bgk_at},
+    {"t_end_relaxed_bgk", VFY_REF_VALUE, "paper E, BGK model: 1.25 t_relaxed_bgk",
+     t_end_relaxed_bgk_at},
     {"T_ratio_bgk", VFY_REF_VALUE, "paper E, BGK model: steady T_s/T0 at the scene's a tau0",
      T_ratio_bgk_at},
     {"T_steady_maxwellian", VFY_REF_VALUE,
