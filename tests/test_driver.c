@@ -1074,8 +1074,9 @@ static void test_points_groups(void **state)
     assert_string_equal(group_file("-none-points.csv", buf, sizeof buf),
                         "x,Y,Y_ci\n0.1,1,0.1\n0.1,2,0.2\n0.2,3,0.3\n0.2,4,0.4\n");
     gp = group_file("-none.gp", buf, sizeof buf);
-    assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 5 title 'Y " VFY_CI_LEGEND "'\n"));
+    assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'Y " VFY_CI_LEGEND "'\n"));
     assert_non_null(strstr(gp, "set key top right\n"));
+    assert_non_null(strstr(gp, "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n"));
 }
 
 /* A grid of xy panels (figure.h, ncolumns): each column draws its own

@@ -8,6 +8,7 @@
 
 #include "driver.h"
 #include "gate.h"
+#include "references.h"
 #include "scene_ini.h"
 
 /* The scene stem of a case's first quick row: a "scene=STEM" of its
@@ -155,6 +156,51 @@ static void test_differences_name_their_check(void **state)
     }
 }
 
+/* Every description's data words are well formed: each derived setting is
+ * KEY=REFERENCE[:FORMAT] with a scene key and a value reference of the
+ * registry, and the requirements hold on the case's own first scene (so
+ * none is malformed, and none refuses the shipped scenes). */
+static void test_derived_and_required_words(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    size_t derived = 0, required = 0;
+    for (size_t i = 0; i < vfy_case_count(); i++) {
+        const vfy_case *c = vfy_case_at(i);
+        const char *w = c->desc->derived;
+        for (w = w ? w + strspn(w, " ") : NULL; w && *w; w += strspn(w, " ")) {
+            char word[160];
+            const size_t len = strcspn(w, " ");
+            snprintf(word, sizeof word, "%.*s", (int)len, w);
+            char *eq = strchr(word, '='), *colon = eq ? strchr(eq, ':') : NULL;
+            if (colon != NULL)
+                *colon = '\0';
+            if (eq != NULL)
+                *eq = '\0';
+            const vfy_reference *ref = eq ? vfy_reference_find(eq + 1) : NULL;
+            if (eq == NULL || vfy_scene_key_class(word) == VFY_KEY_UNKNOWN || ref == NULL
+                || ref->kind != VFY_REF_VALUE || (colon && colon[1] != '%'))
+                fail_msg("%s: derived word '%.*s' is not KEY=REFERENCE[:FORMAT]", c->name,
+                         (int)len, w);
+            derived++;
+            w += len;
+        }
+        if (c->desc->require == NULL)
+            continue;
+        sim_scene scene, solver;
+        char stem[64], msg[1024];
+        first_row_stem(c, stem, sizeof stem);
+        if (vfy_load_scene_stem(stem, &o, &scene, &solver, msg, sizeof msg) != SIM_OK)
+            fail_msg("%s: %s", c->name, msg);
+        if (vfy_scene_requires(&scene, c->desc->require, msg, sizeof msg) != 1)
+            fail_msg("%s: its scene %s does not meet '%s': %s", c->name, stem,
+                     c->desc->require, msg);
+        assert_non_null(c->desc->require_why);
+        required++;
+    }
+    assert_true(derived >= 9 && required >= 14);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -163,6 +209,7 @@ int main(void)
         cmocka_unit_test(test_perturb_parse),
         cmocka_unit_test(test_derived_seeds),
         cmocka_unit_test(test_differences_name_their_check),
+        cmocka_unit_test(test_derived_and_required_words),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -245,9 +245,12 @@ static const vfy_check_spec steady5_checks[] = STEADY_CASE_CHECKS(0.732, 0.743, 
                       "{T_star_le:%.5f}, Grad {T_star_grad:%.5f}",                           \
      .case_checks = CHECKS,                                                               \
      .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-T", .quantity = "T@*",\
-                             .refs = VFY_LIST("T_le", "T_grad"), .extrapolated = 1},      \
+                             .refs = VFY_LIST("T_le", "T_grad"), .extrapolated = 1,       \
+                             .title = "{case}: T(t), each n and n = infinity, beside the "   \
+                                      "closures ({size} sizes)"},                            \
                             {.kind = VFY_FIGURE_CURVES, .suffix = "-uy", .quantity = "uy@*",\
-                             .refs = VFY_LIST("uy_le", "uy_grad")}),                      \
+                             .refs = VFY_LIST("uy_le", "uy_grad"),                        \
+                             .title = "{case}: u_y(t) beside the closures ({size} sizes)"}), \
      .title = "{case}: paper B, hard spheres, steady temperature ({size} sizes)",       \
      .notes = NOTES}
 const vfy_case_desc vfy_brs_ex4 =

@@ -1791,12 +1791,14 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
     char *quantity = vfy_aprintf(   /* "T@*" is drawn as T */
         "%.*s", (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),
         f->quantity);
+    char *own = f->title ? vfy_expand_alloc(f->title, run, NULL) : NULL;   /* else the case's */
     int rc = -1;
-    if (name != NULL && quantity != NULL)
-        rc = rows_share_grid(run) ? curves_shared(run, f, name, title, quantity)
-                                  : write_curves_by_row(run, f, name, title, quantity);
+    if (name != NULL && quantity != NULL && (own != NULL || f->title == NULL))
+        rc = rows_share_grid(run) ? curves_shared(run, f, name, own ? own : title, quantity)
+                                  : write_curves_by_row(run, f, name, own ? own : title, quantity);
     free(name);
     free(quantity);
+    free(own);
     return rc;
 }
 

@@ -308,7 +308,8 @@ typedef struct vfy_figure_spec {
        labelled by the value.  NULL group_by: one group, unlabelled. */
     const char *group_by;
     const char *const *groups;
-    const char *title, *xlabel, *ylabel;   /* title: a template */
+    const char *title, *xlabel, *ylabel;   /* title: a template (curves:
+                                              NULL, the case's title) */
 } vfy_figure_spec;
 /* A description's figures, ended by one of kind VFY_FIGURE_NONE:
  * VFY_FIGURES({.kind = VFY_FIGURE_CURVES, ...}, {...}). */

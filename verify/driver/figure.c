@@ -144,7 +144,9 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     out = begin_script(o, f->name, f->comment, f->title, outside ? 1200 : 900, 650, gp, tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key %s\n%s"
+    /* offsets: no point on the frame, its error bar hidden in the axis */
+    fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\nset key %s\n"
+                 "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n%s"
                  "plot",
             gp_text(f->title), gp_text(f->xlabel), gp_text(f->ylabel),
             outside ? "outside right top" : f->key_inside ? f->key_inside : "top right",
@@ -162,8 +164,9 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
         fprintf(out, "%s '%s' skip 1 using 1:%zu:%zu with yerrorbars pt %d",
                 f->ncurves || j ? "," : "", points, 2 + 2 * j, 3 + 2 * j,
                 f->pt != NULL ? f->pt[j] : 5 + 2 * (int)j);
-        if (f->lc != NULL)
-            fprintf(out, " lc rgb '%s'", palette(f->lc[j]));
+        /* the project's colours, not gnuplot's (its third and fifth are light
+           blue and yellow) */
+        fprintf(out, " lc rgb '%s'", palette(f->lc != NULL ? f->lc[j] : 1 + (int)j));
         fprintf(out, " title '%s%s%s'", gp_text(f->series[j]), *bars ? " " : "", gp_text(bars));
     }
     fputc('\n', out);
@@ -486,7 +489,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
      * their bands */
     const int crowded = !one_panel_per_row && rows > CURVES_COLOURS;
     fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key %s\n", x_from,
-            gp_text(quantity), crowded ? "outside right top" : "top right");
+            gp_text(quantity), crowded ? "outside right top" : "below");   /* off the curves */
     if (one_panel_per_row)
         fprintf(f, "set multiplot layout %zu,2 title '%s'\n", lines, gp_text(title));
     else

@@ -7,10 +7,11 @@
 #include "cases.h"
 
 /* What every figure's error bars and confidence bands are, the text their
- * legends end with: the confidence half-width ci = SIM_LAMBDA_P = 3.2
- * standard errors, two-sided p = 0.999 (sim/ensemble.h; docs/verdicts.md).
- * A text, not a printf format (it holds a '%'). */
-#define VFY_CI_LEGEND "± 99.9% ci"
+ * legends end with: the half-width ci = SIM_LAMBDA_P = 3.2 standard errors
+ * (sim/ensemble.h; docs/verdicts.md), two-sided p = 0.999 for many
+ * ensembles but less for few (the checks then use Student's t), so the
+ * legend says the standard errors, not a probability. */
+#define VFY_CI_LEGEND "± 3.2 standard errors"
 
 /* The colours a series or curve may name (vfy_points.lc, vfy_xy_curve.lc),
  * 1 to VFY_FIGURE_COLOURS: blue, vermilion, reddish purple, orange, sky
