@@ -1000,23 +1000,6 @@ static const char *const algorithm_keys[] = {
     "shear.pairs", "steady.pairs",
 };
 
-int vfy_scene_key_class(const char *key)
-{
-    for (size_t i = 0; i < sizeof algorithm_keys / sizeof *algorithm_keys; i++)
-        if (strcmp(key, algorithm_keys[i]) == 0)
-            return VFY_KEY_ALGORITHM;
-    const char *dot = strchr(key, '.');
-    char section[64];
-    if (dot == NULL || (size_t)(dot - key) >= sizeof section)
-        return VFY_KEY_UNKNOWN;
-    snprintf(section, sizeof section, "%.*s", (int)(dot - key), key);
-    const int sec = find_section(section);
-    for (size_t i = 0; i < NKEYS && sec >= 0; i++)
-        if (keys[i].section == sec && strcmp(keys[i].name, dot + 1) == 0)
-            return VFY_KEY_PHYSICS;
-    return VFY_KEY_UNKNOWN;
-}
-
 /* The description of scene key `key` ("section.key") and its section, or
  * NULL with msg naming what is unknown. */
 static const key_desc *find_key(const char *key, int *sec, char *msg, size_t msglen)
@@ -1040,6 +1023,16 @@ static const key_desc *find_key(const char *key, int *sec, char *msg, size_t msg
     key_list(*sec, list, sizeof list);
     snprintf(msg, msglen, "%s: unknown key (allowed %s)", key, list);
     return NULL;
+}
+
+int vfy_scene_key_class(const char *key)
+{
+    for (size_t i = 0; i < sizeof algorithm_keys / sizeof *algorithm_keys; i++)
+        if (strcmp(key, algorithm_keys[i]) == 0)
+            return VFY_KEY_ALGORITHM;
+    int sec;
+    char msg[8];
+    return find_key(key, &sec, msg, sizeof msg) != NULL ? VFY_KEY_PHYSICS : VFY_KEY_UNKNOWN;
 }
 
 sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, char *msg,
