@@ -634,7 +634,7 @@ static const vfy_case_desc rows_desc = {
     .needs = e2e_needs, .label = "{case} {label}", .variants = rows_variants,
     .adjust = rows_adjust, .checks = rows_checks, .columns = rows_columns,
     .figures = VFY_FIGURES({.kind = VFY_FIGURE_CURVES, .suffix = "-x", .quantity = "T_raw@b",
-                 .refs = VFY_LIST("T_exact")}),
+                 .refs = VFY_LIST("T_exact"), .title = "{case}: its own title"}),
     .title = "{case}", .notes = "notes"};
 static const vfy_case rows_case = {"driver-rows", "test", "", 0,
                                    &rows_desc};
@@ -664,6 +664,15 @@ static void test_rows_variants_adjust(void **state)
     assert_non_null(strstr(table, "\nkind,h,n,N,N_b,absent\ntiny,0.5,8,200,200,\nlarge,,32,50,50,\n"));
     snprintf(path, sizeof path, "%s/driver-rows-x-curves.csv", out_dir);
     assert_int_equal(access(path, R_OK), 0);
+    /* the figure's own title, not the case's; its key off the curves */
+    snprintf(path, sizeof path, "%s/driver-rows-x.gp", out_dir);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    got = fread(table, 1, sizeof table - 1, f);
+    table[got] = '\0';
+    fclose(f);
+    assert_non_null(strstr(table, "'driver-rows: its own title'"));
+    assert_non_null(strstr(table, "set key below\n"));
 }
 
 /* Settings derived from value references (vfy_case_desc.derived): the
