@@ -7,7 +7,6 @@
 
 #include "cases.h"
 #include "ensemble.h"
-#include "metrics.h"
 #include "scene_refs.h"
 #include "table.h"
 

@@ -7,14 +7,12 @@
 #include <time.h>
 
 #include "checkpoint.h"
-#include "driver.h"
 #include "engine.h"
 #include "scene_ini.h"
 #include "scene_refs.h"
 #include "solver.h"
 #include "table.h"
 #include "text.h"
-#include "verdicts.h"
 
 /* The solver's scene failed where the user's (the same --set) did not, so a
  * --solver-set override is at fault; the scene parser names every override

@@ -9,11 +9,11 @@
 
 #include "case_report.h"
 #include "figure.h"
-#include "metrics.h"
 #include "observe.h"
 #include "references.h"
-#include "solver.h"
 #include "scene_ini.h"
+#include "solver.h"
+#include "stats.h"
 #include "steady.h"
 #include "verdicts.h"
 
