@@ -144,7 +144,7 @@ const vfy_row *vfy_row_partner(const vfy_case_run *run, const vfy_row *row, cons
 /* ------------------------------------------------------------ description */
 
 /* A per-row metric: defines value `name` from the row (pure functions in
- * metrics.h do the arithmetic; these adapters name their operands). */
+ * stats.h do the arithmetic; these adapters name their operands). */
 typedef struct vfy_metric vfy_metric;
 typedef double vfy_metric_func(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m);
 typedef vfy_metric_func *vfy_metric_fn;
