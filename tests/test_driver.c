@@ -1,4 +1,4 @@
-/* The case driver (verify/driver/driver.h) the statistics and the metrics (verify/driver/stats.h, metrics.h):
+/* The case driver (verify/driver/driver.h), the statistics (stats.h) and the metrics (metrics.h):
  * every metric moves with a wrong answer, every rule and guard can fail or
  * skip, templates expand as documented, sweeps enumerate their rows, and a
  * small description run end to end passes with the right solver and fails
