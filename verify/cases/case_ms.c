@@ -438,7 +438,7 @@ static sim_status tails_figures(vfy_case_run *run, vfy_report *r, char *msg, siz
         const char *series[] = {"G (DSMC)"}, *curves[] = {"G of the Maxwellian"};
         const double *ys[] = {G}, *cs[] = {Gc}, *yf[] = {Gphi};
         const vfy_points fig = {.name = name, .title = title,
-                                .xlabel = "c = |v - V|/v0, v0 = sqrt(2T/m)", .ylabel = "G(c)",
+                                .xlabel = "c = |v - V|/v0 with v0 = sqrt(2T/m)", .ylabel = "G(c)",
                                 .logy = 1, .npoints = bins, .x = c, .nseries = 1,
                                 .series = series, .y = ys, .ci = cs, .nfine = bins,
                                 .xfine = c, .ncurves = 1, .curves = curves, .yfine = yf,
