@@ -8,4 +8,5 @@ set title 'as-steady: steady a* against alpha, IHS and EHS, both a tau0 (paper E
 set xlabel 'alpha'
 set ylabel 'a* = a tau_eta(T)'
 set key top right
-plot 'reports/paper/as-steady-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'BGK', 'reports/paper/as-steady-points.csv' skip 1 using 1:2:3 with yerrorbars pt 7 lc rgb '#0072b2' title 'DSMC (IHS) ± 99.9% ci', 'reports/paper/as-steady-points.csv' skip 1 using 1:4:5 with yerrorbars pt 6 lc rgb '#d55e00' title 'DSMC (EHS) ± 99.9% ci', 'reports/paper/as-steady-points.csv' skip 1 using 1:6:7 with yerrorbars pt 2 lc rgb '#cc79a7' title 'DSMC (EHS jump scheme) ± 99.9% ci'
+set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
+plot 'reports/paper/as-steady-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'BGK', 'reports/paper/as-steady-points.csv' skip 1 using 1:2:3 with yerrorbars pt 7 lc rgb '#0072b2' title 'DSMC (IHS) ± 3.2 standard errors', 'reports/paper/as-steady-points.csv' skip 1 using 1:4:5 with yerrorbars pt 6 lc rgb '#d55e00' title 'DSMC (EHS) ± 3.2 standard errors', 'reports/paper/as-steady-points.csv' skip 1 using 1:6:7 with yerrorbars pt 2 lc rgb '#cc79a7' title 'DSMC (EHS jump scheme) ± 3.2 standard errors'

@@ -1,11 +1,11 @@
 # gdsmc 0.3.0 verify: scene verify/cases/scenes/as.ini, seed 20050501, n = 10000, N = 8 ensembles, 321 outputs on [0, 16], 601 outputs on [0, 300], 321 outputs on [0, 16], 601 outputs on [0, 300], 321 outputs on [0, 16], 601 outputs on [0, 300], 321 outputs on [0, 16], 601 outputs on [0, 300], 321 outputs on [0, 16], 701 outputs on [0, 700], 321 outputs on [0, 16], 701 outputs on [0, 700] (by row)
-# as-transient: paper E Figs. 5-13, the transient of uniform shear flow from local equilibrium, IHS and EHS beside BGK (paper sizes): gnuplot reports/paper/as-transient.gp
+# as-transient: T/T0 against t, every row: gnuplot reports/paper/as-transient.gp
 set terminal pngcairo size 1000,390 font ',10'
 set termoption noenhanced
 set output 'reports/paper/as-transient.png'
 set datafile separator ','
 set datafile missing ''
-set multiplot layout 1,1 title 'as-transient: paper E Figs. 5-13, the transient of uniform shear flow from local equilibrium, IHS and EHS beside BGK (paper sizes)'
+set multiplot layout 1,1 title 'as-transient: T/T0 against t, every row'
 set logscale x
 set logscale y
 set format y '%g'

@@ -8,4 +8,5 @@ set title 'ms-a2-gaussian: a3 against alpha, Gaussian thermostat (paper C Figure
 set xlabel 'alpha'
 set ylabel 'a3'
 set key top right
-plot 'reports/paper/ms-a2-gaussian-a3-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'a3 ± 99.9% ci'
+set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
+plot 'reports/paper/ms-a2-gaussian-a3-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'a3 ± 3.2 standard errors'

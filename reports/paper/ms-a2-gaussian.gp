@@ -8,4 +8,5 @@ set title 'ms-a2-gaussian: a2 against alpha, Gaussian thermostat (HCS in scaled 
 set xlabel 'alpha'
 set ylabel 'a2'
 set key top right
-plot 'reports/paper/ms-a2-gaussian-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'a2 (C.5)', 'reports/paper/ms-a2-gaussian-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'a2 (C.40)', 'reports/paper/ms-a2-gaussian-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'a2 ± 99.9% ci', 'reports/paper/ms-a2-gaussian-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 title '(mu2-mu2_0)/mu2_1 ± 99.9% ci', 'reports/paper/ms-a2-gaussian-points.csv' skip 1 using 1:6:7 with yerrorbars pt 9 title '(mu4-mu4_0)/mu4_1 ± 99.9% ci'
+set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
+plot 'reports/paper/ms-a2-gaussian-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'a2 (C.5)', 'reports/paper/ms-a2-gaussian-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'a2 (C.40)', 'reports/paper/ms-a2-gaussian-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'a2 ± 3.2 standard errors', 'reports/paper/ms-a2-gaussian-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 lc rgb '#d55e00' title '(mu2-mu2_0)/mu2_1 ± 3.2 standard errors', 'reports/paper/ms-a2-gaussian-points.csv' skip 1 using 1:6:7 with yerrorbars pt 9 lc rgb '#cc79a7' title '(mu4-mu4_0)/mu4_1 ± 3.2 standard errors'

@@ -5,9 +5,10 @@ set termoption noenhanced
 set output 'reports/paper/ms-tails-gaussian-0.2.png'
 set datafile separator ','
 set title 'ms-tails: G(c) = exp(3.826 c^1.0) f(c), gaussian, alpha = 0.2'
-set xlabel 'c'
+set xlabel 'c = |v - V|/v0 with v0 = sqrt(2T/m)'
 set ylabel 'G(c)'
 set key bottom left
+set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
 set logscale y
 set format y '%g'
-plot 'reports/paper/ms-tails-gaussian-0.2-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'G of the Maxwellian', 'reports/paper/ms-tails-gaussian-0.2-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'G (DSMC) ± 99.9% ci'
+plot 'reports/paper/ms-tails-gaussian-0.2-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'G of the Maxwellian', 'reports/paper/ms-tails-gaussian-0.2-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'G (DSMC) ± 3.2 standard errors'

@@ -8,4 +8,5 @@ set title 'msg-distribution: phi(c_x^2) and its truncations, alpha = 1.0 (paper 
 set xlabel 'c_x^2'
 set ylabel 'phi'
 set key top right
-plot 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'phi_1', 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'phi_2', 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:4 with lines lw 2 dt 3 title 'phi_3', 'reports/paper/msg-distribution-phi-1.0-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'phi (DSMC) ± 99.9% ci'
+set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
+plot 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'phi_1', 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'phi_2', 'reports/paper/msg-distribution-phi-1.0-theory.csv' skip 1 using 1:4 with lines lw 2 dt 3 title 'phi_3', 'reports/paper/msg-distribution-phi-1.0-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'phi (DSMC) ± 3.2 standard errors'

@@ -8,6 +8,7 @@ set title 'split-gaussian: |time-step - jump| in the time-averaged T'
 set xlabel 'h'
 set ylabel '|difference in T|'
 set key top right
+set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05
 set logscale xy
 set format xy '%g'
-plot 'reports/paper/split-gaussian-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'slope 1', 'reports/paper/split-gaussian-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'slope 2', 'reports/paper/split-gaussian-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 title 'Euler |dT| ± 99.9% ci', 'reports/paper/split-gaussian-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 title 'Strang |dT| ± 99.9% ci'
+plot 'reports/paper/split-gaussian-theory.csv' skip 1 using 1:2 with lines lw 2 dt 1 title 'slope 1', 'reports/paper/split-gaussian-theory.csv' skip 1 using 1:3 with lines lw 2 dt 2 title 'slope 2', 'reports/paper/split-gaussian-points.csv' skip 1 using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'Euler |dT| ± 3.2 standard errors', 'reports/paper/split-gaussian-points.csv' skip 1 using 1:4:5 with yerrorbars pt 7 lc rgb '#d55e00' title 'Strang |dT| ± 3.2 standard errors'
