@@ -168,6 +168,18 @@ static void test_sweeps(void **state)
 }
 
 /* A run with two rows of values, for templates, rules and guards. */
+/* out_dir/name, whole, into buf (len bytes, terminated); the file must exist. */
+static const char *read_out_file(const char *name, char *buf, size_t len)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/%s", out_dir, name);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    buf[fread(buf, 1, len - 1, f)] = '\0';
+    fclose(f);
+    return buf;
+}
+
 static const vfy_case test_case = {"test-case", "test", "a test", 0, NULL};
 static const vfy_case_desc test_desc = {.paper = "Table 9"};
 static const vfy_options test_options = {.size = VFY_QUICK};
@@ -527,13 +539,7 @@ static size_t run_e2e(const char *const *wrong, size_t nwrong, char *table, size
     assert_int_equal(r.count, 2);   /* one z-test a row */
     size_t failed = r.counts[VFY_FAIL];
     vfy_report_free(&r);
-    char path[600];
-    snprintf(path, sizeof path, "%s/driver-e2e.csv", out_dir);
-    FILE *f = fopen(path, "r");
-    assert_non_null(f);
-    size_t got = fread(table, 1, len - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-e2e.csv", table, len);
     return failed;
 }
 
@@ -557,13 +563,7 @@ static void test_end_to_end(void **state)
     char msg[512];
     assert_int_equal(vfy_run_described(&e2e_case, &o, &r, msg, sizeof msg), SIM_OK);
     vfy_report_free(&r);
-    char path[600];
-    snprintf(path, sizeof path, "%s/driver-e2e.csv", out_dir);
-    FILE *f = fopen(path, "r");
-    assert_non_null(f);
-    size_t got = fread(table, 1, sizeof table - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-e2e.csv", table, sizeof table);
     assert_non_null(strstr(table, "\n16,300,"));
 }
 
@@ -653,24 +653,14 @@ static void test_rows_variants_adjust(void **state)
     assert_string_equal(r.checks[2].name, "driver-rows small wrong pair");
     assert_int_equal(r.checks[2].verdict, VFY_FAIL);
     vfy_report_free(&r);
-    snprintf(path, sizeof path, "%s/driver-rows.csv", out_dir);
-    FILE *f = fopen(path, "r");
-    assert_non_null(f);
-    size_t got = fread(table, 1, sizeof table - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-rows.csv", table, sizeof table);
     /* texts print as text, a missing one and the big row's h as empty cells;
      * the adjust hook gave the big row's solver 50 ensembles, both variants */
     assert_non_null(strstr(table, "\nkind,h,n,N,N_b,absent\ntiny,0.5,8,200,200,\nlarge,,32,50,50,\n"));
     snprintf(path, sizeof path, "%s/driver-rows-x-curves.csv", out_dir);
     assert_int_equal(access(path, R_OK), 0);
     /* the figure's own title, not the case's; its key off the curves */
-    snprintf(path, sizeof path, "%s/driver-rows-x.gp", out_dir);
-    f = fopen(path, "r");
-    assert_non_null(f);
-    got = fread(table, 1, sizeof table - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-rows-x.gp", table, sizeof table);
     assert_non_null(strstr(table, "'driver-rows: its own title'"));
     assert_non_null(strstr(table, "set key below\n"));
 }
@@ -696,7 +686,7 @@ static void test_derived_and_required(void **state)
     (void)state;
     vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
     vfy_report r;
-    char msg[512], path[600], table[1024], want[64];
+    char msg[512], table[1024], want[64];
     vfy_report_init(&r, NULL);
     assert_int_equal(vfy_run_described(&derived_case, &o, &r, msg, sizeof msg), SIM_OK);
     vfy_report_free(&r);
@@ -708,12 +698,7 @@ static void test_derived_and_required(void **state)
     char derived[32];
     snprintf(derived, sizeof derived, "%.6g", beta);
     snprintf(want, sizeof want, "\nbeta\n%.9g\n", strtod(derived, NULL));
-    snprintf(path, sizeof path, "%s/driver-derived.csv", out_dir);
-    FILE *f = fopen(path, "r");
-    assert_non_null(f);
-    size_t got = fread(table, 1, sizeof table - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-derived.csv", table, sizeof table);
     if (strstr(table, want) == NULL)
         print_error("wanted %s in:\n%s\n", want, table);
     assert_non_null(strstr(table, want));
@@ -785,27 +770,17 @@ static void test_batches_and_case_checks(void **state)
     vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
     vfy_report r;
     vfy_report_init(&r, NULL);
-    char msg[512], path[600], table[1024];
+    char msg[512], table[1024];
     assert_int_equal(vfy_run_described(&batch_case, &o, &r, msg, sizeof msg), SIM_OK);
     assert_int_equal(r.count, 2);
     assert_int_equal(r.checks[0].verdict, VFY_PASS);
     assert_string_equal(r.checks[1].name, "driver-batches T* vs a wrong printed value");
     assert_int_equal(r.checks[1].verdict, VFY_FAIL);
     vfy_report_free(&r);
-    snprintf(path, sizeof path, "%s/driver-batches.csv", out_dir);
-    FILE *f = fopen(path, "r");
-    assert_non_null(f);
-    size_t got = fread(table, 1, sizeof table - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-batches.csv", table, sizeof table);
     assert_non_null(strstr(table, "\nn,N,T_star\n16,900,"));   /* N summed over 3 batches */
     /* the figure draws the batches' mean as T_raw */
-    snprintf(path, sizeof path, "%s/driver-batches-T-curves.csv", out_dir);
-    f = fopen(path, "r");
-    assert_non_null(f);
-    got = fread(table, 1, sizeof table - 1, f);
-    table[got] = '\0';
-    fclose(f);
+    read_out_file("driver-batches-T-curves.csv", table, sizeof table);
     assert_null(strstr(table, "@*"));
 }
 
