@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "checks.h"
+#include "text.h"
 #include "verdicts.h"
 
 static void test_relative(void **state)

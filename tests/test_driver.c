@@ -1063,6 +1063,27 @@ static void test_points_groups(void **state)
     assert_non_null(strstr(gp, "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n"));
 }
 
+/* A points figure's data files take its labels as their headers, each one
+ * CSV field: a label with a comma or a quote is quoted, not split. */
+static void test_points_headers_quoted(void **state)
+{
+    (void)state;
+    const double x[2] = {1.0, 2.0}, y[2] = {3.0, 4.0}, ci[2] = {0.1, 0.2}, fine[2] = {0, 1};
+    const double *ys[] = {y}, *cis[] = {ci}, *yfine[] = {fine};
+    const char *series[] = {"a, b"}, *curves[] = {"the \"model\""};
+    const vfy_points fig = {.name = "driver-quoted", .title = "t", .xlabel = "c, reduced",
+                            .ylabel = "y", .npoints = 2, .x = x, .nseries = 1,
+                            .series = series, .y = ys, .ci = cis, .nfine = 2, .xfine = x,
+                            .ncurves = 1, .curves = curves, .yfine = yfine, .comment = "c"};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_points(&o, &fig), 0);
+    char buf[1024];
+    assert_non_null(strstr(read_out_file("driver-quoted-points.csv", buf, sizeof buf),
+                           "\n\"c, reduced\",\"a, b\",\"a, b_ci\"\n1,3,0.1\n"));
+    assert_non_null(strstr(read_out_file("driver-quoted-theory.csv", buf, sizeof buf),
+                           "\n\"c, reduced\",\"the \"\"model\"\"\"\n"));
+}
+
 /* A grid of xy panels (figure.h, ncolumns): each column draws its own
  * curves under its title, the rows of panels on one y scale each, the key
  * once below the grid from the first panel's curves, with their colours
@@ -1132,7 +1153,8 @@ int main(void)
         cmocka_unit_test(test_curves_by_row),
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
         cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
-        cmocka_unit_test(test_points_groups), cmocka_unit_test(test_xy_grid),
+        cmocka_unit_test(test_points_groups), cmocka_unit_test(test_points_headers_quoted),
+        cmocka_unit_test(test_xy_grid),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

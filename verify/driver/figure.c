@@ -100,6 +100,24 @@ static int finish_script(const vfy_options *o, FILE *f, const char *tmp, const c
     return 0;
 }
 
+/* The header line of a points or theory file: x, then each name (and, with
+ * ci, its "NAME_ci"), each a CSV field (quoted where a label has a comma). */
+static void csv_header(FILE *out, const char *x, const char *const *names, size_t count, int ci)
+{
+    vfy_csv_field(out, x);
+    for (size_t j = 0; j < count; j++) {
+        fputc(',', out);
+        vfy_csv_field(out, names[j]);
+        if (ci) {
+            char *name_ci = vfy_aprintf("%s_ci", names[j]);
+            fputc(',', out);
+            vfy_csv_field(out, name_ci != NULL ? name_ci : "");
+            free(name_ci);
+        }
+    }
+    fputc('\n', out);
+}
+
 int vfy_write_points(const vfy_options *o, const vfy_points *f)
 {
     char points[PATH_LEN], theory[PATH_LEN], gp[PATH_LEN], tmp[TMP_LEN], file[256];
@@ -107,10 +125,7 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     FILE *out = begin_file(o, file, ".csv", f->comment, points, sizeof points, tmp, sizeof tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "%s", f->xlabel);
-    for (size_t j = 0; j < f->nseries; j++)
-        fprintf(out, ",%s,%s_ci", f->series[j], f->series[j]);
-    fputc('\n', out);
+    csv_header(out, f->xlabel, f->series, f->nseries, 1);
     for (size_t i = 0; i < f->npoints; i++) {
         fprintf(out, "%.10g", f->x[i]);
         for (size_t j = 0; j < f->nseries; j++)
@@ -126,10 +141,7 @@ int vfy_write_points(const vfy_options *o, const vfy_points *f)
     out = begin_file(o, file, ".csv", f->comment, theory, sizeof theory, tmp, sizeof tmp);
     if (out == NULL)
         return -1;
-    fprintf(out, "%s", f->xlabel);
-    for (size_t j = 0; j < f->ncurves; j++)
-        fprintf(out, ",%s", f->curves[j]);
-    fputc('\n', out);
+    csv_header(out, f->xlabel, f->curves, f->ncurves, 0);
     for (size_t i = 0; i < f->nfine; i++) {
         fprintf(out, "%.10g", f->xfine[i]);
         for (size_t j = 0; j < f->ncurves; j++)

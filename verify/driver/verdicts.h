@@ -36,12 +36,4 @@ sim_status vfy_write_verdicts(const vfy_options *o, const char *name, const vfy_
 sim_status vfy_write_index(const vfy_options *o, const char *title, const char *const *cases,
                            size_t ncases, char *msg, size_t msglen);
 
-/* text as one CSV field: quoted when it holds a comma, a quote or a line
- * break (a quote doubled, a line break written as a space). */
-void vfy_csv_field(FILE *f, const char *text);
-
-/* The fields of one line of CSV text (RFC 4180 quoting), NUL-terminated in
- * place in `line`: fields[k] for k < the count returned (at most max). */
-size_t vfy_csv_split(char *line, char **fields, size_t max);
-
 #endif

@@ -103,3 +103,46 @@ char *vfy_strdup(const char *s)
     }
     return copy;
 }
+
+void vfy_csv_field(FILE *f, const char *text)
+{
+    if (strpbrk(text, ",\"\n\r") == NULL) {
+        fputs(text, f);
+        return;
+    }
+    fputc('"', f);
+    for (const char *p = text; *p; p++) {
+        if (*p == '"')
+            fputc('"', f);
+        fputc(*p == '\n' || *p == '\r' ? ' ' : *p, f);
+    }
+    fputc('"', f);
+}
+
+size_t vfy_csv_split(char *line, char **fields, size_t max)
+{
+    size_t count = 0;
+    char *p = line;
+    while (count < max) {
+        char *out = p;
+        fields[count++] = out;
+        if (*p == '"') {   /* quoted: "" is a quote, the field ends at a lone quote */
+            p++;
+            while (*p && !(p[0] == '"' && p[1] != '"')) {
+                *out++ = *p;
+                p += p[0] == '"' ? 2 : 1;
+            }
+            if (*p == '"')
+                p++;
+        } else {
+            while (*p && *p != ',' && *p != '\n' && *p != '\r')
+                *out++ = *p++;
+        }
+        const char next = *p;
+        *out = '\0';
+        if (next != ',')
+            break;
+        p++;
+    }
+    return count;
+}

@@ -11,6 +11,7 @@
 
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 
 /* A string that grows as text is appended.  {0} is the empty text; after a
  * failed append (out of memory) it keeps what it held and `failed` is set,
@@ -45,5 +46,13 @@ char *vfy_vaprintf(const char *fmt, va_list ap) __attribute__((format(printf, 1,
 
 /* A copy of s (NULL: of ""), or NULL when out of memory. */
 char *vfy_strdup(const char *s);
+
+/* text as one CSV field: quoted when it holds a comma, a quote or a line
+ * break (a quote doubled, a line break written as a space). */
+void vfy_csv_field(FILE *f, const char *text);
+
+/* The fields of one line of CSV text (RFC 4180 quoting), NUL-terminated in
+ * place in `line`: fields[k] for k < the count returned (at most max). */
+size_t vfy_csv_split(char *line, char **fields, size_t max);
 
 #endif
