@@ -3,9 +3,10 @@
 #   make test     the same set-up, then every test, and the unit tests and the
 #                 quick suite again in an address+undefined sanitizer build
 #   make fuzz     libFuzzer (clang, address sanitizer) over scene parsing and
-#                 validation (corpus verify/cases/scenes), then over the solver
-#                 protocol's result reader (corpus tests/fuzz/results), each
-#                 for FUZZ_SECONDS (default 600)
+#                 validation (corpus verify/cases/scenes), over the solver
+#                 protocol's result reader (corpus tests/fuzz/results) and over
+#                 case files (corpus verify/cases/scenes/*.case), each for
+#                 FUZZ_SECONDS (default 600)
 #   make test-mpi optional: installs OpenMPI, builds $(MPI_BUILD) with GDSMC_MPI=ON
 #                 and checks that 2 ranks give the numbers of 1 process
 BUILD ?= build
@@ -57,20 +58,23 @@ test-sanitize: deps
 	ctest --test-dir $(SANITIZE_BUILD) -L unit -j $(JOBS) --output-on-failure
 	$(SANITIZE_BUILD)/gdsmc verify --suite quick --out $(SANITIZE_BUILD)/reports
 
-# The fuzzers' corpora grow in $(FUZZ_BUILD)/corpus (seeded from verify/cases/scenes)
-# and $(FUZZ_BUILD)/corpus-result; crashes are written to $(FUZZ_BUILD)/crash-*
-# and $(FUZZ_BUILD)/result-crash-*.
+# The fuzzers' corpora grow in $(FUZZ_BUILD)/corpus (seeded from verify/cases/scenes),
+# $(FUZZ_BUILD)/corpus-result and $(FUZZ_BUILD)/corpus-case; crashes are written to
+# $(FUZZ_BUILD)/crash-*, $(FUZZ_BUILD)/result-crash-* and $(FUZZ_BUILD)/case-crash-*.
 fuzz:
 	$(MAKE) deps PACKAGES="$(PACKAGES) $(FUZZ_PACKAGES)"
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_C_COMPILER=clang -DGDSMC_FUZZ=ON $(CMAKE_FLAGS)
-	cmake --build $(FUZZ_BUILD) --target fuzz_scene fuzz_result -j $(JOBS)
-	mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/corpus-result
+	cmake --build $(FUZZ_BUILD) --target fuzz_scene fuzz_result fuzz_case -j $(JOBS)
+	mkdir -p $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/corpus-result $(FUZZ_BUILD)/corpus-case
 	cp -n verify/cases/scenes/*.ini $(FUZZ_BUILD)/corpus/
 	cp -n tests/fuzz/results/* $(FUZZ_BUILD)/corpus-result/
+	cp -n verify/cases/scenes/*.case $(FUZZ_BUILD)/corpus-case/
 	$(FUZZ_BUILD)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/ $(FUZZ_BUILD)/corpus
 	$(FUZZ_BUILD)/fuzz_result -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
 	  -artifact_prefix=$(FUZZ_BUILD)/result- $(FUZZ_BUILD)/corpus-result
+	$(FUZZ_BUILD)/fuzz_case -max_total_time=$(FUZZ_SECONDS) -max_len=16384 -timeout=10 \
+	  -artifact_prefix=$(FUZZ_BUILD)/case- $(FUZZ_BUILD)/corpus-case
 
 # Ensembles across MPI ranks (docs/running.md); only the
 # executable is built, and only the tests labelled mpi run.

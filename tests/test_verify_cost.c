@@ -170,11 +170,10 @@ static void test_cost_split_ex5(void **state)
 
 /* A grid larger than the hook once allowed (64 points, 8 values an axis):
  * 9 values of n by 8 of N, tiny systems, runs and draws one curve per N. */
-extern const vfy_case_desc vfy_cost_grw_ex3;
 static void test_big_grid(void **state)
 {
     (void)state;
-    vfy_case_desc d = vfy_cost_grw_ex3;
+    vfy_case_desc d = *vfy_case_find("cost-grw-ex3")->desc;
     d.quick_rows = (vfy_sweep){
         .keys = VFY_KEYS({"particles.n", "2 3 4 5 6 7 8 9 10", NULL},
                          {"particles.ensembles", "8 16 24 32 40 48 56 64", NULL}),

@@ -14,12 +14,18 @@
 static char out_dir[256];
 static char scene_dir[512];
 
-/* Group setup: scene_dir from GDSMC_SOURCE_DIR (set by CTest), a new out_dir. */
+/* Group setup: scene_dir from GDSMC_SOURCE_DIR (set by CTest), the case
+ * files loaded from it (suites.h), a new out_dir. */
 static inline int setup(void **state)
 {
     (void)state;
     const char *src = getenv("GDSMC_SOURCE_DIR");
     snprintf(scene_dir, sizeof scene_dir, "%s/verify/cases/scenes", src ? src : "..");
+    char msg[1024];
+    if (vfy_cases_load(scene_dir, msg, sizeof msg) != SIM_OK) {
+        print_error("%s\n", msg);
+        return -1;
+    }
     snprintf(out_dir, sizeof out_dir, "/tmp/gdsmc-test-XXXXXX");
     return mkdtemp(out_dir) ? 0 : -1;
 }

@@ -44,6 +44,10 @@
  * 1e-3, 1e-4: the cheapest measured grid point with Err <= target, and the
  * cheapest point the model predicts (n = powers of 2 up to 2^24, N among the
  * grid's, h halvings of the grid's largest), marked as a prediction.
+  *
+ * The cases are data (verify/cases/scenes/cost-*.case, docs/adding-a-case.md);
+ * this file holds the metrics, guards, rules and hooks they name, listed
+ * in vfy_cost_named at its end.
  */
 #include "case_cost.h"
 
@@ -57,6 +61,7 @@
 #include "case_report.h"
 #include "cases.h"
 #include "driver.h"
+#include "named.h"
 #include "figure.h"
 #include "heated.h"
 #include "metrics.h"
@@ -70,7 +75,6 @@
 #define PRED_N_MAX ((size_t)1 << 24)
 #define PRED_H_HALVINGS 12
 #define VFY_COST_TARGETS_TITLE "Cheapest grid point per target, and the model's prediction"
-
 
 /* ------------------------------------------------------------ shared pieces */
 
@@ -563,74 +567,6 @@ static sim_status grid_model(vfy_case_run *run, vfy_report *r, char *msg, size_t
     return status;
 }
 
-/* Paper A Ex 3 with Table 1's estimator (uncentred T_raw against A.13); paper
- * B Ex 2 with Table 2's (centred T against B.15).  Paper sizes: about 280 and
- * 230 CPU seconds (sum n x sum N x 4.8 and 3.8 us).  The grid: n by n, N
- * growing within each n.  OBS is the observable, FINITE the exact
- * expectation of its n-particle estimator. */
-#define COST_GRID_METRICS(OBS, FINITE)                                                  \
-    {{"Err", vfy_metric_max_rel_err, OBS, "T_exact", 0},                                \
-     {"Err_sys", vfy_metric_max_rel_err, FINITE, "T_exact", 0},                         \
-     {"Err_stat", vfy_metric_max_rel_diff, OBS, FINITE "/T_exact", 0},                  \
-     {"Conf", vfy_metric_max_rel_ci, OBS, "T_exact", 0},                                \
-     {NULL, NULL, NULL, NULL, 0}}
-#define COST_GRID_CHECKS(OBS, FINITE)                                                   \
-    {{.name = "{case} n={n} N={N} " OBS " vs exact finite-n expectation",                \
-      .rule = vfy_rule_zscore, .value = OBS, .expected = FINITE, .from = 1,              \
-      .tol = VFY_TOL_ZMAX, .out = "z"},                                                 \
-     {.name = NULL}}
-static const char grid_columns[] =
-    "n:%.0f N:%.0f Err:%.3e Err_sys:%.3e Err_stat:%.3e Conf:%.3e z:%.2f Err_model:%.3e "
-    "Err_over_model:%.2f "
-    VFY_COST_COLUMNS;
-#define COST_GRID_NOTES(OBS, FINITE)                                                    \
-    "{comment}; each row sets n and N.\n\nErr = max over the {outputs} output times of "   \
-    "|F(t) - eta1(t)|/F(t) for " OBS " (docs/theory.md §1.4). With E xi^(n)(t) the exact expectation " \
-    "of the n-particle estimator (" FINITE ", docs/theory.md §11.2), eta1 - F = (eta1 - E "        \
-    "xi^(n)) + (E xi^(n) - F) at every output time: Err_sys = max |E xi^(n) - F|/F is the " \
-    "systematic part, exact (no noise), O(1/n); Err_stat = max |eta1 - E xi^(n)|/F the "   \
-    "statistical part as measured, O(1/sqrt(n N)); Conf = max c/F with c = 3.2 "           \
-    "sqrt(Var/N) (99.9%) is its scale, and z = max |eta1 - E xi^(n)|/sigma (judged <= "    \
-    "4.5). Err <= Err_sys + Err_stat. All points use the scene's seed, so the run with 4N " \
-    "ensembles contains the run with N (common random numbers).\n\nModel: Err_model = "    \
-    "sqrt(Err_sys^2 + (k Conf_fit)^2), with Err_sys exact at every n, Conf_fit^2 N = A/n + " \
-    "B/n^2 fitted to the grid (A = {A:%.4g}, B = {B:%.4g}) and k = {k:%.3f} the geometric " \
-    "mean of Err_stat/Conf_fit; measured/model lies in [{ratio_lo:%.2f}, "                 \
-    "{ratio_hi:%.2f}] over the grid (judged within a factor 2 where one part is at least " \
-    "3 times the other: where they are comparable, noise of the opposite sign can cancel " \
-    "the bias). CPU model: cpu = kappa n N with kappa = {kappa_us:%.3g} us (largest "        \
-    "deviation {cpu_dev_percent:%.0f}% over the points with at least 1 CPU s). cpu_s is "  \
-    "the process CPU time of that point's run (all threads); events = candidate "          \
-    "collision events. Total wall time {wall_total:%.1f} s."
-#define COST_GRID(SCENE, WHAT, OBS, FINITE, N_PAPER, N_QUICK, ...)                 \
-    {.scene = SCENE,                                                                     \
-     __VA_ARGS__,                                                                       \
-     .paper_rows = {.keys = VFY_KEYS({"particles.n", N_PAPER, NULL},                      \
-                                     {"particles.ensembles", "128 512 2048", NULL}),      \
-                    .grid = 1},                                                           \
-     .quick_rows = {.keys = VFY_KEYS({"particles.n", N_QUICK, NULL},                      \
-                                     {"particles.ensembles", "64 256", NULL}),            \
-                    .grid = 1},                                                           \
-     .needs = (const char *const[]){"T_exact", FINITE, NULL},                            \
-     .needs_why = "the cost grid needs the exact expectation of the n-particle estimator", \
-     .label = "{case} n={n} N={ensembles}",                                              \
-     .row_progress = "{case} n={n} N={N}: Err {Err:%.3e} (sys {Err_sys:%.3e} exact, stat " \
-                     "{Err_stat:%.3e}, Conf {Conf:%.3e}), {cpu_s:%.2f} CPU s",           \
-     .metrics = (const vfy_metric[])COST_GRID_METRICS(OBS, FINITE),                     \
-     .checks = (const vfy_check_spec[])COST_GRID_CHECKS(OBS, FINITE),                   \
-     .columns = grid_columns, .after_rows = grid_model,                                  \
-     .title = "{case}: accuracy against CPU cost, " WHAT " ({size} sizes)",              \
-     .notes = COST_GRID_NOTES(OBS, FINITE)}
-const vfy_case_desc vfy_cost_grw_ex3 =
-    COST_GRID("grw-ex3", "paper A Ex 3 (Table 1's Err: uncentred T_raw vs A.13)", "T_raw",
-              "T_raw_finite_n", "64 256 1024 4096 16384", "64 256 1024",
-              .must_fail = "heating.strength=1.05 collisions.constant=1.05");
-const vfy_case_desc vfy_cost_brs_ex2 =
-    COST_GRID("brs-ex2", "paper B Ex 2 (Table 2's Err: centred T vs B.15)", "T", "T_finite_n",
-              "16 64 256 1024 4096 16384", "16 64 256",
-              .must_fail = "background.constant=1.5",
-              .power_keys = "collisions.constant=1.05");
-
 /* ------------------------------------- hard spheres: jump and time step */
 
 /* A row of the grid: the jump scheme at (n, N), or a splitting at step h. */
@@ -640,21 +576,6 @@ const vfy_case_desc vfy_cost_brs_ex2 =
           ";particles.n=" #n ";particles.ensembles=" #N ";$scheme=" SPLIT ";$h=" #h
 #define E(n, N, h) TS("euler", n, N, h)
 #define S(n, N, h) TS("strang", n, N, h)
-/* Paper sizes, about 450 CPU s: the jump scheme over n at N = 256 and 1024
- * (the O(1/n) fit and the reference), Strang at n = 256 and 1024, Euler at
- * n = 1024, h = 0.8 ... 0.1 (3 ... 0.4 mean free times). */
-static const char *const split_paper[] = {
-    J(64, 256), J(256, 256), J(1024, 256), J(4096, 256), J(64, 1024), J(256, 1024),
-    J(1024, 1024),
-    S(256, 256, 0.8), S(256, 256, 0.4), S(256, 256, 0.2), S(256, 256, 0.1),
-    S(1024, 256, 0.8), S(1024, 256, 0.4), S(1024, 256, 0.2), S(1024, 256, 0.1),
-    E(1024, 256, 0.8), E(1024, 256, 0.4), E(1024, 256, 0.2), E(1024, 256, 0.1),
-    NULL};
-static const char *const split_quick[] = {
-    J(32, 64), J(128, 64), J(512, 64),
-    S(128, 64, 1.6), S(128, 64, 0.8), S(128, 64, 0.4),
-    E(128, 64, 1.6), E(128, 64, 0.8), E(128, 64, 0.4),
-    NULL};
 #undef J
 #undef TS
 #undef E
@@ -670,34 +591,6 @@ static double split_model(const double c[2], int scheme, double h)
     return c[0] * pow(h, p) + c[1] * pow(h, p + 1.0);
 }
 
-/* The notes of cost-split-ex5's two tables (templates on the hook's case
- * values). */
-#define SPLIT_NOTES                                                                    \
-    "{comment}; every row sets n, N, the scheme and h.\n\nT = T̄, each ensemble's time "   \
-    "average of the centred temperature over the output times t in [{steady_from:%g}, "   \
-    "{t_end:%g}] (steady state; steady.h), T_ci = 3.2 x its standard error over the N "    \
-    "ensembles. Reference: T̄_inf = {T_inf:%.6f} ± {T_inf_ci:%.6f} (99.9%), with b = "     \
-    "{b:%.4f}, from the weighted least squares T̄_jump(n) = T̄_inf + b/n over the {nj} "     \
-    "jump rows (chi^2 {chi2_jump:%.2f}); the first-Sonine closure's steady T is "          \
-    "{T_sonine:%.6f} (docs/theory.md §11.4). Err = |T̄ - T̄_inf|/T̄_inf, and Err_hi = Err + "        \
-    "sqrt(T_ci^2 + T̄_inf's half-width^2)/T̄_inf its 99.9% upper bound (the reference is "  \
-    "measured too); its parts: Err_sys = |b/n|/T̄_inf (the O(1/n) bias), Err_split = |c1 " \
-    "h^p + c2 h^(p+1)|/T̄_inf (the splitting error, fitted to the time-step rows: Euler p " \
-    "= 1, c1 = {c1_euler:%.4g}, c2 = {c2_euler:%.4g}; Strang p = 2, c1 = "                 \
-    "{c1_strang:%.4g}, c2 = {c2_strang:%.4g}), Err_stat = |T̄ - (T̄_inf + b/n + "            \
-    "splitting)|/T̄_inf (the residual: statistical), Conf = T_ci/T̄_inf; split_meas = (T̄ " \
-    "- T̄_inf - b/n)/T̄_inf as measured, with its half-width (row and fit). Every row's T̄ " \
-    "lies within |z| <= {zmax:%.2f} of the fitted model. Err_model = sqrt((Err_sys + "     \
-    "Err_split)^2 + (k Conf_fit)^2), k = sqrt(2/pi)/3.2 (the mean |z| of one Gaussian), "  \
-    "Conf_fit^2 N = A/n + B/n^2 (A = {A:%.4g}, B = {B:%.4g}); the O(1/n) bias is negative " \
-    "and the splitting error positive here, so the measured Err of a time-step row can "   \
-    "fall below the model by their cancellation, for which the model takes no credit. The " \
-    "reference's own half-width ({T_inf_rel_ci:%.1e} relative) bounds how small an Err "   \
-    "this grid can resolve.\n\nCPU: kappa n N with kappa = {kappa_us:%.3g} us for the jump " \
-    "rows; n N (a + g/h) with a = {a_us:%.3g} us and g = {g_us:%.3g} us for the time-step " \
-    "rows{at_engine: (pairs accepted by |g|, and the white noise brought lazily to the "    \
-    "particles each stage draws)}; candidates per accepted collision: {cand_per_coll_jump:%.1f} (jump rows), "     \
-    "{cand_per_coll_ts:%.1f} (time-step rows). Total wall time {wall_total:%.1f} s."
 #define SPLIT_TARGET_NOTES                                                             \
     "grid: the cheapest measured row (least cpu_s) whose Err_hi <= target (reached with "  \
     "99.9% confidence: a small Err by itself may be luck, or the O(1/n) and splitting "    \
@@ -1214,29 +1107,8 @@ static sim_status split_cost_model(vfy_case_run *run, vfy_report *r, char *msg, 
     return status;
 }
 
-static const vfy_metric split_cost_metrics[] = {
-    {"ns_per_collision", vfy_metric_per, "cpu_s", "collisions", 1e9},
-    {NULL, NULL, NULL, NULL, 0}};
-static const char split_cost_columns[] =
-    "scheme:%s n:%.0f N:%.0f h:%g T:%.6f T_ci:%.6f Err:%.3e Err_hi:%.3e Err_sys:%.3e "
-    "Err_split:%.3e Err_stat:%.3e Conf:%.3e split_meas:%+.3e split_meas_ci:%.2e "
-    "Err_model:%.3e cpu_s:%.2f wall_s:%.2f candidates=events:%.0f collisions:%.0f "
-    "normals:%.0f ns_per_collision:%.1f";
-
-/* The hard-sphere gas of paper A Ex 5 with the jump scheme over n x N and the
- * time-step scheme over h (the time-step rows simulate the solver's scene,
- * the jump rows the references' as split-ex5 does; at quick sizes shorter
- * runs). */
-const vfy_case_desc vfy_cost_split_ex5 = {
-    .must_fail = "heating.strength=1.1",
-    .scene = "split-ex5",
-    .paper_rows = {.rows = split_paper},
-    .quick_rows = {.rows = split_quick, .sets = "scene.t_end=16;scene.outputs=11"},
-    .label = "{case} {label}", .require = "[steady]",
-    .require_why = "the cost case needs [steady] (time averages)", .jump_rows = 1,
-    .row_progress = "{case} {label}: T̄ = {T:%.6f} ± {T_ci:%.6f}, {cpu_s:%.2f} CPU s",
-    .metrics = split_cost_metrics, .columns = split_cost_columns,
-    .after_rows = split_cost_model,
-    .title = "{case}: accuracy against CPU cost with the time step as a third axis, paper A "
-             "Ex 5's hard spheres ({size} sizes)",
-    .notes = SPLIT_NOTES};
+/* The functions this file's case files name (named.h, registry.c). */
+const vfy_named_fn vfy_cost_named[] = {
+    VFY_NAMED_HOOK("grid_model", grid_model),
+    VFY_NAMED_HOOK("split_cost_model", split_cost_model),
+    VFY_NAMED_END};

@@ -53,6 +53,10 @@
  * v0 = sqrt(2T/m)); the product of the time averages of mu2 and T^{3/2}
  * differs from the average of the product by O(1/n), which the tolerance
  * allows (3/n).
+  *
+ * The cases are data (verify/cases/scenes/hard-*.case, docs/adding-a-case.md);
+ * this file holds the metrics, guards, rules and hooks they name, listed
+ * in vfy_hard_named at its end.
  */
 #include "case_hard.h"
 
@@ -65,6 +69,7 @@
 #include "case_report.h"
 #include "cases.h"
 #include "driver.h"
+#include "named.h"
 #include "heated.h"
 #include "metrics.h"
 #include "references.h"
@@ -73,7 +78,6 @@
 #include "tolerances.h"
 
 #define TIGHT_STEPS 20        /* hard-stiff: a step budget per output interval too small */
-#define TIGHT_STEPS_TEXT "20"
 
 /* ------------------------------------------------ summaries and pure checks */
 
@@ -379,11 +383,6 @@ static vfy_verdict hard_rule(vfy_report *r, const char *name, vfy_case_run *run,
         return vfy_hard_check_finite(r, name, &sum);
     }
 }
-#define HARD_CHECK(LABEL, WHICH, COUNT) {.name = LABEL, .rule = hard_rule, .x = WHICH, .value = COUNT}
-/* The round-off bounds model this engine's own arithmetic (verify/cases/case_hard.h). */
-#define HARD_ROUNDOFF_CHECK(LABEL, WHICH, COUNT)                                    \
-    {.name = LABEL, .rule = hard_rule, .x = WHICH, .value = COUNT,                  \
-     .builtin_only = "its round-off bound models this engine's own arithmetic"}
 
 /* check_rel of value against expected (or x) within tol + value plus. */
 static vfy_verdict hard_rule_rel(vfy_report *r, const char *name, vfy_case_run *run,
@@ -650,246 +649,6 @@ static double hard_metric(const vfy_case_run *run, const vfy_row *row, const vfy
         return final_quantity(row, which);
     }
 }
-#define HARD_METRIC(NAME, WHICH) {NAME, hard_metric, NULL, NULL, WHICH}
-
-/* What each case needs of its scene (vfy_scene_requires): every hard case
- * paper A's units. */
-#define HARD_UNIT_MASS "grain_mass=1"
-#define HARD_UNIT_MASS_WHY "the hard cases use unit grain mass (paper A's units)"
-#define HARD_REQUIRE(WORDS, WHY)                                                        \
-    .require = HARD_UNIT_MASS " " WORDS, .require_why = HARD_UNIT_MASS_WHY "; this one " WHY
-#define WHITE_REQUIRE                                                                   \
-    HARD_REQUIRE("[heating] heating.type=white-noise [steady] steady.pairs>0",         \
-                 "needs white-noise [heating] and [steady] with pairs")
-
-/* The notes' frame: provenance first, wall time last. */
-#define HARD_NOTES(TEXT) "{comment}.\n\n" TEXT " Total wall time {wall_total:%.1f} s."
-#define HARD_TITLE(WHAT) "{case}: " WHAT " ({size} sizes)"
-
-/* ------------------------------------------- hard-dissipation, hard-tails */
-
-/* 2 beta = the first-Sonine loss at T0, so that the steady T is about T0. */
-#define HARD_DERIVED "heating.strength=heating_strength_T0"
-
-static const char *const white_values[] = {"a2_C10", NULL};
-#define WHITE_METRICS                                                                  \
-    HARD_METRIC("balance", Q_BALANCE), HARD_METRIC("balance_ci", Q_BALANCE_CI),         \
-        HARD_METRIC("balance_tol", Q_BALANCE_TOL),                                     \
-        {"gap_ci", hard_metric, "mu4_white", NULL, Q_GAP_CI},                          \
-        {"beta", vfy_metric_heating_strength, NULL, NULL, 0},                          \
-        {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0}
-static const vfy_metric dissipation_metrics[] = {WHITE_METRICS, {NULL, NULL, NULL, NULL, 0}};
-static const vfy_metric tails_metrics[] = {
-    WHITE_METRICS, HARD_METRIC("P_tail", Q_P_TAIL), HARD_METRIC("P_tail_ci", Q_P_TAIL_CI),
-    HARD_METRIC("P_tail_sonine", Q_P_TAIL_SONINE),
-    HARD_METRIC("P_tail_maxwell", Q_P_TAIL_MAXWELL), HARD_METRIC("tail_ratio", Q_TAIL_RATIO),
-    HARD_METRIC("tail_lower", Q_TAIL_LOWER), {NULL, NULL, NULL, NULL, 0}};
-
-#define WHITE_LABEL "{case} alpha={alpha:%g}"
-/* Steady a2 against (C.10), the Sonine estimate's own error plus the
- * half-width; paper C Eq. (23) mu4 = (d + 2) mu2 exactly (direct against
- * indirect); the exact energy balance within half-widths and 3/n. */
-#define WHITE_CHECKS                                                                   \
-    {.name = WHITE_LABEL " a2 vs Sonine (C.10)", .rule = vfy_rule_absolute, .value = "a2", \
-     .expected = "a2_C10", .tol = VFY_TOL_HARD_A2_WHITE, .plus = "a2_ci"},             \
-        {.name = WHITE_LABEL " mu4 vs 5 mu2 (C Eq. 23)", .rule = hard_rule_rel,        \
-         .value = "mu4", .expected = "mu4_white", .tol = VFY_TOL_MS_MU4_GAP_RTOL,      \
-         .plus = "gap_ci"},                                                            \
-        {.name = WHITE_LABEL " energy balance 2 beta = loss (exact)", .rule = hard_rule_rel, \
-         .value = "balance", .x = 1.0, .plus = "balance_tol"}
-#define WHITE_TAIL_CHECKS                                                              \
-    HARD_CHECK(WHITE_LABEL, HARD_VIOLATIONS, NULL), HARD_CHECK(WHITE_LABEL, HARD_FINITE, NULL), \
-        {.name = NULL}
-static const vfy_check_spec dissipation_checks[] = {WHITE_CHECKS, WHITE_TAIL_CHECKS};
-/* Paper A Ex 7, docs/theory.md §11.5: the overpopulated tail exp(-A c^{3/2}) is fatter
- * than the first Sonine approximation's Maxwellian times a polynomial, so
- * beyond c = 3 the population must reach at least the latter's (with the
- * reference's a2 of (C.10)), up to its half-width; a Maxwellian tail (0.37
- * of it here) or one cut short by a stale majorant falls below. */
-static const vfy_check_spec tails_checks[] = {
-    WHITE_CHECKS,
-    {.name = WHITE_LABEL " tail P(c >= 3) / first-Sonine value", .rule = hard_rule_at_least,
-     .value = "tail_ratio", .expected = "tail_lower"},
-    WHITE_TAIL_CHECKS};
-#define WHITE_COLUMNS_HEAD                                                                   \
-    "alpha:%g n:%.0f N:%.0f beta:%.5g T:%.5f T_ci:%.5f a2:%.5f a2_ci:%.5f a2_C10:%.5f mu2:%.5f " \
-    "mu4:%.5f mu4_white:%.5f balance:%.5f balance_tol:%.5f "
-#define WHITE_COLUMNS_TAIL "fictitious_fraction:%.3f violations:%.0f " VFY_COST_COLUMNS
-static const char dissipation_columns[] = WHITE_COLUMNS_HEAD WHITE_COLUMNS_TAIL;
-static const char tails_columns[] = WHITE_COLUMNS_HEAD
-    "P_tail:%.4g P_tail_ci:%.2g P_tail_sonine:%.4g P_tail_maxwell:%.4g " WHITE_COLUMNS_TAIL;
-#define WHITE_NOTES                                                                    \
-    "Steady state of white-noise heated hard spheres, exact jump scheme (time averages " \
-    "per ensemble over the output times t >= steady.from; half-widths 3.2 sigma over the " \
-    "ensembles). a2_C10: the Sonine estimate (paper C Eq. 10), allowed 0.006 + a2_ci. mu4 " \
-    "(pair sampling) against mu4_white = 5 mu2, paper C's exact steady relation (Eq. 23), " \
-    "within 0.2% plus half-widths. balance = gamma pi C (1 - alpha^2) <|g|^3>/6 over 2 "  \
-    "beta, with <|g|^3> = 8 mu2 v0^3/(pi (1 - alpha^2)): exactly 1 in the steady state of " \
-    "the n-particle process, allowed balance_tol = half-widths + 3/n."
-#define WHITE_PROGRESS                                                                 \
-    WHITE_LABEL ": T = {T:%.5f}, a2 = {a2:%.5f} ± {a2_ci:%.5f} (C.10 {a2_C10:%.5f}), "   \
-                "balance {balance:%.5f}"
-
-/* alpha = 0.05, 0.1; quick: n = 4000, N = 16, 20 mean free times of
- * relaxation, 40 samples one mean free time apart, 4000 pairs per sample. */
-#define STEADY_QUICK_SETS                                                              \
-    "particles.n=4000;particles.ensembles=16;scene.outputs=61;steady.pairs=4000;"       \
-    "scene.t_end=30;steady.from=10"
-const vfy_case_desc vfy_hard_dissipation = {
-    .must_fail = "heating.strength=1.05",
-    .power_keys = "collisions.restitution=0.9",
-    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
-    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
-                   .sets = STEADY_QUICK_SETS},
-    .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, .derived = HARD_DERIVED,
-    WHITE_REQUIRE, .values = white_values, .metrics = dissipation_metrics,
-    .checks = dissipation_checks, .columns = dissipation_columns,
-    .title = HARD_TITLE("very strong dissipation, white-noise heated hard spheres"),
-    .notes = HARD_NOTES(WHITE_NOTES " beta is set so that the first-Sonine steady T is "
-                                    "T0 = 1.")};
-
-/* The scene's own alpha = 0.1, beta = 30; quick: n = 2000, N = 16, 4000
- * pairs (t in [0, 1], samples t >= 0.25). */
-const vfy_case_desc vfy_hard_tails = {
-    .must_fail = "heating.strength=1.05",
-    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"})},
-    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.1", "alpha"}),
-                   .sets = "particles.n=2000;particles.ensembles=16;steady.pairs=4000"},
-    .label = WHITE_LABEL, .row_progress = WHITE_PROGRESS, WHITE_REQUIRE,
-    .values = white_values, .metrics = tails_metrics, .checks = tails_checks,
-    .columns = tails_columns,
-    .title = HARD_TITLE("paper A Ex 7, growing majorant and overpopulated tail"),
-    .notes = HARD_NOTES(
-        "Paper A Ex 7 (docs/theory.md §11.5): hard spheres, alpha = 0.1, beta = 30, gamma = 16, C = 1/(4 "
-        "pi), T0 = 1, heated to T about 3: the majorant U_max grows and the tail fills (f ~ "
-        "exp(-A c^{{3/2})). " WHITE_NOTES " P_tail: the steady probability of c >= 3 (reduced "
-        "speed) from the shells of the histogram (to c = {steady.c_max:%g}), against the first "
-        "Sonine approximation with a2 of (C.10) (P_tail_sonine) and the Maxwellian "
-        "(P_tail_maxwell); the tail must reach at least P_tail_sonine - P_tail_ci.")};
-
-/* ------------------------------------------------------- hard-nongaussian */
-
-static const char *const nongaussian_values[] = {"a2_C76", NULL};
-static const vfy_metric nongaussian_metrics[] = {
-    {"g", vfy_metric_heating_strength, NULL, NULL, 0},
-    {"h", vfy_metric_time_step, NULL, NULL, 0},
-    {"gap_ci", hard_metric, "mu4_nongaussian", NULL, Q_GAP_CI},
-    HARD_METRIC("delta", Q_DELTA), HARD_METRIC("f_over_phi_0", Q_RATIO0),
-    HARD_METRIC("f_over_phi_0_ci", Q_RATIO0_CI), HARD_METRIC("updates", Q_UPDATES),
-    HARD_METRIC("max_V", Q_MAX_V), {"V_bound", hard_metric, "updates", NULL, Q_V_BOUND},
-    HARD_METRIC("f_over_phi_sonine", Q_F_SONINE),
-    HARD_METRIC("balance", Q_BALANCE), HARD_METRIC("balance_tol", Q_BALANCE_TOL),
-    {NULL, NULL, NULL, NULL, 0}};
-/* Paper C Fig. 8: (C.76) is semi-empirical, "fairly good agreement"; Eq.
- * (44), exact in the steady state; near v = 0 (paper C §4.3, Fig. 9):
- * Delta(0) is about -1/a2, "an almost vanishing population of rest
- * particles", while the first Sonine approximation gives f/phi = 1 + 15 a2/8
- * (0.78 here); Eq. (62): the thermostat keeps the total momentum, and so do
- * the collisions. */
-static const vfy_check_spec nongaussian_checks[] = {
-    {.name = WHITE_LABEL " a2 vs Sonine (C.76)", .rule = hard_rule_rel, .value = "a2",
-     .expected = "a2_C76", .tol = VFY_TOL_MS_A2_NG_RTOL},
-    {.name = WHITE_LABEL " mu4 vs 2 mu2 <c^3>/<c> (C Eq. 44)", .rule = hard_rule_rel,
-     .value = "mu4", .expected = "mu4_nongaussian", .tol = VFY_TOL_MS_MU4_GAP_RTOL,
-     .plus = "gap_ci"},
-    {.name = WHITE_LABEL " f/phi near v = 0 (depleted, C §4.3)", .rule = hard_rule_at_most,
-     .value = "f_over_phi_0", .tol = VFY_TOL_HARD_DEPLETED, .plus = "f_over_phi_0_ci"},
-    /* the exact steady energy balance, (2/3) g <|v|> = loss, plus the time step's
-     * splitting error */
-    {.name = WHITE_LABEL " energy balance (2/3) g <|v|> = loss (exact)", .rule = hard_rule_rel,
-     .value = "balance", .x = 1.0, .tol = VFY_TOL_MS_BALANCE_RTOL, .plus = "balance_tol"},
-    HARD_ROUNDOFF_CHECK(WHITE_LABEL, HARD_MOMENTUM, "updates"),
-    HARD_CHECK(WHITE_LABEL, HARD_VIOLATIONS, NULL), HARD_CHECK(WHITE_LABEL, HARD_FINITE, NULL),
-    {.name = NULL}};
-static const char nongaussian_columns[] =
-    "alpha:%g n:%.0f N:%.0f g:%.5g h:%g T:%.5f a2:%.5f a2_ci:%.5f a2_C76:%.5f mu4:%.5f "
-    "mu4_nongaussian:%.5f f_over_phi_0:%.4f f_over_phi_0_ci:%.4f f_over_phi_sonine:%.4f "
-    "balance:%.5f balance_tol:%.5f max_V:%.3g V_bound:%.3g violations:%.0f "
-    VFY_COST_COLUMNS;
-const vfy_case_desc vfy_hard_nongaussian = {
-    .must_fail = "heating.strength=1.05",
-    .power_keys = "collisions.restitution=0.9",
-    .paper_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"})},
-    .quick_rows = {.keys = VFY_KEYS({"collisions.restitution", "0.05 0.1", "alpha"}),
-                   .sets = STEADY_QUICK_SETS},
-    .label = WHITE_LABEL,
-    .row_progress = WHITE_LABEL ": a2 = {a2:%.5f} (C.76 {a2_C76:%.5f}), f/phi(c < {delta:%g}) "
-                                "= {f_over_phi_0:%.3f}, max |V| {max_V:%.3g}",
-    .derived = HARD_DERIVED,
-    HARD_REQUIRE("[steady] steady.pairs>0 steady.bins>0 scene.scheme=timestep "
-                 "particles.zero_momentum=true",
-                 "needs scheme = timestep, zero_momentum and [steady] with pairs and bins"), .values = nongaussian_values,
-    .metrics = nongaussian_metrics, .checks = nongaussian_checks,
-    .columns = nongaussian_columns,
-    .title = HARD_TITLE("paper C's non-Gaussian thermostat near v = 0"),
-    .notes = HARD_NOTES(
-        "Steady state under F = m g v/|v| (paper C Eq. 14; the time-step scheme with paper "
-        "C's momentum-keeping increment w_i = g h (v_i/|v_i| - k), Eq. 62), time averages per "
-        "ensemble over t >= steady.from. a2 against the semi-empirical (C.76), allowed 25%. "
-        "mu4 (pair sampling) against mu4_nongaussian = 2 mu2 <c^3>/<c>, the exact steady "
-        "relation (Eq. 44), within 0.2% plus half-widths. f_over_phi_0: the reduced "
-        "distribution over the Maxwellian, averaged over the lowest shell of the histogram, "
-        "with its half-width; paper C §4.3: about 0 (an almost vanishing population of rest "
-        "particles), while the first Sonine approximation gives 1 + 15 a2/8 "
-        "(f_over_phi_sonine); allowed at most 0.5. max_V: an upper bound on |V_k| over "
-        "ensembles and times (sqrt(N (var + mean^2))) after zero_momentum, against the "
-        "round-off bound V_bound (verify/cases/case_hard.h). balance: the collisional loss over the "
-        "thermostat's input (2/3) g <|v|>, 1 in the steady state (exact), judged within "
-        "balance_tol (half-widths and 3/n) plus 0.2% for the time step.")};
-
-/* --------------------------------------------------------------- hard-tiny */
-
-/* Three gases (paper A Ex 3, paper B Ex 2, paper A Ex 5) at n = 2, 3, 4,
- * 41 output times, N = 2x10^4 (quick) or 10^6 (paper) ensembles; observed as
- * the papers do (sampled: the distribution of V and every moment are judged,
- * which the scenes' conditional observation does not give). */
-#define TINY_ROW(GAS, N)                                                             \
-    GAS " n=" #N ": scene=" GAS ";particles.n=" #N ";scene.observation=sampled;$gas=" GAS
-#define TINY_GAS(GAS) TINY_ROW(GAS, 2), TINY_ROW(GAS, 3), TINY_ROW(GAS, 4)
-static const char *const tiny_rows[] = {TINY_GAS("grw-ex3"), TINY_GAS("brs-ex2"),
-                                        TINY_GAS("grw-ex5"), NULL};
-static const char *const all_references[] = {NULL};   /* every row's, none required */
-#define TINY_LABEL "{case} {gas} n={n}"
-static const vfy_check_spec tiny_checks[] = {
-    /* the exact expectation of the n-particle T (docs/theory.md §11.2) */
-    {.name = TINY_LABEL " T vs exact finite-n expectation", .rule = vfy_rule_zscore,
-     .value = "T", .expected = "T_finite_n", .from = 1, .tol = VFY_TOL_ZMAX, .out = "z_T",
-     .guard = {only_maxwell, "T_finite_n", NULL, 0, NULL}},
-    {.name = TINY_LABEL " T_raw vs exact finite-n expectation", .rule = vfy_rule_zscore,
-     .value = "T_raw", .expected = "T_raw_finite_n", .from = 1, .tol = VFY_TOL_ZMAX,
-     .out = "z_T_raw", .guard = {only_with_series, "T_raw_finite_n", NULL, 0, NULL}},
-    {.name = TINY_LABEL " u vs exact expectation", .rule = hard_rule_u_exact, .out = "z_u",
-     .guard = {only_background, NULL, NULL, 1, NULL}},
-    {.name = TINY_LABEL " V Gaussian, variance (T0 + 2 beta t)/n",
-     .rule = hard_rule_gaussian_V, .out = "z_V2", .guard = {only_background, NULL, NULL, 0, NULL}},
-    {.name = TINY_LABEL, .rule = hard_rule, .x = HARD_VIOLATIONS,
-     .guard = {only_hard_spheres, NULL, NULL, 0, NULL}},
-    HARD_CHECK(TINY_LABEL, HARD_FINITE, NULL),
-    {.name = NULL}};
-static const vfy_metric tiny_metrics[] = {HARD_METRIC("violations_hs", Q_VIOLATIONS_HS),
-                                          {NULL, NULL, NULL, NULL, 0}};
-static const char tiny_columns[] =
-    "gas:%s n:%.0f N:%.0f z_T:%.2f z_T_raw:%.2f z_u:%.2f z_V2:%.2f "
-    "violations=violations_hs:%.0f "
-    VFY_COST_COLUMNS;
-const vfy_case_desc vfy_hard_tiny = {
-    .must_fail = "collisions.constant=1.05",
-    .paper_rows = {.rows = tiny_rows, .sets = "particles.ensembles=1000000;scene.outputs=41"},
-    .quick_rows = {.rows = tiny_rows, .sets = "particles.ensembles=20000;scene.outputs=41"},
-    .label = "{case} {gas} n={n}", .needs = all_references, .require = HARD_UNIT_MASS,
-    .require_why = HARD_UNIT_MASS_WHY,
-    .metrics = tiny_metrics, .checks = tiny_checks, .columns = tiny_columns,
-    .title = HARD_TITLE("tiny systems, n = 2, 3, 4"),
-    .notes = HARD_NOTES(
-        "Paper A Ex 3's heated Maxwell gas (grw-ex3), paper B Ex 2's Maxwell gas in a host "
-        "medium (brs-ex2) and paper A Ex 5's heated hard spheres (grw-ex5), each at n = 2, 3, "
-        "4 with 41 output times. z_T, z_T_raw: max |z| over the output times t > 0 of the "
-        "ensemble mean against the exact expectation of the n-particle estimator (docs/theory.md §11.2); "
-        "z_u: of u against paper B's exact u(t) = E u_n(t). z_V2: the bulk velocity of paper "
-        "A's gases is exactly N(0, (T0 + 2 beta t)/n) per component (collisions conserve it, "
-        "the heating adds independent Gaussian increments), whatever the kernel: (1/N) Σ_j "
-        "V_k^2 against its expectation, standard deviation (T0 + 2 beta t)/n sqrt(2/N). "
-        "Allowed |z| <= 4.5.")};
 
 /* ----------------------------------------------------------- hard-long-run */
 
@@ -956,83 +715,7 @@ static vfy_verdict long_run_rule_decay(vfy_report *r, const char *name, vfy_case
     return v;
 }
 
-static const char *const long_run_rows[] = {
-    "maxwell: $row=maxwell",
-    "elastic-hard-spheres: $row=elastic-hard-spheres;collisions.kernel=hard-spheres;"
-    "collisions.restitution=1",
-    NULL};
-#define LONG_LABEL "{case} {row}"
-static const vfy_check_spec long_run_checks[] = {
-    {.name = LONG_LABEL " T(t) vs T(0) e^{{-kt} (exact)", .rule = long_run_rule_decay,
-     .out = "z_T", .guard = {only_maxwell, NULL, NULL, 0, NULL}},
-    {.name = LONG_LABEL, .rule = hard_rule, .x = HARD_COOLING,
-     .guard = {only_maxwell, NULL, NULL, 0, NULL}},
-    {.name = LONG_LABEL, .rule = hard_rule, .x = HARD_ENERGY,
-     .value = "collisions_per_system", .guard = {only_hard_spheres, NULL, NULL, 0, NULL},
-     .builtin_only = "its round-off bound models this engine's own arithmetic"},
-    {.name = LONG_LABEL, .rule = hard_rule, .x = HARD_VIOLATIONS,
-     .guard = {only_hard_spheres, NULL, NULL, 0, NULL}},
-    HARD_ROUNDOFF_CHECK(LONG_LABEL, HARD_MOMENTUM, "collisions_per_system"),
-    HARD_CHECK(LONG_LABEL, HARD_FINITE, NULL),
-    {.name = NULL}};
-static const vfy_metric long_run_metrics[] = {
-    {"events_per_system", hard_metric, "events", NULL, Q_PER_SYSTEM},
-    {"collisions_per_system", hard_metric, "collisions", NULL, Q_PER_SYSTEM},
-    HARD_METRIC("alpha", Q_ALPHA), HARD_METRIC("t_end", Q_T_END),
-    HARD_METRIC("k_t_end", Q_K_T_END), HARD_METRIC("T_end_over_T0", Q_T_END_OVER_T0),
-    HARD_METRIC("max_V", Q_MAX_V),
-    {"V_bound", hard_metric, "collisions_per_system", NULL, Q_V_BOUND},
-    {"energy_bound", hard_metric, "collisions_per_system", NULL, Q_ENERGY_BOUND},
-    HARD_METRIC("violations_hs", Q_VIOLATIONS_HS), {NULL, NULL, NULL, NULL, 0}};
-static const char long_run_columns[] =
-    "row:%s n:%.0f N:%.0f alpha:%.9g t_end:%.6g events_per_system:%.4g "
-    "collisions_per_system:%.4g k_t_end:%.4g T_end_over_T0:%.6g z_T:%.2f max_V:%.3g "
-    "V_bound:%.3g energy_bound:%.3g violations=violations_hs:%.0f "
-    VFY_COST_COLUMNS;
-const vfy_case_desc vfy_hard_long_run = {
-    .must_fail = "collisions.constant=1.05",
-    .paper_rows = {.rows = long_run_rows, .sets = "$events=1e9"},
-    .quick_rows = {.rows = long_run_rows, .sets = "$events=1e7"},
-    .label = LONG_LABEL, .derive = long_run_times,
-    HARD_REQUIRE("![heating] ![background] [collisions] particles.zero_momentum=true",
-                 "needs [collisions] only and zero_momentum"),
-    .row_progress = LONG_LABEL ": {events_per_system:%.3g} events per system, T(t_end)/T(0) = "
-                               "{T_end_over_T0:%.6g}, max |V| {max_V:%.3g}",
-    .metrics = long_run_metrics, .checks = long_run_checks, .columns = long_run_columns,
-    .title = HARD_TITLE("long runs"),
-    .notes = HARD_NOTES(
-        "Each system runs its events in one jump-scheme trajectory, initial momentum removed "
-        "(zero_momentum). maxwell: Maxwell molecules, no heating, alpha just below 1 so that "
-        "k t_end = 4 (k = gamma pi C (1 - alpha^2)); every candidate is a collision. z_T: max "
-        "|z| of the ensemble mean of T(t) against mean T(0) e^{{-kt}, exact for Maxwell "
-        "molecules without heating, with the standard deviation of the inelastic losses (1 - "
-        "alpha^2) sqrt(80 E(t))/(12 n sqrt(N)), E(t) events per system by t. "
-        "elastic-hard-spheres: alpha = 1, E/5 collisions per system (about E candidate "
-        "events), energy and momentum conserved exactly in real arithmetic, T(t) against T(0) "
-        "within energy_bound. max_V: an upper bound on |V_k| of every system at every output "
-        "time (sqrt(N (var + mean^2))), against V_bound = 6 u s (sqrt(2 U)/n + 2), U "
-        "collisions per system, s the r.m.s. speed (verify/cases/case_hard.h).")};
-
 /* -------------------------------------------------------------- hard-stiff */
-
-/* Paper B's hard-sphere closures, local equilibrium (B.21) and Grad (B.22),
- * with K = (rho/rho_B)^2 C2/C1 = 100 (a fast stiff transient) and 1e-4, and
- * the Maxwell-kernel moment equations (B.13) with Kn = rho C2/(rho_B C1) =
- * 100 and 1e-4 against their closed form (B.15); BDF (the references'
- * default), Adams, and Adams with a step budget too small for K = 100's
- * transient (a real failure, which must come back as a clear message).
- * BDF and Adams without a budget solve every one of these (they must). */
-#define STIFF_METHODS(MODEL, NAME, K)                                                   \
-    NAME " K=" #K " BDF: $model=" #MODEL ";$model_name=" NAME ";$K=" #K ";$method=0;"       \
-         "$method_name=BDF",                                                            \
-        NAME " K=" #K " Adams: $model=" #MODEL ";$model_name=" NAME ";$K=" #K ";$method=1;" \
-             "$method_name=Adams",                                                      \
-        NAME " K=" #K " Adams max_steps: $model=" #MODEL ";$model_name=" NAME ";$K=" #K   \
-             ";$method=2;$method_name=Adams max_steps=" TIGHT_STEPS_TEXT
-#define STIFF_MODEL(MODEL, NAME) STIFF_METHODS(MODEL, NAME, 100), STIFF_METHODS(MODEL, NAME, 0.0001)
-static const char *const stiff_rows[] = {STIFF_MODEL(0, "LE (B.21)"),
-                                         STIFF_MODEL(1, "Grad (B.22)"),
-                                         STIFF_MODEL(2, "Maxwell (B.13)"), NULL};
 
 /* One CVODE integration of the row's model (vfy_rule_fn): judged by
  * vfy_hard_check_ode; its status, T at t_end, the steady state and the
@@ -1085,100 +768,52 @@ static vfy_verdict stiff_rule(vfy_report *r, const char *name, vfy_case_run *run
     free(buf);
     return v;
 }
-static const vfy_check_spec stiff_checks[] = {
-    {.name = "{case} {model_name} K={K} {method_name}", .rule = stiff_rule}, {.name = NULL}};
-static const char stiff_columns[] =
-    "model=model_name:%s K:%g method=method_name:%s status:%s T_end:%.10g T_steady:%.10g "
-    "rel_dev:%.2g message:%s";
-const vfy_case_desc vfy_hard_stiff = {
-    .paper_rows = {.rows = stiff_rows}, .quick_rows = {.rows = stiff_rows},
-    .no_simulation = 1,
-    HARD_REQUIRE("[background] background.kernel=hard-spheres", "needs a hard-sphere [background]"),
-    .checks = stiff_checks,
-    .columns = stiff_columns,
-    .title = HARD_TITLE("stiff references through CVODE"),
-    .notes = HARD_NOTES(
-        "Paper B's hard-sphere closures, local equilibrium (B.21) and Grad (B.22), with K = "
-        "100 (strongly inelastic, a fast stiff transient) and K = 1e-4 (almost no inelastic "
-        "loss), and the Maxwell-kernel moment equations (B.13) with Kn = 100 and 1e-4 against "
-        "their closed form (B.15), integrated with CVODE (rtol 1e-10, atol 1e-12; BDF with "
-        "Newton, Adams with fixed-point iteration, and Adams with at most " TIGHT_STEPS_TEXT
-        " steps per output interval) on {scene.outputs} output times of [0, {scene.t_end:%g}]. "
-        "T_steady: the closure's steady state by GSL's Brent root finder, or (B.18). Verdict: "
-        "success with every value finite, T > 0, T(t_end) within 1e-06 of T_steady (and the "
-        "whole trajectory within 1e-06 of the closed form); BDF and Adams must succeed, the "
-        "budgeted Adams may instead fail cleanly with a message; never garbage.")};
 
-/* ------------------------------------------------------------ hard-extreme */
-
-/* Maxwell rows: paper A Ex 3's heated gas (hard-extreme.ini) at n = 64, N =
- * 4000 (quick) or 40000, 41 outputs.  Hard spheres (paper A Ex 5's gas): n =
- * 256, N = 200 or 2000, t in [0, 6] with 601 outputs, 3001 from T0 = 1e8: the
- * majorant is recomputed from the synchronised system at each output time
- * only, and from T0 = 1e8 (U_max about 8e4, while T falls below 10^6 within
- * t = 0.002) the first interval is nearly all fictitious candidates, about
- * 4e7 (n - 1)/255 per unit time.  The rate = 1e6 row runs the same events as
- * the scene's rate = 4 in t_end scaled by 4/1e6: 8 -> 3.2e-5. */
-#define MAXWELL_SIZES(N) "particles.n=64;particles.ensembles=" N ";scene.outputs=41"
-#define HS_SIZES(N, M) "particles.n=256;particles.ensembles=" N ";scene.outputs=" M ";scene.t_end=6"
-#define EXTREME_ROWS(NM, NH)                                                            \
-    {"alpha=1e-3: scene=hard-extreme;collisions.restitution=1e-3;" MAXWELL_SIZES(NM),     \
-     "alpha=1: scene=hard-extreme;collisions.restitution=1;" MAXWELL_SIZES(NM),           \
-     "rate=1e6: scene=hard-extreme;collisions.rate=1e6;scene.t_end=3.2e-5;"               \
-     MAXWELL_SIZES(NM),                                                                  \
-     "T0=1e-8: scene=hard-extreme;particles.temperature=1e-8;" MAXWELL_SIZES(NM),         \
-     "T0=1e8: scene=hard-extreme;particles.temperature=1e8;" MAXWELL_SIZES(NM),           \
-     "hard-spheres T0=1e-8: scene=grw-ex5;particles.temperature=1e-8;" HS_SIZES(NH, "601"), \
-     "hard-spheres T0=1e8: scene=grw-ex5;particles.temperature=1e8;" HS_SIZES(NH, "3001"), \
-     NULL}
-static const char *const extreme_paper[] = EXTREME_ROWS("40000", "2000");
-static const char *const extreme_quick[] = EXTREME_ROWS("4000", "200");
-
-static const vfy_metric extreme_metrics[] = {
-    HARD_METRIC("t_end", Q_T_END), HARD_METRIC("T_end", Q_T_FINAL),
-    HARD_METRIC("T_end_ci", Q_T_FINAL_CI), HARD_METRIC("T_end_ref", Q_T_REF),
-    HARD_METRIC("sonine_tol", Q_SONINE_TOL),
-    {"fictitious_fraction", vfy_metric_fictitious_fraction, NULL, NULL, 0},
-    HARD_METRIC("violations_hs", Q_VIOLATIONS_HS), {NULL, NULL, NULL, NULL, 0}};
-#define EXTREME_LABEL "{case} {label}"
-/* Hard spheres, from T0 = 1e-8 or 1e8 to the steady state: T(t_end)
- * against the first-Sonine closure (CVODE from the same T0) times the
- * centred estimator's 1 - 1/n, allowed its half-width, the closure's model
- * error and 2/n for the rest of the O(1/n) bias. */
-static const vfy_check_spec extreme_checks[] = {
-    {.name = EXTREME_LABEL " T vs exact finite-n expectation", .rule = vfy_rule_zscore,
-     .value = "T", .expected = "T_finite_n", .from = 1, .tol = VFY_TOL_ZMAX, .out = "z_T",
-     .guard = {only_maxwell, NULL, NULL, 0, NULL}},
-    {.name = EXTREME_LABEL " T_raw vs exact finite-n expectation", .rule = vfy_rule_zscore,
-     .value = "T_raw", .expected = "T_raw_finite_n", .from = 1, .tol = VFY_TOL_ZMAX,
-     .out = "z_T_raw", .guard = {only_maxwell, NULL, NULL, 0, NULL}},
-    {.name = EXTREME_LABEL " T(t_end) vs Sonine closure", .rule = vfy_rule_absolute,
-     .value = "T_end", .expected = "T_end_ref", .plus = "sonine_tol",
-     .guard = {only_hard_spheres, NULL, NULL, 0, NULL}},
-    {.name = EXTREME_LABEL, .rule = hard_rule, .x = HARD_VIOLATIONS,
-     .guard = {only_hard_spheres, NULL, NULL, 0, NULL}},
-    {.name = EXTREME_LABEL " V Gaussian, variance (T0 + 2 beta t)/n",
-     .rule = hard_rule_gaussian_V, .out = "z_V2"},
-    HARD_CHECK(EXTREME_LABEL, HARD_FINITE, NULL),
-    {.name = NULL}};
-static const char extreme_columns[] =
-    "row=label:%s n:%.0f N:%.0f t_end:%.4g T_end:%.6g T_end_ci:%.2g T_end_ref:%.6g "
-    "z_T:%.2f z_T_raw:%.2f z_V2:%.2f fictitious_fraction:%.3f "
-    "violations=violations_hs:%.0f "
-    VFY_COST_COLUMNS;
-const vfy_case_desc vfy_hard_extreme = {
-    .must_fail = "heating.strength=1.05",
-    .paper_rows = {.rows = extreme_paper}, .quick_rows = {.rows = extreme_quick},
-    .label = EXTREME_LABEL, .needs = all_references, .require = HARD_UNIT_MASS,
-    .require_why = HARD_UNIT_MASS_WHY, .metrics = extreme_metrics, .checks = extreme_checks,
-    .columns = extreme_columns, .title = HARD_TITLE("extreme but legal parameters"),
-    .notes = HARD_NOTES(
-        "Maxwell rows: paper A Ex 3's heated gas (hard-extreme.ini) with restitution 1e-3, "
-        "restitution exactly 1 (k = 0: T = T0 + 2 beta t), rate gamma = 1e6 (t_end scaled to "
-        "keep the events: T falls from 1 to 2 beta/k = 1.1e-5), T0 = 1e-8 and T0 = 1e8; z_T, "
-        "z_T_raw: max |z| over the output times against the exact expectations of the "
-        "n-particle estimators (docs/theory.md §11.2). Hard-sphere rows: paper A Ex 5's gas from T0 = "
-        "1e-8 and 1e8 on [0, 6]: T(t_end) against (1 - 1/n) times the first-Sonine closure "
-        "(CVODE from the same T0), allowed T_end_ci + (0.002 + 2/n) T_end_ref; majorant "
-        "violations 0. z_V2 (every row): the bulk velocity is exactly N(0, (T0 + 2 beta t)/n) "
-        "per component.")};
+/* The functions this file's case files name (named.h, registry.c). */
+const vfy_named_fn vfy_hard_named[] = {
+    VFY_NAMED_RULE_X("hard_check_finite", hard_rule, HARD_FINITE),
+    VFY_NAMED_RULE_X("hard_check_violations", hard_rule, HARD_VIOLATIONS),
+    VFY_NAMED_RULE_X("hard_check_momentum", hard_rule, HARD_MOMENTUM),
+    VFY_NAMED_RULE_X("hard_check_energy", hard_rule, HARD_ENERGY),
+    VFY_NAMED_RULE_X("hard_check_cooling", hard_rule, HARD_COOLING),
+    VFY_NAMED_RULE("hard_rule_rel", hard_rule_rel),
+    VFY_NAMED_RULE("hard_rule_at_least", hard_rule_at_least),
+    VFY_NAMED_RULE("hard_rule_at_most", hard_rule_at_most),
+    VFY_NAMED_RULE("hard_rule_gaussian_V", hard_rule_gaussian_V),
+    VFY_NAMED_RULE("hard_rule_u_exact", hard_rule_u_exact),
+    VFY_NAMED_GUARD("only_maxwell", only_maxwell),
+    VFY_NAMED_GUARD("only_hard_spheres", only_hard_spheres),
+    VFY_NAMED_GUARD("only_with_series", only_with_series),
+    VFY_NAMED_GUARD("only_background", only_background),
+    VFY_NAMED_METRIC_X("hard_alpha", hard_metric, Q_ALPHA),
+    VFY_NAMED_METRIC_X("hard_balance", hard_metric, Q_BALANCE),
+    VFY_NAMED_METRIC_X("hard_balance_ci", hard_metric, Q_BALANCE_CI),
+    VFY_NAMED_METRIC_X("hard_balance_tol", hard_metric, Q_BALANCE_TOL),
+    VFY_NAMED_METRIC_X("hard_gap_ci", hard_metric, Q_GAP_CI),
+    VFY_NAMED_METRIC_X("hard_p_tail", hard_metric, Q_P_TAIL),
+    VFY_NAMED_METRIC_X("hard_p_tail_ci", hard_metric, Q_P_TAIL_CI),
+    VFY_NAMED_METRIC_X("hard_p_tail_sonine", hard_metric, Q_P_TAIL_SONINE),
+    VFY_NAMED_METRIC_X("hard_p_tail_maxwell", hard_metric, Q_P_TAIL_MAXWELL),
+    VFY_NAMED_METRIC_X("hard_tail_ratio", hard_metric, Q_TAIL_RATIO),
+    VFY_NAMED_METRIC_X("hard_tail_lower", hard_metric, Q_TAIL_LOWER),
+    VFY_NAMED_METRIC_X("hard_delta", hard_metric, Q_DELTA),
+    VFY_NAMED_METRIC_X("hard_ratio0", hard_metric, Q_RATIO0),
+    VFY_NAMED_METRIC_X("hard_ratio0_ci", hard_metric, Q_RATIO0_CI),
+    VFY_NAMED_METRIC_X("hard_updates", hard_metric, Q_UPDATES),
+    VFY_NAMED_METRIC_X("hard_max_v", hard_metric, Q_MAX_V),
+    VFY_NAMED_METRIC_X("hard_v_bound", hard_metric, Q_V_BOUND),
+    VFY_NAMED_METRIC_X("hard_energy_bound", hard_metric, Q_ENERGY_BOUND),
+    VFY_NAMED_METRIC_X("hard_t_end_over_t0", hard_metric, Q_T_END_OVER_T0),
+    VFY_NAMED_METRIC_X("hard_violations_hs", hard_metric, Q_VIOLATIONS_HS),
+    VFY_NAMED_METRIC_X("hard_per_system", hard_metric, Q_PER_SYSTEM),
+    VFY_NAMED_METRIC_X("hard_t_end", hard_metric, Q_T_END),
+    VFY_NAMED_METRIC_X("hard_k_t_end", hard_metric, Q_K_T_END),
+    VFY_NAMED_METRIC_X("hard_f_sonine", hard_metric, Q_F_SONINE),
+    VFY_NAMED_METRIC_X("hard_t_final", hard_metric, Q_T_FINAL),
+    VFY_NAMED_METRIC_X("hard_t_final_ci", hard_metric, Q_T_FINAL_CI),
+    VFY_NAMED_METRIC_X("hard_t_ref", hard_metric, Q_T_REF),
+    VFY_NAMED_METRIC_X("hard_sonine_tol", hard_metric, Q_SONINE_TOL),
+    VFY_NAMED_DERIVE("long_run_times", long_run_times),
+    VFY_NAMED_RULE("long_run_rule_decay", long_run_rule_decay),
+    VFY_NAMED_RULE("stiff_rule", stiff_rule),
+    VFY_NAMED_END};

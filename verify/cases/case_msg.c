@@ -28,6 +28,10 @@
  *     the part of the heat flux carried by c_x^2 <= 6 (87% at alpha = 1, 66% at
  *     alpha = 0.3).
  * The three cases run the same scenes, so they share their checkpoints.
+  *
+ * The cases are data (verify/cases/scenes/msg-*.case, docs/adding-a-case.md);
+ * this file holds the metrics, guards, rules and hooks they name, listed
+ * in vfy_msg_named at its end.
  */
 #include <math.h>
 #include <stdio.h>
@@ -38,44 +42,10 @@
 #include "driver.h"
 #include "figure.h"
 #include "metrics.h"
+#include "named.h"
 #include "references.h"
 #include "steady.h"
 #include "tolerances.h"
-
-/* Quick sizes (CI): n = 50000, N = 16, relaxation to t = 6 tau (7 collisions
- * per particle), then 21 samples half a tau apart: kappa' to about 6%.  With
- * N = 8 the Student's t half-width rested on 7 degrees of freedom, and the
- * extrapolation to eps* -> 0 (which weighs the eps* = 0.025 row by 4/3)
- * failed a right solver in 1 of 20 --seeds runs, where that row's sample
- * spread came out at 0.4 of its usual size. */
-#define MSG_QUICK_SETS                                                                 \
-    "particles.n=50000;particles.ensembles=16;scene.t_end=16;scene.outputs=33;"         \
-    "steady.from=6"
-#define MSG_LABEL "{case} alpha={alpha:%.2f} eps*={eps_star:%g}"
-/* The figures draw the two force strengths apart (eps* = 0.05 departs from
- * linear response): each its own symbol */
-#define MSG_EPS_GROUPS                                                                 \
-    .group_by = "eps_star", .groups = VFY_LIST("eps* 0.025=0.025", "eps* 0.05=0.05")
-#define MSG_PROGRESS                                                                   \
-    MSG_LABEL ": kappa'/kappa0 = {kappa:%.4f} ± {kappa_ci_t:%.4f}, b'_2 = {b2c:%.4f}, "     \
-              "a2 = {a2:%.4f} ({wall_s:%.1f} s)"
-#define MSG_ROW(A, E) "alpha " A " eps* " E ": collisions.restitution=" A ";heat-flux.strength=" \
-                      E ";$alpha=" A ";$eps_star=" E
-static const char *const paper_rows[] = {
-    MSG_ROW("0.3", "0.025"), MSG_ROW("0.3", "0.05"), MSG_ROW("0.4", "0.025"),
-    MSG_ROW("0.5", "0.025"), MSG_ROW("0.6", "0.025"), MSG_ROW("0.7", "0.025"),
-    MSG_ROW("0.8", "0.025"), MSG_ROW("0.9", "0.025"), MSG_ROW("1.0", "0.025"),
-    MSG_ROW("1.0", "0.05"), NULL};
-static const char *const quick_rows[] = {MSG_ROW("0.3", "0.025"), MSG_ROW("1.0", "0.025"),
-                                         MSG_ROW("1.0", "0.05"), NULL};
-static const char *const sonine_quick_rows[] = {MSG_ROW("1.0", "0.025"), MSG_ROW("1.0", "0.05"),
-                                                NULL};
-/* D §4 prints the part of the heat flux carried by c_x^2 <= 6 */
-static const char *const distribution_rows[] = {MSG_ROW("0.3", "0.025") ";$inner_paper=0.66",
-                                                MSG_ROW("1.0", "0.025") ";$inner_paper=0.87",
-                                                NULL};
-static const char *const distribution_quick_rows[] = {
-    MSG_ROW("1.0", "0.025") ";$inner_paper=0.87", NULL};
 
 /* ------------------------------------------------------------- metrics */
 
@@ -128,18 +98,6 @@ static double msg_z_pair(const vfy_case_run *run, const vfy_row *row, const vfy_
                       vfy_values_get(&row->values, m->b), vfy_values_get(&row->values, cb));
 }
 
-/* Each reported quantity Q per unit of the case's force ("Qc"), its
- * half-width and that half-width with Student's t ("Qc_ci_t"); a2's
- * Student's half-width (a2 is no response: even in eps*). */
-#define PER_FORCE(Q, C)                                                                \
-    {C, msg_per_case_force, Q, NULL, 0}, {C "_ci", msg_per_case_force, Q "_ci", NULL, 1}, \
-        {C "_ci_t", vfy_metric_student_ci, C "_ci", NULL, 0}
-#define RESPONSE_METRICS                                                               \
-    PER_FORCE("kappa_prime", "kappa"), PER_FORCE("b1", "b1c"), PER_FORCE("b2", "b2c"),    \
-        PER_FORCE("b3", "b3c"), PER_FORCE("b1_x", "b1xc"), PER_FORCE("b2_x", "b2xc"),     \
-        PER_FORCE("b3_x", "b3xc"), PER_FORCE("b1_x_outer", "outerc"),                   \
-        {"a2_ci_t", vfy_metric_student_ci, "a2_ci", NULL, 0}
-
 /* 100 (collisions / expected - 1) over the run: the thermostat holds T = T0
  * at every step, so the N systems collide at the rate of (2.2a) summed over
  * pairs, N (n - 1)/2 4 pi gamma beta_c C <|g|>, with <|g|> = 4 sqrt(T0/(pi m))
@@ -161,15 +119,6 @@ static double msg_collision_rate(const vfy_case_run *run, const vfy_row *row,
     return 100.0 * (vfy_values_get(&row->values, "collisions") / expected - 1.0);
 }
 
-static const vfy_metric kappa_metrics[] = {
-    RESPONSE_METRICS,
-    {"collision_rate_percent", msg_collision_rate, NULL, NULL, 0},
-    {"below_sonine", msg_half_widths_below, "kappa", "kappa_prime_sonine", 0},
-    {"below_margin", msg_below_margin, NULL, NULL, 0},
-    {"sonine_percent", vfy_metric_percent_diff, "kappa", "kappa_prime_sonine", 0},
-    {"modified_percent", vfy_metric_percent_diff, "kappa", "kappa_prime_modified", 0},
-    {NULL, NULL, NULL, NULL, 0}};
-
 /* max over k = 2, 3 of (|b'_k| + x b'_k's half-width)/b'_1: with x = -1 the
  * smallest, with x = 0 the measured size. */
 static double msg_higher_over_b1(const vfy_case_run *run, const vfy_row *row,
@@ -182,14 +131,6 @@ static double msg_higher_over_b1(const vfy_case_run *run, const vfy_row *row,
                 fabs(vfy_values_get(v, "b3c")) + m->x * vfy_values_get(v, "b3c_ci_t"))
            / b1;
 }
-static const vfy_metric sonine_metrics[] = {
-    RESPONSE_METRICS,
-    {"z1", msg_z_pair, "b1c", "b1xc", 0},
-    {"z2", msg_z_pair, "b2c", "b2xc", 0},
-    {"z3", msg_z_pair, "b3c", "b3xc", 0},
-    {"higher_over_b1", msg_higher_over_b1, NULL, NULL, 0},
-    {"higher_low", msg_higher_over_b1, NULL, NULL, -1},
-    {NULL, NULL, NULL, NULL, 0}};
 
 /* The part of b'_1 (hence of the heat flux) carried by c_x^2 <= 6:
  * 1 - outer/b1_x, with the half-width of the ratio from both (independent
@@ -206,72 +147,6 @@ static double msg_inner_fraction(const vfy_case_run *run, const vfy_row *row,
     const double sb = vfy_values_get(&row->values, "b1xc_ci_t");
     return fabs(o / b) * sqrt((so / o) * (so / o) + (sb / b) * (sb / b));
 }
-static const vfy_metric distribution_metrics[] = {
-    RESPONSE_METRICS,
-    {"inner", msg_inner_fraction, NULL, NULL, 0},
-    {"inner_ci_t", msg_inner_fraction, NULL, NULL, 1},
-    {NULL, NULL, NULL, NULL, 0}};
-
-/* ------------------------------------------------------------- checks */
-
-#define MSG_NAME "{case} alpha={alpha:%.1f} eps*={eps_star:%g} "
-#define VIOLATIONS {.name = MSG_NAME "majorant violations", .rule = vfy_rule_violations, \
-                    .value = "violations"}
-static const vfy_check_spec kappa_checks[] = {
-    VIOLATIONS,
-    /* D Fig. 3: the first Sonine approximation "dramatically overestimates"
-     * kappa' for alpha below about 0.7 */
-    {.name = MSG_NAME "kappa' more than {at_paper:5}{at_quick:1} half-width{at_paper:s} below first Sonine",
-     .rule = vfy_rule_range, .value = "below_margin", .lo = 0.0, .hi = INFINITY,
-     .guard = {vfy_guard_only_at_most, "alpha", NULL, 0.5 + 1e-12, NULL}},
-    /* the elastic rows collide at the Maxwellian's rate (msg_collision_rate):
-     * a collision constant 5% off is 5% more collisions */
-    {.name = MSG_NAME "collisions {collision_rate_percent:%+.3f}% from the Maxwellian's rate",
-     .rule = vfy_rule_absolute, .value = "collision_rate_percent", .x = 0.0,
-     .tol = VFY_TOL_MSG_COLLISION_RATE_PERCENT,
-     .guard = {vfy_guard_only_at_least, "alpha", NULL, 1.0 - 1e-12, NULL}},
-    /* ... and "does a good job" above it: within 5% (plus the half-width) */
-    {.name = MSG_NAME "kappa' within 5% of first Sonine", .rule = vfy_rule_absolute,
-     .value = "kappa", .expected = "kappa_prime_sonine",
-     .rtol = VFY_TOL_MSG_SONINE_RTOL, .plus = "kappa_ci_t",
-     .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.7 - 1e-12, NULL}},
-    {.name = NULL}};
-
-#define LINEAR_ONLY(Z)                                                                 \
-    {vfy_guard_at_most, "eps_star", NULL, 0.025 + 1e-12,                                \
-     "eps*={eps_star:%g} probes the departure from linear response, where the "         \
-     "estimators need not agree (D Appendix A): " Z " = {" Z ":%.2f}"}
-static const vfy_check_spec sonine_checks[] = {
-    VIOLATIONS,
-    /* D §4, Appendix A: the two estimators agree in the linear regime (Fig. 2),
-     * which paper D's eps* = 0.025 stands for; eps* = 0.05 probes the departure
-     * from it, where they need not agree (reported) */
-    {.name = MSG_NAME "b'_1 estimators agree", .rule = vfy_rule_range, .value = "z1",
-     .lo = 0.0, .hi = VFY_TOL_MSG_ESTIMATORS_Z, .guard = LINEAR_ONLY("z1")},
-    {.name = MSG_NAME "b'_2 estimators agree", .rule = vfy_rule_range, .value = "z2",
-     .lo = 0.0, .hi = VFY_TOL_MSG_ESTIMATORS_Z, .guard = LINEAR_ONLY("z2")},
-    {.name = MSG_NAME "b'_3 estimators agree", .rule = vfy_rule_range, .value = "z3",
-     .lo = 0.0, .hi = VFY_TOL_MSG_ESTIMATORS_Z, .guard = LINEAR_ONLY("z3")},
-    /* D Fig. 4: b'_2, b'_3 "practically negligible" for alpha >= 0.7 (within
-     * their intervals) ... */
-    {.name = MSG_NAME "|b'_2|, |b'_3| <= 0.15 b'_1 (- half-width)", .rule = vfy_rule_range,
-     .value = "higher_low", .lo = -INFINITY, .hi = VFY_TOL_MSG_HIGHER_NEGLIGIBLE,
-     .guard = {vfy_guard_only_at_least, "alpha", NULL, 0.7 - 1e-12, NULL}},
-    /* ... "comparable to the first" at strong dissipation (beyond them) */
-    {.name = MSG_NAME "max(|b'_2|, |b'_3|) >= 0.3 b'_1 (- half-width)", .rule = vfy_rule_range,
-     .value = "higher_low", .lo = VFY_TOL_MSG_HIGHER_COMPARABLE, .hi = INFINITY,
-     .guard = {vfy_guard_only_at_most, "alpha", NULL, 0.3 + 1e-12, NULL}},
-    {.name = NULL}};
-
-static const vfy_check_spec distribution_checks[] = {
-    VIOLATIONS,
-    /* D §4: 87% (alpha = 1) and 66% (alpha = 0.3) of the heat flux from
-     * c_x^2 <= 6, printed to the percent: half a percent of reading */
-    {.name = MSG_NAME "heat flux from c_x^2 <= 6 vs paper D ({inner_paper:%.2f})",
-     .rule = vfy_rule_absolute, .value = "inner", .expected = "inner_paper",
-     .tol = VFY_TOL_MSG_INNER_READ,
-     .plus = "inner_ci_t"},
-    {.name = NULL}};
 
 /* ------------------------------------------------ eps -> 0 (the hook) */
 
@@ -370,23 +245,6 @@ static sim_status msg_linear(vfy_case_run *run, vfy_report *r, char *msg, size_t
     }
     return SIM_OK;
 }
-
-#define LINEAR_CHECK(WHAT, Q, EXACT)                                                   \
-    {.name = "{case} alpha=1 " WHAT " extrapolated to eps* -> 0 vs exact elastic "      \
-             "({" EXACT ":%.6f})",                                                      \
-     .rule = vfy_rule_absolute, .value = Q "_lin_1", .expected = EXACT,                 \
-     .plus = Q "_lin_1_ci"}
-static const vfy_check_spec kappa_case_checks[] = {
-    LINEAR_CHECK("kappa'/kappa0", "kappa", "kappa_elastic_exact"), {.name = NULL}};
-static const vfy_check_spec sonine_case_checks[] = {
-    LINEAR_CHECK("b'_1", "b1", "b1_elastic_exact"), LINEAR_CHECK("b'_2", "b2", "b2_elastic_exact"),
-    LINEAR_CHECK("b'_3", "b3", "b3_elastic_exact"),
-    /* the elastic gas without force is Maxwellian: a2 -> 0 as eps* -> 0 (a2 is
-     * even in eps*: 0.0039 and 0.0159 at eps* = 0.025 and 0.05, paper sizes),
-     * exactly; a restitution 5% low (alpha = 0.95) gives the HCS's -0.010 */
-    {.name = "{case} alpha=1 a2 extrapolated to eps* -> 0 vs 0 (the Maxwellian)",
-     .rule = vfy_rule_absolute, .value = "a2_lin_1", .x = 0.0, .plus = "a2_lin_1_ci"},
-    {.name = NULL}};
 
 /* After the rows: the linear-response table and D Fig. 1:
  * kappa'(t)/kappa0 = -(64/(75 sqrt(pi))) <c^2 c_x>(t)/eps* from the rows'
@@ -583,107 +441,16 @@ static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char 
     return status;
 }
 
-/* ---------------------------------------------------------- descriptions */
-
-static const char *const kappa_values[] = {"kappa_prime_sonine", "kappa_prime_modified",
-                                           "kappa_sonine", "mu_star_sonine", NULL};
-#define MSG_COMMON(ROWS, QUICK)                                                            \
-    .scene = "msg", .label = MSG_LABEL, .row_progress = MSG_PROGRESS,                      \
-    .paper_rows = {.rows = ROWS}, .quick_rows = {.rows = QUICK, .sets = MSG_QUICK_SETS}
-/* The sizes line of the notes, of the first row's scene, and how the checks use N. */
-#define MSG_SIZES                                                                          \
-    "n = {particles.n}, N = {particles.ensembles}, dt = {scene.dt:%g} tau, steady "         \
-    "averages over t in [{steady.from:%g}, {scene.t_end:%g}] tau every "                   \
-    "{scene.output_interval:%g} tau (paper D: one system of n = 2x10^5, 200 "              \
-    "realizations, dt = 0.003 tau)"
-#define MSG_T_NOTE                                                                         \
-    "_ci = 3.2 standard errors over the N = {N} independent ensembles; the checks use "     \
-    "_ci_t, Student's t for N - 1 degrees of freedom ({t_quantile:%.2f} standard errors)"
-
-const vfy_case_desc vfy_msg_kappa = {
-    .must_fail = "heat-flux.strength=1.05 collisions.constant=1.05",
-    .power_keys = "collisions.restitution=0.95",
-    MSG_COMMON(paper_rows, quick_rows), .values = kappa_values, .metrics = kappa_metrics,
-    .checks = kappa_checks, .case_checks = kappa_case_checks, .after_rows = msg_kappa_after,
-    .columns = "alpha:%.2f eps_star:%g kappa_prime=kappa:%.5f kappa_prime_ci=kappa_ci:%.5f "
-               "kappa_prime_sonine:%.5f kappa_prime_modified:%.5f sonine_percent:%+.2f "
-               "modified_percent:%+.2f below_sonine:%.1f kappa_sonine:%.5f "
-               "mu_star_sonine:%.5f a2:%.5f a2_ci:%.5f violations:%.0f " VFY_COST_COLUMNS,
-    .figures = VFY_FIGURES({.kind = VFY_FIGURE_POINTS, .x = "alpha",
-                            .series = VFY_LIST("DSMC=kappa"), MSG_EPS_GROUPS,
-                            .refs = VFY_LIST("first Sonine=kappa_prime_sonine",
-                                             "modified first Sonine=kappa_prime_modified"),
-                            .x_lo = 0.3, .x_hi = 1.0,
-                            .title = "{case}: kappa'/kappa0 against alpha (paper D Fig. 3)",
-                            .xlabel = "alpha", .ylabel = "kappa'/kappa0"}),
-    .title = "{case}: paper D Fig. 3, the modified thermal conductivity kappa'/kappa0 "
-             "against alpha ({size} sizes)",
-    .notes =
-        "{comment}; " MSG_SIZES ".\n\nkappa_prime = kappa'/kappa0 = -q_x/(T eps kappa0), the time "
-        "average of the steady state (kappa0 the elastic first-Sonine conductivity, D Eq. "
-        "2.47), per unit of the case's force; kappa_prime_sonine, kappa_sonine, mu_star_sonine: "
-        "the first Sonine approximation (D Eqs. 2.42-2.47, a2 from C.40); "
-        "kappa_prime_modified: the modified first Sonine approximation (D ref. [28]); "
-        "sonine_percent, modified_percent: 100 (kappa' - approximation)/approximation; "
-        "below_sonine: how many half-widths (_ci_t) kappa' lies below the first Sonine value. "
-        "The rows at eps* = 0.05 (alpha = 0.3, 1) measure how far the paper's eps* = 0.025 is "
-        "from linear response: the second table extrapolates both to eps* -> 0 in eps*^2 and "
-        "compares alpha = 1 with the exact elastic value (1.025218, reached by the Sonine "
-        "expansion of the linearised Boltzmann operator). Figure {case}-t: kappa'(t) of "
-        "every row (paper D Fig. 1 shows alpha = 0.3 at both strengths). Checks: more than "
-        "5 half-widths below first Sonine for alpha <= 0.5 (1 at quick sizes); within 5% "
-        "(+ half-width) of it for alpha >= 0.7 (paper D: it \"does a good job\" there and \"dramatically "
-        "overestimates\" below); alpha = 1 extrapolated within its half-width of the exact "
-        "value; " MSG_T_NOTE ". Total wall time {wall_total:%.1f} s."};
-
-const vfy_case_desc vfy_msg_sonine = {
-    .must_fail = "collisions.restitution=0.95",
-    .power_keys = "heat-flux.strength=1.05",
-    MSG_COMMON(paper_rows, sonine_quick_rows), .metrics = sonine_metrics, .checks = sonine_checks,
-    .case_checks = sonine_case_checks, .after_rows = msg_linear,
-    .columns = "alpha:%.2f eps_star:%g b1=b1c:%.4f b1_ci=b1c_ci:%.4f b2=b2c:%.4f "
-               "b2_ci=b2c_ci:%.4f b3=b3c:%.4f b3_ci=b3c_ci:%.4f b1_x=b1xc:%.4f "
-               "b1_x_ci=b1xc_ci:%.4f b2_x=b2xc:%.4f b2_x_ci=b2xc_ci:%.4f b3_x=b3xc:%.4f "
-               "b3_x_ci=b3xc_ci:%.4f z1:%.2f z2:%.2f z3:%.2f higher_over_b1:%.3f higher_low:%.3f "
-               "violations:%.0f " VFY_COST_COLUMNS,
-    .figures = VFY_FIGURES(
-        {.kind = VFY_FIGURE_POINTS, .x = "alpha",
-         .series = VFY_LIST("b'_1=b1c", "b'_2=b2c", "b'_3=b3c", "b'_2 from c_x=b2xc"),
-         MSG_EPS_GROUPS,
-         .title = "{case}: Sonine coefficients b'_k against alpha (paper D Fig. 4)",
-         .xlabel = "alpha", .ylabel = "b'_k"}),
-    .title = "{case}: paper D Figs. 2, 4, the Sonine coefficients b'_1, b'_2, b'_3 against "
-             "alpha ({size} sizes)",
-    .notes =
-        "{comment}; " MSG_SIZES ".\n\nb1..b3 = b'_k = P_k <c_x L_k^(3/2)(c^2)>/eps* (D Eq. 3.10), "
-        "b1_x..b3_x = Q_k <c_x L_k^(1/2)(c_x^2)>/eps* (D Eq. 3.12), time averages of the "
-        "steady state per unit of the case's force; z1..z3 = |b_k - b_k_x| over the "
-        "quadrature sum of their half-widths (_ci_t); higher_over_b1 = max(|b'_2|, |b'_3|)/b'_1, "
-        "higher_low the same with each |b'_k| less its half-width. Checks: the estimators "
-        "agree (z <= 1) at every row at eps* = 0.025 (they are equal in linear response, D "
-        "Appendix A; the rows at eps* = 0.05 report z as a measure of the departure); higher_low <= 0.15 for alpha >= 0.7 (paper D: "
-        "\"practically negligible\"); higher_low >= 0.3 at alpha = 0.3 (\"comparable to "
-        "the first\"); at alpha = 1 each b'_k extrapolated to eps* -> 0 (second table) within "
-        "its half-width of the exact elastic solution; " MSG_T_NOTE
-        ". Total wall time {wall_total:%.1f} s."};
-
-const vfy_case_desc vfy_msg_distribution = {
-    .must_fail = "collisions.restitution=0.5",
-    .power_keys = "heat-flux.strength=1.05",
-    MSG_COMMON(distribution_rows, distribution_quick_rows), .metrics = distribution_metrics,
-    .checks = distribution_checks, .after_rows = msg_distribution_after,
-    .columns = "alpha:%.2f eps_star:%g inner:%.4f inner_ci_t:%.4f inner_paper:%.2f "
-               "b1=b1c:%.4f b1_x=b1xc:%.4f b1_x_outer=outerc:%.4f violations:%.0f "
-               VFY_COST_COLUMNS,
-    .title = "{case}: paper D Figs. 5-7, the first-order distribution phi(c_x^2) and the "
-             "heat flux by c_x ({size} sizes)",
-    .notes =
-        "{comment}; " MSG_SIZES ".\n\ninner = the part of b'_1 from the c_x estimator, hence of the "
-        "heat flux (D Eq. 4.6: beta_1(6)/b'_1), carried by particles with c_x^2 <= 6: "
-        "1 - b1_x_outer/b1_x; paper D prints 87% at alpha = 1 and 66% at alpha = 0.3. Figures "
-        "{case}-phi-ALPHA: phi(c_x^2) = sqrt(pi) e^(c_x^2) g1(c_x)/c_x (D Eqs. 4.3-4.5; g1 the "
-        "odd part of the c_x marginal over eps*, averaged over bins of 0.1 in |c_x|) with its "
-        "truncations phi_K = sum_(k <= K) b'_k L_k^(1/2)(c_x^2); {case}-beta1: beta_1/b'_1 at "
-        "the bins' upper edges beside the first Sonine's. Check: inner within half a percent "
-        "(the paper's reading precision) plus its half-width (_ci_t) of the printed value; "
-        MSG_T_NOTE ". Total wall time {wall_total:%.1f} s."};
+/* The functions this file's case files name (named.h, registry.c). */
+const vfy_named_fn vfy_msg_named[] = {
+    VFY_NAMED_METRIC("msg_per_case_force", msg_per_case_force),
+    VFY_NAMED_METRIC("msg_half_widths_below", msg_half_widths_below),
+    VFY_NAMED_METRIC("msg_below_margin", msg_below_margin),
+    VFY_NAMED_METRIC("msg_z_pair", msg_z_pair),
+    VFY_NAMED_METRIC("msg_collision_rate", msg_collision_rate),
+    VFY_NAMED_METRIC("msg_higher_over_b1", msg_higher_over_b1),
+    VFY_NAMED_METRIC("msg_inner_fraction", msg_inner_fraction),
+    VFY_NAMED_HOOK("msg_linear", msg_linear),
+    VFY_NAMED_HOOK("msg_kappa_after", msg_kappa_after),
+    VFY_NAMED_HOOK("msg_distribution_after", msg_distribution_after),
+    VFY_NAMED_END};

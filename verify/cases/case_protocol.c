@@ -16,11 +16,16 @@
  *   T_raw = (T0/3n) chi^2_{3n},  T = (T0/3n) chi^2_{3(n-1)},  ux ~ N(0, T0/(m n)):
  * variances 2 T0^2/(3n), 2 T0^2 (n-1)/(3 n^2) and T0/(m n), excess kurtoses 4/n,
  * 4/(n-1) and 0.  The sample variance s^2 of N such estimates has standard
- * error sigma^2 sqrt(2/(N-1) + kurtosis/N). */
+ * error sigma^2 sqrt(2/(N-1) + kurtosis/N).  *
+ * The cases are data (verify/cases/scenes/protocol.case, docs/adding-a-case.md);
+ * this file holds the metrics, guards, rules and hooks they name, listed
+ * in vfy_protocol_named at its end.
+ */
 #include <math.h>
 #include <string.h>
 
 #include "driver.h"
+#include "named.h"
 #include "observe.h"
 #include "scene.h"
 #include "steady.h"
@@ -98,66 +103,11 @@ static double histogram_integral(const vfy_case_run *run, const vfy_row *row,
     return integral;
 }
 
-#define VAR_METRICS(NAME)                                                              \
-    {NAME "_var0", initial_variance, NAME, NULL, VAR_REPORTED},                        \
-        {NAME "_var0_exact", initial_variance, NAME, NULL, VAR_EXACT},                 \
-        {NAME "_var0_allowed", initial_variance, NAME, NULL, VAR_ALLOWED}
-static const vfy_metric protocol_metrics[] = {
-    VAR_METRICS("T"), VAR_METRICS("T_raw"), VAR_METRICS("ux"),
-    {"steady_T_gap", steady_gap, NULL, NULL, 0},
-    {"f_integral", histogram_integral, NULL, NULL, 0},
-    {NULL, NULL, NULL, NULL, 0}};
-
-#define STEADY_ROW {vfy_guard_only_at_least, "steady", NULL, 1, NULL}
-#define VAR_CHECK(NAME)                                                                \
-    {.name = "{case} {label} " NAME " variance at t = 0 vs the initial Maxwellian's",           \
-     .rule = vfy_rule_absolute, .value = NAME "_var0", .expected = NAME "_var0_exact",  \
-     .plus = NAME "_var0_allowed"}
-static const vfy_check_spec protocol_checks[] = {
-    {.name = "{case} {label} T vs exact finite-n expectation", .rule = vfy_rule_zscore,
-     .value = "T",
-     .expected = "T_finite_n", .tol = VFY_TOL_ZMAX},
-    {.name = "{case} {label} T_raw vs exact finite-n expectation", .rule = vfy_rule_zscore,
-     .value = "T_raw", .expected = "T_raw_finite_n", .tol = VFY_TOL_ZMAX},
-    VAR_CHECK("T"), VAR_CHECK("T_raw"), VAR_CHECK("ux"),
-    {.name = "{case} {label} steady T = the T column's average over t >= steady.from",
-     .rule = vfy_rule_range, .value = "steady_T_gap", .lo = 0.0,
-     .hi = VFY_TOL_PROTOCOL_STEADY_RTOL, .guard = STEADY_ROW},
-    {.name = "{case} {label} speed histogram integrates to the fraction below c_max",
-     .rule = vfy_rule_range, .value = "f_integral", .lo = VFY_TOL_PROTOCOL_F_LO,
-     .hi = 1.0 + VFY_TOL_PROTOCOL_STEADY_RTOL, .guard = STEADY_ROW},
-    {.name = NULL}};
-
-/* The rows: the series alone, then with a steady section (a solver without
- * one may refuse that row alone). */
-static const char *const protocol_rows[] = {
-    "series: $steady=0",
-    "steady: steady.from=1;steady.bins=16;steady.c_max=5;$steady=1",
-    NULL};
-
-static const char *const protocol_needs[] = {"T_finite_n", "T_raw_finite_n", NULL};
-
-const vfy_case_desc vfy_protocol = {
-    .paper = "protocol",
-    .needs = protocol_needs,
-    .needs_why = VFY_NEEDS_MAXWELL,
-    .label = "{case} {label}",
-    .paper_rows = {.rows = protocol_rows},
-    .quick_rows = {.rows = protocol_rows},
-    .metrics = protocol_metrics,
-    .checks = protocol_checks,
-    .columns = "row=label:%s n:%.0f N:%.0f T_var0:%.6f T_var0_exact:%.6f T_raw_var0:%.6f "
-               "T_raw_var0_exact:%.6f ux_var0:%.6f ux_var0_exact:%.6f steady_T_gap:%.2e "
-               "f_integral:%.8f cpu_s:%.2f wall_s:%.2f",
-    .must_fail = "heating.strength=1.5",
-    .title = "{case}: the solver protocol's conformance case",
-    .notes = "{comment}.\n\nThe mechanics of a solver's adapter (docs/solver-protocol.md), on "
-             "paper A Example 3's gas at n = {n}: T and T_raw against their exact finite-n "
-             "expectations at every output time (the grid and the columns); the sample "
-             "variances of T, T_raw and ux at t = 0 against the initial Maxwellian's exact "
-             "2 T0^2 (n - 1)/(3 n^2), 2 T0^2/(3n) and T0/(m n), within 4.5 standard errors of a "
-             "sample variance (the variance columns: NAME_var is the sample variance of the N "
-             "per-ensemble estimates); steady T against the time average of the T column over "
-             "t >= steady.from (the steady window), and the speed histogram's integral, the "
-             "fraction of reduced speeds below c_max (its normalisation, docs/theory.md "
-             "§10.4). Total wall time {wall_total:%.1f} s."};
+/* The functions this file's case files name (named.h, registry.c). */
+const vfy_named_fn vfy_protocol_named[] = {
+    VFY_NAMED_METRIC_X("initial_variance_reported", initial_variance, VAR_REPORTED),
+    VFY_NAMED_METRIC_X("initial_variance_exact", initial_variance, VAR_EXACT),
+    VFY_NAMED_METRIC_X("initial_variance_allowed", initial_variance, VAR_ALLOWED),
+    VFY_NAMED_METRIC("steady_gap", steady_gap),
+    VFY_NAMED_METRIC("histogram_integral", histogram_integral),
+    VFY_NAMED_END};

@@ -22,6 +22,10 @@
  * differences stand VFY_TOL_SPLIT_CLEAN_RATIO times above their half-widths;
  * otherwise it is skipped with the reason.  Each row's CPU time, candidates and collisions
  * give the cost; the notes compare what each scheme pays for a given error.
+  *
+ * The cases are data (verify/cases/scenes/split-*.case, docs/adding-a-case.md);
+ * this file holds the metrics, guards, rules and hooks they name, listed
+ * in vfy_split_named at its end.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -30,6 +34,7 @@
 #include "case_report.h"
 #include "driver.h"
 #include "figure.h"
+#include "named.h"
 #include "tolerances.h"
 
 typedef struct split_row {
@@ -254,45 +259,6 @@ static double jump_value(const vfy_case_run *run, const vfy_row *row, const vfy_
     return vfy_values_get(&run->rows[0].values, m->a);
 }
 
-static const vfy_metric split_metrics[] = {
-    {"dT", minus_jump, "T", NULL, 0}, {"dT_ci", hypot_jump, "T_ci", NULL, 0},
-    {"da2", minus_jump, "a2", NULL, 0}, {"da2_ci", hypot_jump, "a2_ci", NULL, 0},
-    {"dTmax_t", max_diff_jump, "T", NULL, 0}, {"dTmax_noise", max_diff_jump, "T", NULL, 1},
-    {"dT_abs", magnitude, "dT", NULL, 0}, {"da2_abs", magnitude, "da2", NULL, 0},
-    {"dT_abs_prev", previous_same, "dT_abs", NULL, 0},
-    {"da2_abs_prev", previous_same, "da2_abs", NULL, 0},
-    {"dT_ci_prev", previous_same, "dT_ci", NULL, 0},
-    {"da2_ci_prev", previous_same, "da2_ci", NULL, 0}, {"h_prev", previous_same, "h", NULL, 0},
-    {"CF_T", cf_same, "dT_abs", NULL, 0}, {"CF_a2", cf_same, "da2_abs", NULL, 0},
-    {"ns_per_collision", ns_per_collision, NULL, NULL, 0}, {"a2_jump", jump_value, "a2", NULL, 0},
-    {"clean_ratio", constant, NULL, NULL, VFY_TOL_SPLIT_CLEAN_RATIO},
-    {NULL, NULL, NULL, NULL, 0}};
-
-static const vfy_check_spec split_checks[] = {
-    {.name = "{case} {label} majorant violations", .rule = vfy_rule_violations, .value = "violations"},
-    {.name = "{case} {scheme} h={h_prev}->{h} CF of the T difference", .rule = cf_in_band,
-     .value = "CF_T",
-     .guard = {halving_clean, "dT_abs", "dT_ci", 0,
-               "difference {dT_abs:%.3g} ± {dT_ci:%.3g} at h = {h} not {clean_ratio} times its "
-               "half-width: CF {CF_T:%.3g} not judged"}},
-    {.name = "{case} {scheme} h={h_prev}->{h} CF of the a2 difference",
-     .guard = {a2_halving, "da2_abs", "da2_ci", 1,
-               "difference {da2_abs_prev:%.3g} at h = {h_prev} is not small against a2 = "
-               "{a2_jump:%.3g} itself (it saturates: a large kick makes f Maxwellian): CF "
-               "{CF_a2:%.3g} not judged"}},
-    {.name = "{case} {scheme} h={h_prev}->{h} CF of the a2 difference", .rule = cf_in_band,
-     .value = "CF_a2",
-     .guard = {a2_halving, "da2_abs", "da2_ci", 0,
-               "difference {da2_abs:%.3g} ± {da2_ci:%.3g} at h = {h} not {clean_ratio} times "
-               "its half-width: CF {CF_a2:%.3g} not judged"}},
-    {.name = NULL}};
-
-static const char split_columns[] =
-    "scheme:%s h:%g T:%.6f T_ci:%.6f dT:%+.3e dT_ci:%.2e CF_T:%.2f dTmax_t:%.3e "
-    "dTmax_noise:%.2e a2:%.5f a2_ci:%.5f da2:%+.3e da2_ci:%.2e CF_a2:%.2f cpu_s:%.2f "
-    "wall_s:%.2f candidates=events:%.0f collisions:%.0f normals:%.0f "
-    "ns_per_collision:%.1f";
-
 /* What a given accuracy costs (the notes and a progress line): for a target
  * error eps of T̄ (relative to T̄), the step each splitting needs (from its
  * error at its smallest resolved step and its order) and the CPU time at that
@@ -400,84 +366,20 @@ static sim_status split_after_gaussian(vfy_case_run *run, vfy_report *r, char *m
     return split_after(run, r, min_halvings, msg, msglen);
 }
 
-#define SPLIT_ROW(SCHEME, H)                                                              \
-    SCHEME " h=" H ": $scheme=" SCHEME "; $h=" H "; scene.splitting=" SCHEME "; scene.dt=" H
-static const char *const paper_rows[] = {
-    "jump: $scheme=jump",       SPLIT_ROW("euler", "1.6"),  SPLIT_ROW("euler", "0.8"),
-    SPLIT_ROW("euler", "0.4"),  SPLIT_ROW("euler", "0.2"),  SPLIT_ROW("euler", "0.1"),
-    SPLIT_ROW("strang", "1.6"), SPLIT_ROW("strang", "0.8"), SPLIT_ROW("strang", "0.4"),
-    SPLIT_ROW("strang", "0.2"), SPLIT_ROW("strang", "0.1"), NULL};
-static const char *const quick_rows[] = {
-    "jump: $scheme=jump",       SPLIT_ROW("euler", "1.6"),  SPLIT_ROW("euler", "0.8"),
-    SPLIT_ROW("euler", "0.4"),  SPLIT_ROW("strang", "1.6"), SPLIT_ROW("strang", "0.8"),
-    SPLIT_ROW("strang", "0.4"), NULL};
-
-/* The notes of both cases, around what differs: the gas and its flights. */
-#define SPLIT_NOTES_HEAD                                                                        \
-    "{comment}; n = {n}, N = {N} in every row.\n\nT, a2: each ensemble's time average "          \
-    "over the output times t in [{steady_from:%g}, {t_end:%g}] (steady state), T_ci, "           \
-    "a2_ci = 3.2 x the standard error over the N ensembles. dT, da2 = time-step row "            \
-    "minus the jump row, with the half-width of a difference of independent runs, "             \
-    "sqrt(c1^2 + c2^2). CF = |d| at 2h / |d| at h, judged (Euler in [{euler_lo:%g}, "            \
-    "{euler_hi:%g}], Strang in [{strang_lo:%g}, {strang_hi:%g}]) only where both "              \
-    "differences exceed {clean_ratio:%g} times their half-widths, and for a2 only where "       \
-    "its difference at 2h is at most a quarter of a2 itself"
-#define SPLIT_NOTES_DTMAX                                                                       \
-    ". dTmax_t = max over the output times of |T(t) - T_jump(t)| (the transient included), "    \
-    "dTmax_noise its largest half-width. "
-#define SPLIT_NOTES_COST                                                                        \
-    "\n\nCost of a splitting error of T̄ at these n and N (the step from each splitting's "       \
-    "order and its smallest resolved difference; the CPU time from a cost model fitted to "      \
-    "the rows, with the candidates of the smallest step and the flights scaled to the step):"  \
-    SPLIT_COST_TEXT ". Total wall time {wall_total:%.1f} s."
-
-/* What both cases share: the rows (CI: small, so the small steps are skipped
- * as noise), the metrics, checks and columns. */
-#define SPLIT_DESC_COMMON                                                                      \
-    .paper_rows = {.rows = paper_rows},                                                        \
-    .quick_rows = {.rows = quick_rows,                                                         \
-                   .sets = "particles.n=200;particles.ensembles=60;scene.t_end=16;"            \
-                           "scene.outputs=11"},                                                \
-    .label = "{case} {label}", .require = "[steady] scene.scheme=timestep",                   \
-    .require_why = "the splitting case needs [steady] and scheme = timestep", .jump_rows = 1, \
-    .metrics = split_metrics,                                                                  \
-    .checks = split_checks, .columns = split_columns,                                          \
-    .row_progress = "{case} {label}: T = {T:%.6f} ± {T_ci:%.6f}, a2 = {a2:%.5f} ± "            \
-                    "{a2_ci:%.5f} ({wall_s:%.1f} s)"
-
-const vfy_case_desc vfy_split_ex5 = {
-    .must_fail = "heating.strength=1.05",
-    .power_keys = "collisions.restitution=0.95",
-    SPLIT_DESC_COMMON,
-    .after_rows = split_after_ex5,
-    .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "
-             "paper A Ex 5's gas ({size} sizes)",
-    .notes = SPLIT_NOTES_HEAD
-             " (at larger h the Gaussian kicks of one step make f nearly Maxwellian and the "
-             "difference saturates at about -a2)" SPLIT_NOTES_DTMAX
-             "Strang merges the half flights of adjacent "
-             "steps (exact for white noise), so it costs what Euler costs. ns_per_collision = "
-             "CPU time per accepted collision, everything included{at_engine: (the time-step "
-             "rows accept pairs by |g| as the jump scheme does, docs/theory.md §8.5, and bring "
-             "each particle a stage draws forward under the white noise, lazily; normals = "
-             "standard normal variates drawn)}." SPLIT_NOTES_COST};
-
-/* The Gaussian thermostat: the time-step rows keep the map global (a step
- * costs O(1) plus its collisions, engine.c stages_scaled) and collide at the
- * rate of the step's start; the jump row has no splitting. */
-const vfy_case_desc vfy_split_gaussian = {
-    .must_fail = "collisions.restitution=0.97",
-    SPLIT_DESC_COMMON,
-    .after_rows = split_after_gaussian,
-    .title = "{case}: splitting error of the time-step scheme against the exact jump scheme, "
-             "hard spheres with the Gaussian thermostat ({size} sizes)",
-    .notes = SPLIT_NOTES_HEAD SPLIT_NOTES_DTMAX
-             "The thermostat v -> v e^{zeta h} is one global factor in both schemes: the "
-             "time-step rows collide the stored velocities for h at the rate of the step's "
-             "start (scaled by the factor then), which is the splitting; the jump row's "
-             "candidates follow the rate as it grows, e^{zeta t}, exactly (docs/scenes.md). "
-             "Strang merges the half flights of adjacent steps (scalings multiply), so it costs "
-             "what Euler costs. ns_per_collision = CPU time per accepted collision, everything "
-             "included{at_engine: (pairs accepted by |g| in every row, docs/theory.md §8.5; "
-             "normals = the initial states' standard normal variates, the same in every row, so "
-             "the cost model has no flight term)}." SPLIT_NOTES_COST};
+/* The functions this file's case files name (named.h, registry.c). */
+const vfy_named_fn vfy_split_named[] = {
+    VFY_NAMED_METRIC("minus_jump", minus_jump),
+    VFY_NAMED_METRIC("hypot_jump", hypot_jump),
+    VFY_NAMED_METRIC("max_diff_jump", max_diff_jump),
+    VFY_NAMED_METRIC("magnitude", magnitude),
+    VFY_NAMED_METRIC("previous_same", previous_same),
+    VFY_NAMED_METRIC("cf_same", cf_same),
+    VFY_NAMED_METRIC("ns_per_collision", ns_per_collision),
+    VFY_NAMED_GUARD("halving_clean", halving_clean),
+    VFY_NAMED_GUARD("a2_halving", a2_halving),
+    VFY_NAMED_RULE("cf_in_band", cf_in_band),
+    VFY_NAMED_METRIC("constant", constant),
+    VFY_NAMED_METRIC("jump_value", jump_value),
+    VFY_NAMED_HOOK("split_after_ex5", split_after_ex5),
+    VFY_NAMED_HOOK("split_after_gaussian", split_after_gaussian),
+    VFY_NAMED_END};

@@ -1,136 +1,116 @@
-/* The suites: the cases in suite order and the runs of a suite (suites.h). */
+/* The suites: the cases in suite order, from their case files, and the runs
+ * of a suite (suites.h). */
 #include "suites.h"
 
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "case_file.h"
 #include "driver.h"
+#include "registry.h"
 #include "table.h"
 #include "verdicts.h"
 
-/* The cases, in suite order: case_grw.c (paper A), case_brs.c (paper B). */
-extern const vfy_case_desc vfy_grw_ex3, vfy_grw_ex4, vfy_grw_ex5, vfy_grw_ex6, vfy_grw_ex7,
-    vfy_grw_ex8;
-/* case_brs.c */
-extern const vfy_case_desc vfy_brs_ex1, vfy_brs_ex2, vfy_brs_ex3, vfy_brs_ex4, vfy_brs_ex5;
-/* case_ms.c (paper C) */
-extern const vfy_case_desc vfy_ms_white_noise, vfy_ms_gaussian, vfy_ms_non_gaussian,
-    vfy_ms_table1, vfy_ms_tails;
-/* case_msg.c (paper D) */
-extern const vfy_case_desc vfy_msg_kappa, vfy_msg_sonine, vfy_msg_distribution;
-extern const vfy_case_desc vfy_protocol;
-/* case_as.c (paper E) */
-extern const vfy_case_desc vfy_as_steady;
-extern const vfy_case_desc vfy_as_transient;
-extern const vfy_case_desc vfy_as_distribution;
-extern const vfy_case_desc vfy_as_slab;
-extern const vfy_case_desc vfy_as_slab_vs_homogeneous;
-/* case_vro.c (issue 4: variance-reduced observation) */
-extern const vfy_case_desc vfy_vro_grw_ex3;
-/* case_split.c (docs/theory.md §8.5) */
-extern const vfy_case_desc vfy_split_ex5;
-extern const vfy_case_desc vfy_split_gaussian;
-/* case_cost.c (docs/theory.md §1.4: accuracy against CPU cost) */
-extern const vfy_case_desc vfy_cost_grw_ex3, vfy_cost_brs_ex2;
-extern const vfy_case_desc vfy_cost_split_ex5;
-/* case_hard.c (the hard suite, issue #5 item 1) */
-extern const vfy_case_desc vfy_hard_dissipation, vfy_hard_nongaussian, vfy_hard_tails,
-    vfy_hard_tiny, vfy_hard_long_run, vfy_hard_stiff, vfy_hard_extreme;
+/* The loaded cases, in suite order (vfy_cases_load). */
+static vfy_case_file **files;
+static size_t nfiles;
 
-static const vfy_case cases[] = {
-    {"grw-ex3", "grw", "paper A Ex 3, Table 1: heated Maxwell gas, Emax = O(1/n)", 1,
-     &vfy_grw_ex3},
-    {"grw-ex4", "grw", "paper A Ex 4, Table 2: cooling Maxwell gas, Emax = O(1/n)", 1,
-     &vfy_grw_ex4},
-    {"grw-ex5", "grw", "paper A Ex 5: heated hard spheres vs Maxwellian and Sonine closures", 1,
-     &vfy_grw_ex5},
-    {"grw-ex6", "grw", "paper A Ex 6: the steady tail exponent of heated Maxwell molecules "
-     "(b = 1)", 1, &vfy_grw_ex6},
-    {"grw-ex7", "grw", "paper A Ex 7: the steady tail exponent of heated hard spheres "
-     "(b = 3/2)", 1, &vfy_grw_ex7},
-    {"grw-ex8", "grw", "paper A Ex 8: the steady tail exponent of heated VHS, lambda = 1/2 "
-     "(b = 5/4)", 1, &vfy_grw_ex8},
-    {"vro-grw-ex3", "grw", "paper A Ex 3 observed through the exact conditional expectation "
-     "over the pending Brownian increments: the variance reduction", 1, &vfy_vro_grw_ex3},
-    {"brs-ex1", "brs", "paper B Ex 1, Table 1: Maxwell kernels with a background, Err = O(1/n)",
-     1, &vfy_brs_ex1},
-    {"brs-ex2", "brs", "paper B Ex 2, Table 2: Maxwell kernels, drifting background", 1,
-     &vfy_brs_ex2},
-    {"brs-ex3", "brs", "paper B Ex 3: Maxwell kernels, light background (slow relaxation)", 0,
-     &vfy_brs_ex3},
-    {"brs-ex4", "brs", "paper B Ex 4: hard spheres, K = 1/8: kinetic T* vs LE and Grad closures",
-     1, &vfy_brs_ex4},
-    {"brs-ex5", "brs", "paper B Ex 5: hard spheres, K = 1: kinetic T* vs LE and Grad closures", 0,
-     &vfy_brs_ex5},
-    {"ms-a2-white-noise", "ms", "paper C Fig. 1: steady a2 vs alpha, white noise, vs (C.10)", 1,
-     &vfy_ms_white_noise},
-    {"ms-a2-gaussian", "ms", "paper C Figs. 4, 6: steady a2, a3 vs alpha, Gaussian (HCS)", 1,
-     &vfy_ms_gaussian},
-    {"ms-a2-non-gaussian", "ms", "paper C Fig. 8: steady a2 vs alpha, non-Gaussian, vs (C.76)",
-     1, &vfy_ms_non_gaussian},
-    {"ms-table1", "ms", "paper C Table 1: mu4 direct vs through the exact steady relations", 1,
-     &vfy_ms_table1},
-    {"ms-tails", "ms", "paper C Figs. 3, 7: high-energy tails G(c), fitted A vs theory", 0,
-     &vfy_ms_tails},
-    {"msg-kappa", "msg", "paper D Figs. 1, 3: kappa'/kappa0 vs alpha from the heat-flux force,"
-     " first Sonine, eps* -> 0 at alpha = 1 vs the exact elastic value", 1, &vfy_msg_kappa},
-    {"msg-sonine", "msg", "paper D Figs. 2, 4: Sonine coefficients b'_1..b'_3 from both"
-     " estimators vs alpha", 1, &vfy_msg_sonine},
-    {"msg-distribution", "msg", "paper D Figs. 5-7: phi(c_x^2), its truncations, beta_1/b'_1,"
-     " the heat flux from c_x^2 <= 6", 1, &vfy_msg_distribution},
-    {"as-steady", "as", "paper E Figs. 14-16: steady uniform shear flow, IHS and EHS at"
-     " a tau0 = 4 and 0.1, beside BGK", 1, &vfy_as_steady},
-    {"as-transient", "as", "paper E Figs. 5-13: the transient against s, IHS and EHS at"
-     " a tau0 = 4 and 0.1, beside BGK; eta*(a*) collapsing at alpha = 0.5", 1,
-     &vfy_as_transient},
-    {"as-distribution", "as", "paper E Figs. 13, 17-18: steady R0..R3, the marginals g_x, g_y"
-     " and F(C) at alpha = 0.9 and 0.5, IHS and EHS, beside BGK", 1, &vfy_as_distribution},
-    {"as-slab", "as", "paper E Sec. IV A, Figs. 1-4: the Lees-Edwards slab from E's two initial"
-     " states, IHS and EHS: s(t), profiles, steady stresses", 1, &vfy_as_slab},
-    {"as-slab-vs-homogeneous", "as", "paper E Fig. 9: the slab from both initial states"
-     " against the homogeneous run, IHS at alpha = 0.9, a tau0 = 4", 1,
-     &vfy_as_slab_vs_homogeneous},
-    {"split-ex5", "split", "docs/theory.md §8.5: splitting error of the time-step scheme vs the"
-     " jump scheme, Euler and Strang", 1, &vfy_split_ex5},
-    {"split-gaussian", "split", "docs/theory.md §8.5: the same with the Gaussian thermostat,"
-     " which the jump scheme runs exactly: Euler and Strang converge to it", 1,
-     &vfy_split_gaussian},
-    {"cost-grw-ex3", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU"
-     " time over n x N, paper A Ex 3", 1, &vfy_cost_grw_ex3},
-    {"cost-brs-ex2", "cost", "docs/theory.md §1.4: Err (systematic + statistical) against CPU"
-     " time over n x N, paper B Ex 2", 1, &vfy_cost_brs_ex2},
-    {"cost-split-ex5", "cost", "docs/theory.md §1.4: Err (systematic + splitting +"
-     " statistical) against CPU time over n, N and h, paper A Ex 5", 1, &vfy_cost_split_ex5},
-    {"hard-dissipation", "hard", "very strong dissipation: white-noise heated hard spheres,"
-     " alpha = 0.05, 0.1, steady a2, mu4 = 5 mu2, exact energy balance", 1,
-     &vfy_hard_dissipation},
-    {"hard-nongaussian", "hard", "paper C's non-Gaussian thermostat near v = 0, alpha = 0.05,"
-     " 0.1: a2, Eq. (44), depletion at v = 0, momentum to round-off", 1,
-     &vfy_hard_nongaussian},
-    {"hard-tails", "hard", "paper A Ex 7: growing majorant (no violations), overpopulated"
-     " tail, exact energy balance", 1, &vfy_hard_tails},
-    {"hard-tiny", "hard", "n = 2, 3, 4: exact finite-n expectations (papers A and B), exact"
-     " Gaussian bulk velocity, majorant violations", 1, &vfy_hard_tiny},
-    {"hard-long-run", "hard", "1e9 events per system: momentum and energy to round-off, exact"
-     " T(0) e^{-kt}, no NaN", 1, &vfy_hard_long_run},
-    {"hard-stiff", "hard", "paper B closures with K = 100 and 1e-4 through CVODE: success or a"
-     " clear failure, never garbage", 1, &vfy_hard_stiff},
-    {"hard-extreme", "hard", "restitution 1e-3 and 1, rate 1e6, T0 = 1e-8 and 1e8 against"
-     " exact expectations and the Sonine closure", 1, &vfy_hard_extreme},
-    {"protocol", "protocol", "the solver protocol's mechanics in seconds: the time grid and"
-     " columns, the variance columns, the steady section", 0, &vfy_protocol},
-};
+void vfy_cases_unload(void)
+{
+    for (size_t i = 0; i < nfiles; i++)
+        vfy_case_file_free(files[i]);
+    free(files);
+    files = NULL;
+    nfiles = 0;
+}
 
-size_t vfy_case_count(void) { return sizeof cases / sizeof *cases; }
+/* The names of DIR/cases.list, one a line ('#' comments, blank lines), into
+ * *names (*count of them, each allocated). */
+static sim_status read_list(const char *path, char ***names, size_t *count, char *msg,
+                            size_t msglen)
+{
+    *names = NULL;
+    *count = 0;
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        snprintf(msg, msglen, "%s: cannot open: %s", path, strerror(errno));
+        return SIM_EIO;
+    }
+    char line[256];
+    sim_status st = SIM_OK;
+    for (int lineno = 1; st == SIM_OK && fgets(line, sizeof line, f) != NULL; lineno++) {
+        line[strcspn(line, "\r\n")] = '\0';
+        const char *name = line + strspn(line, " \t");
+        if (name[0] == '\0' || name[0] == '#')
+            continue;
+        if (strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789-") != strlen(name)) {
+            snprintf(msg, msglen, "%s:%d: '%s' is not a case name (allowed a-z, 0-9, -)", path,
+                     lineno, name);
+            st = SIM_EINVAL;
+            break;
+        }
+        for (size_t i = 0; i < *count; i++)
+            if (strcmp((*names)[i], name) == 0) {
+                snprintf(msg, msglen, "%s:%d: %s listed twice", path, lineno, name);
+                st = SIM_EINVAL;
+            }
+        char **grown = st == SIM_OK ? realloc(*names, (*count + 1) * sizeof *grown) : NULL;
+        if (st == SIM_OK && (grown == NULL || (grown[*count] = strdup(name)) == NULL)) {
+            if (grown != NULL)
+                *names = grown;
+            snprintf(msg, msglen, "%s: out of memory", path);
+            st = SIM_ENOMEM;
+        } else if (st == SIM_OK) {
+            *names = grown;
+            (*count)++;
+        }
+    }
+    fclose(f);
+    return st;
+}
 
-const vfy_case *vfy_case_at(size_t i) { return i < vfy_case_count() ? &cases[i] : NULL; }
+const char *vfy_case_dir(void) { return GDSMC_SOURCE_DIR "/verify/cases/scenes"; }
+
+sim_status vfy_cases_load(const char *dir, char *msg, size_t msglen)
+{
+    vfy_cases_unload();
+    char path[4096];
+    snprintf(path, sizeof path, "%s/cases.list", dir);
+    char **names;
+    size_t count;
+    sim_status st = read_list(path, &names, &count, msg, msglen);
+    files = st == SIM_OK && count ? calloc(count, sizeof *files) : NULL;
+    if (st == SIM_OK && count && files == NULL) {
+        snprintf(msg, msglen, "%s: out of memory", path);
+        st = SIM_ENOMEM;
+    }
+    for (size_t i = 0; st == SIM_OK && i < count; i++) {
+        snprintf(path, sizeof path, "%s/%s.case", dir, names[i]);
+        st = vfy_case_file_load(path, names[i], vfy_named_tables, &files[nfiles], msg, msglen);
+        nfiles += st == SIM_OK;
+    }
+    for (size_t i = 0; i < count; i++)
+        free(names[i]);
+    free(names);
+    if (st != SIM_OK)
+        vfy_cases_unload();
+    return st;
+}
+
+size_t vfy_case_count(void) { return nfiles; }
+
+const vfy_case *vfy_case_at(size_t i)
+{
+    return i < nfiles ? vfy_case_file_case(files[i]) : NULL;
+}
 
 const vfy_case *vfy_case_find(const char *name)
 {
-    for (size_t i = 0; i < vfy_case_count(); i++)
-        if (strcmp(cases[i].name, name) == 0)
-            return &cases[i];
+    for (size_t i = 0; i < nfiles; i++)
+        if (strcmp(vfy_case_at(i)->name, name) == 0)
+            return vfy_case_at(i);
     return NULL;
 }
 
@@ -170,7 +150,7 @@ int vfy_suite_exists(const char *name)
     if (strcmp(name, "quick") == 0 || strcmp(name, "paper") == 0)
         return 1;
     for (size_t i = 0; i < vfy_case_count(); i++)
-        if (strcmp(cases[i].suite, name) == 0)
+        if (strcmp(vfy_case_at(i)->suite, name) == 0)
             return 1;
     return 0;
 }
@@ -182,10 +162,10 @@ const char *vfy_paper_suites(char *buf, size_t len)
     for (size_t i = 0; i < vfy_case_count(); i++) {
         int seen = 0;
         for (size_t j = 0; j < i && !seen; j++)
-            seen = strcmp(cases[j].suite, cases[i].suite) == 0;
+            seen = strcmp(vfy_case_at(j)->suite, vfy_case_at(i)->suite) == 0;
         if (!seen && used < len)
             used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? ", " : "",
-                                     cases[i].suite);
+                                     vfy_case_at(i)->suite);
     }
     return buf;
 }
@@ -213,7 +193,7 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
         return SIM_EIO;
     }
     for (size_t i = 0; i < vfy_case_count(); i++) {
-        const vfy_case *c = &cases[i];
+        const vfy_case *c = vfy_case_at(i);
         if (!vfy_case_selected(c, suite, case_name))
             continue;
         if (o->progress && o->dry_run == NULL)
@@ -229,10 +209,16 @@ sim_status vfy_run(const char *suite, const char *case_name, const vfy_options *
     }
     if (o->dry_run != NULL)   /* no reports: nothing was judged */
         return SIM_OK;
-    const char *names[sizeof cases / sizeof *cases];
-    for (size_t i = 0; i < vfy_case_count(); i++)
-        names[i] = cases[i].name;
-    return vfy_write_index(o, o->size == VFY_QUICK ? "quick sizes" : "paper sizes", names,
-                           vfy_case_count(), msg, msglen);
+    const char **names = malloc((nfiles ? nfiles : 1) * sizeof *names);
+    if (names == NULL) {
+        snprintf(msg, msglen, "out of memory");
+        return SIM_ENOMEM;
+    }
+    for (size_t i = 0; i < nfiles; i++)
+        names[i] = vfy_case_at(i)->name;
+    sim_status st = vfy_write_index(o, o->size == VFY_QUICK ? "quick sizes" : "paper sizes",
+                                    names, nfiles, msg, msglen);
+    free(names);
+    return st;
 }
 

@@ -1,5 +1,6 @@
-/* The suites: every verification case in suite order (the
- * descriptions in case_*.c), the suites, and the runs of a suite.  The top of
+/* The suites: every verification case in suite order (the case files
+ * verify/cases/scenes/NAME.case, case_file.h), the suites, and the runs of a
+ * suite.  The top of
  * the verify layer below the command line: cli -> cases -> driver ->
  * protocol -> sim (docs/layout.md). */
 #ifndef GDSMC_VFY_SUITES_H
@@ -10,6 +11,18 @@
 #include "cases.h"
 #include "checks.h"
 #include "error.h"
+
+/* Load the cases listed in DIR/cases.list, in its order, from their case
+ * files DIR/NAME.case (case_file.h), replacing any loaded before.  Returns
+ * SIM_OK, or an error with msg naming the file, line and key (then no case
+ * is loaded).  The functions below see the cases loaded last (none before
+ * the first load). */
+sim_status vfy_cases_load(const char *dir, char *msg, size_t msglen);
+/* Free the loaded cases. */
+void vfy_cases_unload(void);
+
+/* Where the case files are: the source tree's verify/cases/scenes. */
+const char *vfy_case_dir(void);
 
 size_t vfy_case_count(void);
 const vfy_case *vfy_case_at(size_t i);

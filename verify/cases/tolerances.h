@@ -28,6 +28,8 @@
  * per shell, is off by orders of magnitude). */
 #define VFY_TOL_PROTOCOL_STEADY_RTOL 1e-9
 #define VFY_TOL_PROTOCOL_F_LO 0.9999
+/* ... and above 1 by no more than the round-off the steady averages allow. */
+#define VFY_TOL_PROTOCOL_F_HI (1.0 + VFY_TOL_PROTOCOL_STEADY_RTOL)
 
 /* The false-alarm rate one check may have over all its points (output
  * times, rows): a bound held at every point of a family of P points is the
@@ -341,6 +343,13 @@
  * half-width (vfy_check_printed). */
 #define VFY_TOL_AS_E_PRINTED_DECIMALS 2
 #define VFY_TOL_AS_E_PRINTED_DECIMALS_T_RATIO 0
+/* Paper E's Fig. 1, s(t) of the slab, read at t/tau0 = 0.13 to two decimals
+ * and at 0.5 .. 2 to one (where the curve's scale allows no more). */
+#define VFY_TOL_AS_E_SLAB_S_EARLY_DECIMALS 2
+#define VFY_TOL_AS_E_SLAB_S_DECIMALS 1
+/* Paper E §V's numbers of the steady distribution (R3, and the percentages
+ * of particles below v0 and between v0 and 2 v0) are whole numbers. */
+#define VFY_TOL_AS_E_DISTRIBUTION_DECIMALS 0
 /* E §V C: BGK "does a very good job ..., especially in the case of the EHS
  * system": EHS a*, -Pxy/nT and (Pxx - Pyy)/nT within 5% of BGK plus the
  * half-width.  At paper sizes EHS lies at most 2.8% from BGK but in (Pxx -
@@ -388,6 +397,8 @@
  * s'/(beta s) to 2% (E Fig. 1: s'/s about beta); 0.22% and 0.1% off at
  * paper sizes.  Its power is unmeasured. */
 #define VFY_TOL_AS_COLLISIONS_PERCENT 2.0
+/* The same as a fraction (the slab's s'/(beta s) within it of 1). */
+#define VFY_TOL_AS_COLLISIONS_FRACTION (VFY_TOL_AS_COLLISIONS_PERCENT / 100.0)
 /* E Fig. 13, §V B: the IHS shell ratios R0..R2 at alpha = 0.5 read to 0.02
  * (E's own R0 = 1.18 and R1 = 0.81 give 50.5% and 42.6%, not the 51% and 42%
  * it prints), plus the half-width: 0.014, 0.014 and 0.001 off at paper

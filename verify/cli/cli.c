@@ -996,12 +996,28 @@ static int verify_cases(const args *a, const vfy_options *o, const char *checkpo
 
 /* gdsmc verify: --list, or the options checked and then the gate (--seeds,
  * --power, --must-fail), --dry-run or the cases. */
+static int verify_loaded(args a);
+
+/* The case files are read first (suites.h): a broken one is bad input. */
 static int cmd_verify(int argc, char **argv)
 {
     args a;
     int rc = parse_args("verify", usage_verify, 0, argc, argv, &a);
     if (rc >= 0)
         return rc;
+    char msg[1024];
+    if (vfy_cases_load(vfy_case_dir(), msg, sizeof msg) != SIM_OK) {
+        fprintf(stderr, "gdsmc verify: %s\n", msg);
+        return EXIT_BAD_INPUT;
+    }
+    rc = verify_loaded(a);
+    vfy_cases_unload();
+    return rc;
+}
+
+static int verify_loaded(args a)
+{
+    int rc;
     if (a.list)
         return list_cases();
     size_t seeds = 0;

@@ -99,8 +99,6 @@ sim_status vfy_perturb_parse(const char *text, char *key, size_t keylen, double 
  * "FILE: the scene has no <names[0]> ... references (why)". */
 sim_status vfy_require_references(const sim_scene *scene, const char *const *names,
                                   size_t count, const char *why, char *msg, size_t msglen);
-#define VFY_NEEDS_MAXWELL "paper A's exact solution needs collisions.kernel = maxwell"
-#define VFY_NEEDS_BRS_MAXWELL "paper B's exact solution needs Maxwell kernels"
 
 /* Shared by the cases: build the engine for scene and run its ensembles,
  * with progress lines labelled `label`; with o->checkpoint_dir, save the

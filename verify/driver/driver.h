@@ -1,6 +1,7 @@
 /* Verification cases as data, and the one driver that runs them (docs/adding-a-case.md).
  *
- * A case description (vfy_case_desc) names its scene, the rows (a sweep over
+ * A case description (vfy_case_desc, filled from a case file by
+ * case_file.h, or in C by a test) names its scene, the rows (a sweep over
  * scene keys), the references it needs, per-row metrics, checks with guards,
  * the table's columns, a figure and its notes.  The driver owns everything
  * else: the row loop, each row's scenes (the sweep's settings first, then
@@ -231,9 +232,6 @@ typedef struct vfy_paper_column {
     size_t count;
     const double *v;
 } vfy_paper_column;
-#define VFY_PAPER_COLUMN(NAME, ...)                                            \
-    {NAME, sizeof((const double[]){__VA_ARGS__}) / sizeof(double),            \
-     (const double[]){__VA_ARGS__}}
 
 /* A description's list of strings, NULL-terminated: VFY_LIST("a", "b"). */
 #define VFY_LIST(...) ((const char *const[]){__VA_ARGS__, NULL})
