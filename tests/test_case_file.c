@@ -247,6 +247,8 @@ static void test_bad_input_names_file_line_and_key(void **state)
     refused(14, "[paper row]", "t.case:14: [paper row]: unknown section");
     refused(16, "collisions.restitution as = 0.5", "t.case:16: [paper rows] "
             "collisions.restitution as: a swept key is");
+    refused(25, "Emax_paper = 1\nEmax_paper = 2", "t.case:26: [paper columns] Emax_paper: set "
+            "twice");
     refused(25, "Emax_paper = 0.0895 x", "t.case:25: [paper columns] Emax_paper: 'x' is not "
             "a number");
     refused(31, "fn = max_rel_error", "t.case:31: [metric Emax] fn: unknown metric");
@@ -267,6 +269,87 @@ static void test_bad_input_names_file_line_and_key(void **state)
     long_line[sizeof long_line - 1] = '\0';
     refused(1, long_line, "t.case:1: line too long");
     refused(10, "notes = a \\q b", "t.case:10: [case] notes: unknown escape '\\q'");
+}
+
+static void write_file(const char *dir, const char *name, const char *text)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+/* Load dir/t.case: its status, msg as the loader says it. */
+static sim_status load_t(const char *dir, vfy_case_file **f, char *msg, size_t len)
+{
+    char path[600];
+    snprintf(path, sizeof path, "%s/t.case", dir);
+    return vfy_case_file_load(path, "t", vfy_named_tables, f, msg, len);
+}
+
+/* [include NAME] reads NAME.inc where it stands, nested too; each mistake in
+ * an included file is named by that file and its line. */
+static void test_include(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/gdsmc-include-XXXXXX", msg[1024] = "";
+    assert_non_null(mkdtemp(dir));
+    write_file(dir, "t.case", "[case]\nsuite = grw\nsummary = s\n[include checks]\n"
+                              "[check]\nname = last\nrule = range\n");
+    write_file(dir, "checks.inc", "; shared\n[check]\nname = first\nrule = zscore\n"
+                                  "[include more]\n");
+    write_file(dir, "more.inc", "[check]\nname = second\nrule = relative\n"
+                                "tol = VFY_TOL_ZMAX\n");
+    vfy_case_file *f = NULL;
+    sim_status st = load_t(dir, &f, msg, sizeof msg);
+    if (st != SIM_OK)
+        print_error("%s\n", msg);
+    assert_int_equal(st, SIM_OK);
+    const vfy_check_spec *checks = vfy_case_file_case(f)->desc->checks;
+    assert_string_equal(checks[0].name, "first");
+    assert_string_equal(checks[1].name, "second");
+    assert_close(checks[1].tol, VFY_TOL_ZMAX, 0, 0);
+    assert_string_equal(checks[2].name, "last");
+    assert_null(checks[3].name);
+    vfy_case_file_free(f);
+
+    static const struct {
+        const char *file, *text, *msg;
+    } bad[] = {
+        {"more.inc", "[check]\nname = second\nrule = relativ\n",
+         "/more.inc:3: [check] rule: unknown rule 'relativ'"},
+        {"more.inc", "[check]\nname = second\n", "/more.inc:1: [check] needs name and rule"},
+        {"more.inc", "[check]\nname second\n", "/more.inc:2: not a [section] header"},
+        {"checks.inc", "[check]\nname = first\nrule = zscore\n[include Bad]\n",
+         "/checks.inc:4: [include NAME]: NAME of a-z"},
+        {"checks.inc", "[include none]\n", "/checks.inc:1: [include none]: "},
+        {"checks.inc", "[case]\nsummary = again\n", "/checks.inc:2: [case] summary: set twice"},
+        {"checks.inc", "[include checks]\n", "includes nested deeper than 8"},
+        {"t.case", "[case]\nsuite = grw\nsummary = s\n[include more]\nlabel = x\n",
+         "/t.case:5: a key right after an included file"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        write_file(dir, "t.case", "[case]\nsuite = grw\nsummary = s\n[include checks]\n");
+        write_file(dir, "checks.inc", "[include more]\n");
+        write_file(dir, "more.inc", "[check]\nname = second\nrule = relative\n");
+        write_file(dir, bad[i].file, bad[i].text);
+        f = (vfy_case_file *)1;
+        st = load_t(dir, &f, msg, sizeof msg);
+        if (st == SIM_OK || strstr(msg, bad[i].msg) == NULL)
+            print_error("%zu: got '%s', expected '%s'\n", i, msg, bad[i].msg);
+        assert_int_not_equal(st, SIM_OK);
+        assert_null(f);
+        assert_non_null(strstr(msg, bad[i].msg));
+    }
+    const char *files[] = {"t.case", "checks.inc", "more.inc"};
+    for (size_t i = 0; i < 3; i++) {
+        char path[600];
+        snprintf(path, sizeof path, "%s/%s", dir, files[i]);
+        remove(path);
+    }
+    rmdir(dir);
 }
 
 /* Every name of every table, unique across the tables, so that a case
@@ -335,6 +418,7 @@ int main(void)
         cmocka_unit_test(test_empty_needs_is_a_list),
         cmocka_unit_test(test_fixed_x_is_the_function_s),
         cmocka_unit_test(test_bad_input_names_file_line_and_key),
+        cmocka_unit_test(test_include),
         cmocka_unit_test(test_registry_names_are_unique),
         cmocka_unit_test(test_source_tree_cases_load),
     };

@@ -28,6 +28,7 @@
 #include <string.h>
 
 #define MAX_FILE_BYTES (1u << 20)
+#define MAX_INCLUDE_DEPTH 8
 
 struct vfy_case_file {
     vfy_case c;
@@ -75,7 +76,8 @@ void vfy_case_file_free(vfy_case_file *f)
 
 const vfy_case *vfy_case_file_case(const vfy_case_file *f) { return &f->c; }
 
-/* A growing list of pointers, each with the line it came from. */
+/* A growing list of pointers, each with where it came from (an index of
+ * parse_ctx.origins). */
 typedef struct ptr_list {
     void **v;
     int *lines;
@@ -251,16 +253,37 @@ typedef struct sweep_builder {
     ptr_list keys;   /* vfy_sweep_key */
 } sweep_builder;
 
+/* A text being read: the case file, or a file it includes. */
+typedef struct source {
+    char *text;              /* owned (an included file's), or NULL */
+    const char *pos;         /* the reader's place in it */
+    const char *name;        /* its file name, as messages say it */
+    int line;                /* its lines read so far */
+} source;
+
+/* Where a line handed to inih came from. */
+typedef struct origin {
+    const char *file;
+    int line;
+} origin;
+
 typedef struct parse_ctx {
     vfy_case_file *f;
-    const char *file;
+    const char *dir;         /* where included files are */
     const vfy_named_fn *const *tables;
-    const char *pos;         /* the reader's place in the text */
-    int line;                /* the line being parsed */
+    source src[MAX_INCLUDE_DEPTH + 1];   /* src[0] the case file, then its includes */
+    int depth;
+    char **names;            /* the included files' names (owned), for messages */
+    size_t nnames;
+    origin *origins;         /* of every line handed to inih, in order */
+    size_t norigins, caporigins;
+    const char *file;        /* the file and line being parsed (line 0: none) */
+    int line;
+    int need_header;         /* an included file ended: a header must come first */
     int continued;           /* the line continues the previous value */
     int have_key;            /* a key line came since the last header or blank line */
     unsigned header_seq;     /* section headers read so far */
-    int header_line;         /* the line of the last one */
+    int header_origin;       /* the origin of the last one */
     unsigned record_seq;     /* the header the current record belongs to */
     int failed;
     sim_status status;
@@ -280,6 +303,7 @@ typedef struct parse_ctx {
     list_field *lists;
     size_t nlists, caplists;
     int case_seen;
+    uint64_t case_keys_seen; /* the [case] keys set so far, in any [case] section */
 } parse_ctx;
 
 static int fail(parse_ctx *c, sim_status st, const char *key, const char *fmt, ...)
@@ -306,6 +330,13 @@ static int fail(parse_ctx *c, sim_status st, const char *key, const char *fmt, .
 }
 
 static int nomem(parse_ctx *c) { return fail(c, SIM_ENOMEM, NULL, "out of memory"); }
+
+/* Messages from now on name origin k (k < 0: the case file, no line). */
+static void at_origin(parse_ctx *c, int k)
+{
+    c->file = k >= 0 ? c->origins[k].file : c->src[0].name;
+    c->line = k >= 0 ? c->origins[k].line : 0;
+}
 
 /* value with \n and \\ resolved, owned by the file; NULL after a failure. */
 static char *unescape(parse_ctx *c, const char *key, const char *value)
@@ -546,7 +577,7 @@ static int apply_rows(parse_ctx *c, vfy_sweep *sweep, sweep_builder *b, const ch
     if (strchr(key, '.') == NULL)
         return apply_key(c, rows_keys, sweep, key, value);
     vfy_sweep_key *k = own(c->f, sizeof *k);
-    if (k == NULL || list_push(&b->keys, k, c->line))
+    if (k == NULL || list_push(&b->keys, k, (int)c->norigins - 1))
         return nomem(c);
     const char *as = strstr(key, " as ");
     k->key = own_strndup(c->f, key, as ? (size_t)(as - key) : strlen(key));
@@ -562,6 +593,9 @@ static int apply_rows(parse_ctx *c, vfy_sweep *sweep, sweep_builder *b, const ch
 
 static int apply_paper_column(parse_ctx *c, const char *key, const char *value)
 {
+    for (size_t i = 0; i < c->paper_columns.n; i++)
+        if (strcmp(((const vfy_paper_column *)c->paper_columns.v[i])->name, key) == 0)
+            return fail(c, SIM_EINVAL, key, "set twice in this section");
     vfy_paper_column *p = own(c->f, sizeof *p);
     size_t words = 0;
     for (const char *q = value; *q; q += strspn(q, " \t"))
@@ -569,7 +603,7 @@ static int apply_paper_column(parse_ctx *c, const char *key, const char *value)
             words++, q += strcspn(q, " \t");
     double *v = own(c->f, (words ? words : 1) * sizeof *v);
     if (p == NULL || v == NULL || (p->name = own_strndup(c->f, key, strlen(key))) == NULL
-        || list_push(&c->paper_columns, p, c->line))
+        || list_push(&c->paper_columns, p, (int)c->norigins - 1))
         return nomem(c);
     p->v = v;
     char word[64];
@@ -645,7 +679,7 @@ static int start_record(parse_ctx *c, const char *section)
                      : c->kind == SEC_CHECK       ? &c->checks
                      : c->kind == SEC_CASE_CHECK  ? &c->case_checks
                                                   : &c->figures;
-    if (c->record == NULL || name == NULL || list_push(list, c->record, c->header_line))
+    if (c->record == NULL || name == NULL || list_push(list, c->record, c->header_origin))
         return nomem(c);
     if (c->kind == SEC_PARTNER)
         ((vfy_partner *)c->record)->name = name;
@@ -666,7 +700,12 @@ static int handler(void *user, const char *section, const char *name, const char
         if (!start_record(c, section))
             return 0;
     switch (c->kind) {
-    case SEC_CASE: return apply_key(c, case_keys, c->f, name, value);
+    case SEC_CASE: {   /* its keys once across all its sections (an included file's) */
+        c->seen = c->case_keys_seen;
+        const int ok = apply_key(c, case_keys, c->f, name, value);
+        c->case_keys_seen = c->seen;
+        return ok;
+    }
     case SEC_PAPER_ROWS: return apply_rows(c, &c->f->d.paper_rows, &c->paper_rows, name, value);
     case SEC_QUICK_ROWS: return apply_rows(c, &c->f->d.quick_rows, &c->quick_rows, name, value);
     case SEC_PAPER_COLUMNS: return apply_paper_column(c, name, value);
@@ -681,19 +720,109 @@ static int handler(void *user, const char *section, const char *name, const char
     return fail(c, SIM_EINVAL, name, "a key before any section header");
 }
 
+/* The text of the file at path (at most MAX_FILE_BYTES, no NUL byte) into
+ * *text (the caller frees it); msg says what is wrong. */
+static sim_status read_text(const char *path, char **text, char *msg, size_t msglen)
+{
+    *text = NULL;
+    FILE *in = fopen(path, "rb");
+    if (in == NULL) {
+        snprintf(msg, msglen, "%s: cannot open: %s", path, strerror(errno));
+        return SIM_EIO;
+    }
+    char *buf = malloc(MAX_FILE_BYTES + 1);
+    size_t n = buf ? fread(buf, 1, MAX_FILE_BYTES + 1, in) : 0;
+    const int bad = ferror(in);
+    fclose(in);
+    sim_status st = SIM_OK;
+    if (buf == NULL)
+        snprintf(msg, msglen, "%s: out of memory", path), st = SIM_ENOMEM;
+    else if (bad)
+        snprintf(msg, msglen, "%s: cannot read", path), st = SIM_EIO;
+    else if (n > MAX_FILE_BYTES || memchr(buf, '\0', n) != NULL)
+        snprintf(msg, msglen, "%s: not a case file (text of at most %u bytes)", path,
+                 MAX_FILE_BYTES), st = SIM_EINVAL;
+    if (st != SIM_OK) {
+        free(buf);
+        return st;
+    }
+    buf[n] = '\0';
+    *text = buf;
+    return SIM_OK;
+}
+
+/* "[include NAME]" at p (a line's first non-blank character): read
+ * DIR/NAME.inc and read on from its first line (case_file.h). */
+static int push_include(parse_ctx *c, const char *p, const char *end)
+{
+    const char *rb = memchr(p, ']', (size_t)(end - p));
+    const char *name = p + strlen("[include ");
+    const size_t n = rb ? (size_t)(rb - name) : 0;
+    if (n == 0 || strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789-") != n)
+        return fail(c, SIM_EINVAL, NULL, "[include NAME]: NAME of a-z, 0-9 and -");
+    if (c->depth == MAX_INCLUDE_DEPTH)
+        return fail(c, SIM_EINVAL, NULL, "[include %.*s]: includes nested deeper than %d",
+                    (int)n, name, MAX_INCLUDE_DEPTH);
+    char **grown = realloc(c->names, (c->nnames + 1) * sizeof *grown);
+    if (grown == NULL)
+        return nomem(c);
+    c->names = grown;
+    char *path = c->names[c->nnames++] = malloc(strlen(c->dir) + n + 8);
+    if (path == NULL)
+        return nomem(c);
+    sprintf(path, "%s/%.*s.inc", c->dir, (int)n, name);
+    char *text, msg[sizeof c->err];
+    sim_status st = read_text(path, &text, msg, sizeof msg);
+    if (st != SIM_OK)
+        return fail(c, st, NULL, "[include %.*s]: %s", (int)n, name, msg);
+    c->src[++c->depth] = (source){.text = text, .pos = text, .name = path};
+    return 1;
+}
+
+/* The next line of the innermost text, in line (the included files' ends
+ * popped); NULL at the end of the case file. */
+static const char *next_line(parse_ctx *c, const char **end)
+{
+    while (*c->src[c->depth].pos == '\0') {
+        if (c->depth == 0)
+            return NULL;
+        free(c->src[c->depth--].text);
+        c->need_header = 1, c->have_key = 0;
+    }
+    source *s = &c->src[c->depth];
+    const char *p = s->pos, *nl = strchr(p, '\n');
+    *end = nl ? nl + 1 : p + strlen(p);
+    s->pos = *end;
+    s->line++;
+    c->file = s->name;
+    c->line = s->line;
+    return p;
+}
+
 /* Hand inih one whole line per call (see the top of the file). */
 static char *reader(char *buf, int num, void *stream)
 {
     parse_ctx *c = stream;
-    if (c->failed || *c->pos == '\0')
+    const char *p = NULL, *end = NULL, *start = NULL;
+    while (!c->failed && (p = next_line(c, &end)) != NULL) {
+        start = p;
+        while (start < end && *start != '\n' && isspace((unsigned char)*start))
+            start++;
+        if (strncmp(start, "[include ", strlen("[include ")) != 0)
+            break;
+        push_include(c, start, end);
+    }
+    if (c->failed || p == NULL)
         return NULL;
-    const char *p = c->pos, *nl = strchr(p, '\n');
-    const char *end = nl ? nl + 1 : p + strlen(p);
-    c->pos = end;
-    c->line++;
-    const char *start = p;
-    while (start < end && *start != '\n' && isspace((unsigned char)*start))
-        start++;
+    if (c->norigins == c->caporigins) {
+        size_t cap = c->caporigins ? 2 * c->caporigins : 256;
+        origin *grown = realloc(c->origins, cap * sizeof *grown);
+        if (grown == NULL)
+            return nomem(c), NULL;
+        c->origins = grown;
+        c->caporigins = cap;
+    }
+    c->origins[c->norigins++] = (origin){c->file, c->line};
     const int blank = start == end || *start == '\n';
     const int comment = !blank && (*start == ';' || *start == '#');
     c->continued = !blank && !comment && start > p && c->have_key;
@@ -706,9 +835,13 @@ static char *reader(char *buf, int num, void *stream)
             snprintf(section, sizeof section, "%.*s", rb ? (int)(rb - p - 1) : 0, p + 1);
             if (rb && find_section(c, section) < 0)
                 return NULL;
-            c->header_seq++, c->have_key = 0, c->header_line = c->line;
-        }
-        else
+            c->header_seq++, c->have_key = 0, c->need_header = 0;
+            c->header_origin = (int)c->norigins - 1;
+        } else if (c->need_header) {
+            fail(c, SIM_EINVAL, NULL, "a key right after an included file: start a section "
+                 "first");
+            return NULL;
+        } else
             c->have_key = 1;
     } else if (blank)
         c->have_key = 0;
@@ -760,13 +893,13 @@ static int finish(parse_ctx *c)
         memcpy(a, l->items, l->n * sizeof *a);
         *l->field = a;
     }
-    c->line = 0;
+    at_origin(c, -1);
     if (!c->case_seen || f->c.suite == NULL || f->c.summary == NULL)
         return fail(c, SIM_EINVAL, NULL, "[case] needs suite and summary");
     for (size_t i = 0; i < c->metrics.n + c->case_metrics.n; i++) {
         const int own_rows = i < c->metrics.n;
         const vfy_metric *m = own_rows ? c->metrics.v[i] : c->case_metrics.v[i - c->metrics.n];
-        c->line = own_rows ? c->metrics.lines[i] : c->case_metrics.lines[i - c->metrics.n];
+        at_origin(c, own_rows ? c->metrics.lines[i] : c->case_metrics.lines[i - c->metrics.n]);
         if (m->fn == NULL)
             return fail(c, SIM_EINVAL, NULL, "[%smetric %s] needs fn", own_rows ? "" : "case ",
                         m->name);
@@ -774,7 +907,7 @@ static int finish(parse_ctx *c)
     for (size_t i = 0; i < c->checks.n + c->case_checks.n; i++) {
         const int own_rows = i < c->checks.n;
         const vfy_check_spec *s = own_rows ? c->checks.v[i] : c->case_checks.v[i - c->checks.n];
-        c->line = own_rows ? c->checks.lines[i] : c->case_checks.lines[i - c->checks.n];
+        at_origin(c, own_rows ? c->checks.lines[i] : c->case_checks.lines[i - c->checks.n]);
         if (s->name == NULL || s->rule == NULL)
             return fail(c, SIM_EINVAL, NULL, "[%scheck] needs name and rule",
                         own_rows ? "" : "case ");
@@ -784,7 +917,7 @@ static int finish(parse_ctx *c)
                         own_rows ? "" : "case ", s->name);
     }
     for (size_t i = 0; i < c->figures.n; i++) {
-        c->line = c->figures.lines[i];
+        at_origin(c, c->figures.lines[i]);
         if (((const vfy_figure_spec *)c->figures.v[i])->kind == VFY_FIGURE_NONE)
             return fail(c, SIM_EINVAL, NULL, "[figure] needs kind");
     }
@@ -811,6 +944,13 @@ static void ctx_free(parse_ctx *c)
         free(c->lists[i].items);
     free(c->lists);
     free(c->last_raw);
+    for (int d = 1; d <= c->depth; d++)
+        free(c->src[d].text);
+    for (size_t i = 0; i < c->nnames; i++)
+        free(c->names[i]);
+    free(c->names);
+    free(c->origins);
+    free((char *)c->dir);
 }
 
 sim_status vfy_case_file_parse(const char *text, const char *file, const char *name,
@@ -818,17 +958,22 @@ sim_status vfy_case_file_parse(const char *text, const char *file, const char *n
                                char *msg, size_t msglen)
 {
     *out = NULL;
-    parse_ctx c = {.file = file, .tables = tables, .pos = text};
+    parse_ctx c = {.file = file, .tables = tables};
+    c.src[0] = (source){.pos = text, .name = file};
+    const char *slash = strrchr(file, '/');
+    c.dir = slash ? strndup(file, (size_t)(slash - file)) : strdup(".");
     c.f = calloc(1, sizeof *c.f);
-    if (c.f == NULL || (c.f->c.name = own_strndup(c.f, name, strlen(name))) == NULL) {
+    if (c.dir == NULL || c.f == NULL
+        || (c.f->c.name = own_strndup(c.f, name, strlen(name))) == NULL) {
         vfy_case_file_free(c.f);
+        free((char *)c.dir);
         snprintf(msg, msglen, "%s: out of memory", file);
         return SIM_ENOMEM;
     }
     c.f->c.desc = &c.f->d;
     int ret = ini_parse_stream(reader, &c, handler, &c);
-    if (ret > 0 && !c.failed) {
-        c.line = ret;
+    if (ret > 0 && !c.failed) {   /* inih counts the lines it was handed */
+        at_origin(&c, ret - 1 < (int)c.norigins ? ret - 1 : -1);
         fail(&c, SIM_EINVAL, NULL, "not a [section] header, a KEY = VALUE line or a comment");
     } else if (ret < 0)
         nomem(&c);
@@ -849,27 +994,10 @@ sim_status vfy_case_file_load(const char *path, const char *name,
                               char *msg, size_t msglen)
 {
     *out = NULL;
-    FILE *in = fopen(path, "rb");
-    if (in == NULL) {
-        snprintf(msg, msglen, "%s: cannot open: %s", path, strerror(errno));
-        return SIM_EIO;
-    }
-    char *buf = malloc(MAX_FILE_BYTES + 1);
-    size_t n = buf ? fread(buf, 1, MAX_FILE_BYTES + 1, in) : 0;
-    const int bad = ferror(in);
-    fclose(in);
-    sim_status st = SIM_OK;
-    if (buf == NULL)
-        snprintf(msg, msglen, "%s: out of memory", path), st = SIM_ENOMEM;
-    else if (bad)
-        snprintf(msg, msglen, "%s: cannot read", path), st = SIM_EIO;
-    else if (n > MAX_FILE_BYTES || memchr(buf, '\0', n) != NULL)
-        snprintf(msg, msglen, "%s: not a case file (text of at most %u bytes)", path,
-                 MAX_FILE_BYTES), st = SIM_EINVAL;
-    if (st == SIM_OK) {
-        buf[n] = '\0';
-        st = vfy_case_file_parse(buf, path, name, tables, out, msg, msglen);
-    }
-    free(buf);
+    char *text;
+    sim_status st = read_text(path, &text, msg, msglen);
+    if (st == SIM_OK)
+        st = vfy_case_file_parse(text, path, name, tables, out, msg, msglen);
+    free(text);
     return st;
 }

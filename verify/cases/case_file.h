@@ -48,6 +48,12 @@
  * value too, so a value never holds it.  A line holds at most 198
  * characters.
  *
+ * A line "[include NAME]" reads the file NAME.inc of the case file's folder
+ * there, as if its lines stood in its place: the sections several cases
+ * share (paper B's exact checks, paper A's tail metrics) are written once.
+ * Includes nest up to 8 deep; after an included file, a section header must
+ * come before any key.  Messages name the included file and its line.
+ *
  * Errors name the file, the line and the key ("FILE:LINE: [check] rule:
  * unknown rule 'relativ'"); nothing of a file that fails is kept.
  */
