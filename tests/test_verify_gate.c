@@ -77,6 +77,30 @@ static void test_perturb_absent_section_is_refused(void **state)
     vfy_report_free(&r);
 }
 
+/* --perturb multiplies a defaulted value too: collisions.beta left to the
+ * model is IHS's 1 or EHS's (1 + alpha)/2, not the 0 that stands for it. */
+static void test_perturb_defaulted_beta(void **state)
+{
+    (void)state;
+    sim_scene s;
+    char msg[512];
+    double beta = 0.0;
+    assert_int_equal(vfy_scene_parse("[collisions]\nkernel = hard-spheres\nrestitution = 0.6\n"
+                                     "model = ehs\n", "ehs.ini", NULL, 0, &s, msg, sizeof msg),
+                     SIM_OK);
+    assert_int_equal(vfy_scene_real(&s, "collisions.beta", &beta, msg, sizeof msg), SIM_OK);
+    assert_close(beta, 0.8, 1e-15, 0.0);
+    assert_int_equal(vfy_scene_parse("[collisions]\nkernel = hard-spheres\n", "ihs.ini", NULL,
+                                     0, &s, msg, sizeof msg), SIM_OK);
+    assert_int_equal(vfy_scene_real(&s, "collisions.beta", &beta, msg, sizeof msg), SIM_OK);
+    assert_close(beta, 1.0, 0.0, 0.0);
+    assert_int_equal(vfy_scene_parse("[collisions]\nkernel = hard-spheres\nbeta = 0.3\n"
+                                     "model = ehs\n", "set.ini", NULL, 0, &s, msg, sizeof msg),
+                     SIM_OK);
+    assert_int_equal(vfy_scene_real(&s, "collisions.beta", &beta, msg, sizeof msg), SIM_OK);
+    assert_close(beta, 0.3, 0.0, 0.0);
+}
+
 static void test_perturb_parse(void **state)
 {
     (void)state;
@@ -206,6 +230,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_every_case_declares_must_fail),
         cmocka_unit_test(test_perturb_absent_section_is_refused),
+        cmocka_unit_test(test_perturb_defaulted_beta),
         cmocka_unit_test(test_perturb_parse),
         cmocka_unit_test(test_derived_seeds),
         cmocka_unit_test(test_differences_name_their_check),

@@ -1054,6 +1054,8 @@ sim_status vfy_scene_real(const sim_scene *s, const char *key, double *value, ch
     }
     if (s != NULL)
         *value = *(const double *)((const char *)s + d->offset);
+    if (s != NULL && strcmp(key, "collisions.beta") == 0 && *value == 0.0)
+        *value = sim_scene_collision_rate_factor(s);   /* defaulted: the model's */
     return SIM_OK;
 }
 

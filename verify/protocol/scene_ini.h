@@ -83,7 +83,8 @@ int vfy_scene_differs(const sim_scene *a, const sim_scene *b, char *key, size_t 
 
 /* The value of number key `key` ("section.key", a K_REAL key: a rate, a
  * constant, restitution, strength ...) in scene s, set or defaulted, into
- * *value.  Returns SIM_OK, or SIM_EINVAL with msg ("section.key: unknown
+ * *value (collisions.beta defaulted: the model's factor,
+ * sim_scene_collision_rate_factor).  Returns SIM_OK, or SIM_EINVAL with msg ("section.key: unknown
  * key (allowed ...)", "... is not a number key", "the scene has no
  * [section] section") when there is no such value: s may be NULL to check
  * the key's name alone.  `--perturb` reads the value it multiplies here. */
