@@ -911,20 +911,22 @@ static void test_curve_panels(void **state)
     }
     vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
     assert_int_equal(vfy_write_curves(&o, "driver-panels", "six rows", "comment", t, M, 0, NULL,
-                                      NULL, ROWS, n, NULL, mean, ci, "T", 0.0, 1),
+                                      NULL, ROWS, n, NULL, mean, ci, "T", "T/T0", 0.0, 1),
                      0);
     char path[600], line[512];
     snprintf(path, sizeof path, "%s/driver-panels.gp", out_dir);
     FILE *f = fopen(path, "r");
     assert_non_null(f);
-    size_t panels = 0, layout = 0;
+    size_t panels = 0, layout = 0, axis = 0;
     while (fgets(line, sizeof line, f) != NULL) {
         panels += strncmp(line, "set title 'n = ", 15) == 0;
         layout += strstr(line, "set multiplot layout 3,2 ") != NULL;
+        axis += strstr(line, "set ylabel 'T/T0'") != NULL;   /* the label, not the column */
     }
     fclose(f);
     assert_int_equal(panels, ROWS);
     assert_int_equal(layout, 1);
+    assert_int_equal(axis, 1);
 }
 
 /* A description beyond every former cap: one row with a 134-character
@@ -1100,17 +1102,18 @@ static void test_xy_grid(void **state)
     const char *const titles[] = {"left", "right"};
     const vfy_xy_figure fig = {.name = "driver-grid", .title = "grid", .xlabel = "x",
                                .comment = "comment", .npanels = 2, .ylabel = {"u", "v"},
-                               .ncurves = 4, .curves = curves, .ncolumns = 2,
-                               .column_title = titles};
+                               .yaxis = {NULL, "v/v0"}, .ncurves = 4, .curves = curves,
+                               .ncolumns = 2, .column_title = titles};
     vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
     assert_int_equal(vfy_write_xy(&o, &fig), 0);
     char path[600], line[1024];
     snprintf(path, sizeof path, "%s/driver-grid.gp", out_dir);
     FILE *f = fopen(path, "r");
     assert_non_null(f);
-    size_t panels = 0, titled = 0, key = 0, range = 0;
+    size_t panels = 0, titled = 0, key = 0, range = 0, axes = 0;
     while (fgets(line, sizeof line, f) != NULL) {
         panels += strncmp(line, "set lmargin at screen", 21) == 0;
+        axes += strstr(line, "set ylabel 'u'") != NULL || strstr(line, "set ylabel 'v/v0'") != NULL;
         titled += strcmp(line, "set title 'left'\n") == 0
                   || strcmp(line, "set title 'right'\n") == 0;
         range += strcmp(line, "set yrange [-1.3:5.3]\n") == 0;   /* z's span and y's, 5% more */
@@ -1126,14 +1129,18 @@ static void test_xy_grid(void **state)
     assert_int_equal(titled, 2);
     assert_int_equal(range, 1);
     assert_int_equal(key, 1);
+    assert_int_equal(axes, 2);   /* v's axis named by yaxis, its columns still v */
     snprintf(path, sizeof path, "%s/driver-grid-curves.csv", out_dir);
     f = fopen(path, "r");
     assert_non_null(f);
-    size_t blocks = 0;
-    while (fgets(line, sizeof line, f) != NULL)
+    size_t blocks = 0, header = 0;
+    while (fgets(line, sizeof line, f) != NULL) {
         blocks += strcmp(line, "# right: late\n") == 0;
+        header += strcmp(line, "# x,u,u_ci,v,v_ci\n") == 0;
+    }
     fclose(f);
     assert_int_equal(blocks, 1);
+    assert_int_equal(header, 1);
 }
 
 int main(void)

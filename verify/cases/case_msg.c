@@ -288,7 +288,7 @@ static sim_status msg_kappa_after(vfy_case_run *run, vfy_report *r, char *msg, s
         snprintf(title, sizeof title, "%s: kappa'(t)/kappa0 (paper D Fig. 1), rows in order",
                  run->c->name);
         if (vfy_write_curves(run->o, name, title, run->comment, run->rows[0].res.t, M, 0, NULL,
-                             NULL, rows, n, labels, mean, ci, "kappa'/kappa0", 0.0, 0) != 0)
+                             NULL, rows, n, labels, mean, ci, "kappa'/kappa0", NULL, 0.0, 0) != 0)
             status = vfy_io_error(name, msg, msglen);
     } else if (status == SIM_EINVAL) {
         snprintf(msg, msglen, "%s: the rows have no q_x series", run->c->name);

@@ -1719,7 +1719,8 @@ static int curves_by_row_with(vfy_case_run *run, const vfy_figure_spec *f, const
     const vfy_xy_figure xy = {.name = name, .title = title, .xlabel = "t",
                               .comment = run->comment, .logx = 1,
                               .logy = positive && hi >= 100.0 * lo, .npanels = 1,
-                              .ylabel = {quantity}, .ncurves = c, .curves = curves};
+                              .ylabel = {quantity}, .yaxis = {f->ylabel}, .ncurves = c,
+                              .curves = curves};
     return vfy_write_xy(run->o, &xy);
 }
 
@@ -1774,8 +1775,8 @@ static int curves_shared(vfy_case_run *run, const vfy_figure_spec *f, const char
             memcpy(ci + (rows - 1) * M, run->extra_ci, M * sizeof *ci);
         }
         rc = vfy_write_curves(run->o, name, title, run->comment, last->res.t, M, nref,
-                              f->refs, refs, rows, n, NULL, mean, ci, quantity, f->x_from,
-                              f->panel_per_row);
+                              f->refs, refs, rows, n, NULL, mean, ci, quantity, f->ylabel,
+                              f->x_from, f->panel_per_row);
     }
     free(buf);
     free(n);

@@ -307,7 +307,9 @@ typedef struct vfy_figure_spec {
     const char *group_by;
     const char *const *groups;
     const char *title, *xlabel, *ylabel;   /* title: a template (curves:
-                                              NULL, the case's title) */
+                                              NULL, the case's title); curves:
+                                              ylabel the y axis's label (NULL:
+                                              the quantity's name), no xlabel */
 } vfy_figure_spec;
 /* A description's figures, ended by one of kind VFY_FIGURE_NONE:
  * VFY_FIGURES({.kind = VFY_FIGURE_CURVES, ...}, {...}). */

@@ -194,6 +194,12 @@ static const char *xy_column_title(const vfy_xy_figure *f, size_t k)
                : "";
 }
 
+/* Panel p's y axis label. */
+static const char *axis_label(const vfy_xy_figure *f, size_t p)
+{
+    return f->yaxis[p] != NULL ? f->yaxis[p] : f->ylabel[p];
+}
+
 /* <name>-curves.csv of vfy_write_xy, its path into data. */
 static int xy_data(const vfy_options *o, const vfy_xy_figure *f, char *data)
 {
@@ -303,7 +309,7 @@ static void xy_grid_panel(FILE *out, const vfy_xy_figure *f, size_t p, size_t k)
             left, left + w, top, top - h);
     fprintf(out, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n",
             p == 0 ? gp_text(xy_column_title(f, k)) : "",
-            p + 1 == f->npanels ? gp_text(f->xlabel) : "", k == 0 ? gp_text(f->ylabel[p]) : "");
+            p + 1 == f->npanels ? gp_text(f->xlabel) : "", k == 0 ? gp_text(axis_label(f, p)) : "");
 }
 
 /* The grid of vfy_write_xy (f->ncolumns > 1), then its key: the first
@@ -377,7 +383,7 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
             f->logy ? "set logscale y\nset format y '%g'\n" : "");
     for (size_t p = 0; p < f->npanels; p++) {
         fprintf(out, "set xlabel '%s'\nset ylabel '%s'\nplot", gp_text(f->xlabel),
-                gp_text(f->ylabel[p]));
+                gp_text(axis_label(f, p)));
         int first = 1;
         for (size_t j = 0; j < f->ncurves; j++) {
             if (f->curves[j].y[p] == NULL)
@@ -460,7 +466,7 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                         const double *t, size_t M, size_t nref, const char *const *ref_names,
                         const double *const *refs, size_t rows, const size_t *n,
                         const char *const *labels, const double *mean, const double *ci,
-                        const char *quantity, double x_from, int one_panel_per_row)
+                        const char *quantity, const char *ylabel, double x_from, int one_panel_per_row)
 {
     char path[PATH_LEN], tmp[TMP_LEN];
     FILE *f = begin_file(o, name, "-curves.csv", comment, path, sizeof path, tmp, sizeof tmp);
@@ -501,7 +507,8 @@ int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
      * their bands */
     const int crowded = !one_panel_per_row && rows > CURVES_COLOURS;
     fprintf(f, "set xrange [%g:*]\nset xlabel 't'\nset ylabel '%s'\nset key %s\n", x_from,
-            gp_text(quantity), crowded ? "outside right top" : "below");   /* off the curves */
+            gp_text(ylabel != NULL ? ylabel : quantity),
+            crowded ? "outside right top" : "below");   /* off the curves */
     if (one_panel_per_row)
         fprintf(f, "set multiplot layout %zu,2 title '%s'\n", lines, gp_text(title));
     else

@@ -31,13 +31,15 @@ int vfy_gnuplot(const char *script_path);
  * the references (black, each its dash type) (one panel per row,
  * 2 x 2 for up to four rows and two columns beyond, or all in one), rendered
  * to <name>.png when gnuplot is installed.  mean and ci are rows x M.  Each row is labelled labels[i],
- * or "n = N" when labels is NULL, then ": mean " VFY_CI_LEGEND.  Returns 0 or -1 (errno). */
+ * or "n = N" when labels is NULL, then ": mean " VFY_CI_LEGEND.  The y axis is labelled
+ * ylabel, or the quantity when ylabel is NULL.  Returns 0 or -1 (errno). */
 int vfy_write_curves(const vfy_options *o, const char *name, const char *title,
                      const char *comment,
                      const double *t, size_t M, size_t nref, const char *const *ref_names,
                      const double *const *refs, size_t rows, const size_t *n,
                      const char *const *labels, const double *mean, const double *ci,
-                     const char *quantity, double x_from, int one_panel_per_row);
+                     const char *quantity, const char *ylabel, double x_from,
+                     int one_panel_per_row);
 
 /* Points against a parameter with error bars, beside theory curves (paper C's
  * figures of a2 against alpha, G(c) against c). */
@@ -100,7 +102,10 @@ typedef struct vfy_xy_figure {
     const char *name, *title, *xlabel, *comment;
     int logx, logy;
     size_t npanels;
-    const char *ylabel[VFY_XY_PANELS];
+    const char *ylabel[VFY_XY_PANELS];   /* each panel's quantity: its CSV columns' name
+                                            and, unless yaxis names it, its axis label */
+    const char *yaxis[VFY_XY_PANELS];    /* an axis label other than the column's name
+                                            ("T/T0" for T_ratio), or NULL */
     size_t ncurves;
     const vfy_xy_curve *curves;
     /* 0 or 1: the panels one above the other, each with every curve and its
