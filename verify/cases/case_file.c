@@ -890,7 +890,8 @@ static int finish(parse_ctx *c)
         const char **a = own(f, (l->n + 1) * sizeof *a);
         if (a == NULL)
             return nomem(c);
-        memcpy(a, l->items, l->n * sizeof *a);
+        if (l->n > 0)   /* "needs =": an empty list, no items to copy */
+            memcpy(a, l->items, l->n * sizeof *a);
         *l->field = a;
     }
     at_origin(c, -1);
