@@ -11,7 +11,10 @@
  * key.  The reader also tells the handler whether the line continues the
  * previous value (an indented line after a key) and whether a section
  * header came since its last call (each [check] and [figure] header starts a
- * record of its own, though inih passes the same section name).
+ * record of its own, though inih passes the same section name).  It also
+ * reads an "[include NAME]" line's file in its place (a stack of sources),
+ * and notes where each line it hands on came from (origins), so that every
+ * message names the file, included or not, and its line.
  *
  * Every allocation is recorded in the file's block list and freed with it.
  */
@@ -20,7 +23,6 @@
 #include <ctype.h>
 #include <errno.h>
 #include <ini.h>
-#include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
