@@ -343,9 +343,17 @@ static void test_include(void **state)
         assert_null(f);
         assert_non_null(strstr(msg, bad[i].msg));
     }
+    /* a NUL byte: not text (the reader shared with scene files, text.h) */
+    char path[600];
+    snprintf(path, sizeof path, "%s/t.case", dir);
+    FILE *nul = fopen(path, "wb");
+    assert_non_null(nul);
+    fwrite("[case]\0\n", 1, 8, nul);
+    fclose(nul);
+    assert_int_equal(load_t(dir, &f, msg, sizeof msg), SIM_EINVAL);
+    assert_non_null(strstr(msg, "/t.case: NUL byte (allowed text only)"));
     const char *files[] = {"t.case", "checks.inc", "more.inc"};
     for (size_t i = 0; i < 3; i++) {
-        char path[600];
         snprintf(path, sizeof path, "%s/%s", dir, files[i]);
         remove(path);
     }

@@ -29,6 +29,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "text.h"
+
 #define MAX_FILE_BYTES (1u << 20)
 #define MAX_INCLUDE_DEPTH 8
 
@@ -304,7 +306,6 @@ typedef struct parse_ctx {
     sweep_builder paper_rows, quick_rows;
     list_field *lists;
     size_t nlists, caplists;
-    int case_seen;
     uint64_t case_keys_seen; /* the [case] keys set so far, in any [case] section */
 } parse_ctx;
 
@@ -667,7 +668,6 @@ static int start_record(parse_ctx *c, const char *section)
         return 0;
     c->kind = sections[i].kind;
     if (sections[i].size == 0) {
-        c->case_seen |= c->kind == SEC_CASE;
         c->record = NULL;
         return 1;
     }
@@ -723,34 +723,21 @@ static int handler(void *user, const char *section, const char *name, const char
 }
 
 /* The text of the file at path (at most MAX_FILE_BYTES, no NUL byte) into
- * *text (the caller frees it); msg says what is wrong. */
+ * *text (the caller frees it); msg names the file and says what is wrong. */
 static sim_status read_text(const char *path, char **text, char *msg, size_t msglen)
 {
-    *text = NULL;
-    FILE *in = fopen(path, "rb");
-    if (in == NULL) {
-        snprintf(msg, msglen, "%s: cannot open: %s", path, strerror(errno));
-        return SIM_EIO;
+    size_t n;
+    char why[256];
+    sim_status st = vfy_read_file(path, MAX_FILE_BYTES, text, &n, why, sizeof why);
+    if (st == SIM_OK && memchr(*text, '\0', n) != NULL) {
+        snprintf(why, sizeof why, "NUL byte (allowed text only)");
+        free(*text);
+        *text = NULL;
+        st = SIM_EINVAL;
     }
-    char *buf = malloc(MAX_FILE_BYTES + 1);
-    size_t n = buf ? fread(buf, 1, MAX_FILE_BYTES + 1, in) : 0;
-    const int bad = ferror(in);
-    fclose(in);
-    sim_status st = SIM_OK;
-    if (buf == NULL)
-        snprintf(msg, msglen, "%s: out of memory", path), st = SIM_ENOMEM;
-    else if (bad)
-        snprintf(msg, msglen, "%s: cannot read", path), st = SIM_EIO;
-    else if (n > MAX_FILE_BYTES || memchr(buf, '\0', n) != NULL)
-        snprintf(msg, msglen, "%s: not a case file (text of at most %u bytes)", path,
-                 MAX_FILE_BYTES), st = SIM_EINVAL;
-    if (st != SIM_OK) {
-        free(buf);
-        return st;
-    }
-    buf[n] = '\0';
-    *text = buf;
-    return SIM_OK;
+    if (st != SIM_OK)
+        snprintf(msg, msglen, "%s: %s", path, why);
+    return st;
 }
 
 /* "[include NAME]" at p (a line's first non-blank character): read
@@ -897,7 +884,7 @@ static int finish(parse_ctx *c)
         *l->field = a;
     }
     at_origin(c, -1);
-    if (!c->case_seen || f->c.suite == NULL || f->c.summary == NULL)
+    if (f->c.suite == NULL || f->c.summary == NULL)
         return fail(c, SIM_EINVAL, NULL, "[case] needs suite and summary");
     for (size_t i = 0; i < c->metrics.n + c->case_metrics.n; i++) {
         const int own_rows = i < c->metrics.n;

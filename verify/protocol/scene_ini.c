@@ -19,6 +19,7 @@
  * Work happens on a copy: *scene is written only on success.
  */
 #include "scene_ini.h"
+#include "text.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -810,32 +811,19 @@ sim_status vfy_scene_load(const char *path, const char *const *overrides, size_t
     ctx_init(&c, path);
     char out[1024];
 
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fail(&c, SIM_EIO, "", "cannot open: %s", strerror(errno));
-        format_at(&c, out, sizeof out);
-        put_msg(msg, msglen, out);
-        return c.status;
-    }
-    char *buf = malloc(MAX_FILE_BYTES + 1);
-    size_t n = buf ? fread(buf, 1, MAX_FILE_BYTES + 1, f) : 0;
-    int read_errno = errno;
-    if (!buf)
-        fail(&c, SIM_ENOMEM, "", "out of memory reading the file");
-    else if (ferror(f))
-        fail(&c, SIM_EIO, "", "cannot read: %s", strerror(read_errno));
-    else if (n > MAX_FILE_BYTES)
-        fail(&c, SIM_EINVAL, "", "too large (allowed at most %u bytes)", MAX_FILE_BYTES);
+    char *buf, why[256];
+    size_t n;
+    st = vfy_read_file(path, MAX_FILE_BYTES, &buf, &n, why, sizeof why);
+    if (st != SIM_OK)
+        fail(&c, st, "", "%s", why);
     else if ((c.line = nul_line(buf, n)) > 0)
         fail(&c, SIM_EINVAL, "", "NUL byte (allowed text only)");
-    fclose(f);
     if (c.failed) {
         format_at(&c, out, sizeof out);
         put_msg(msg, msglen, out);
         free(buf);
         return c.status;
     }
-    buf[n] = '\0';
     st = run(&c, buf, overrides, noverrides, scene, msg, msglen);
     free(buf);
     return st;

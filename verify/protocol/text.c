@@ -1,5 +1,6 @@
 #include "text.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -145,4 +146,35 @@ size_t vfy_csv_split(char *line, char **fields, size_t max)
         p++;
     }
     return count;
+}
+
+sim_status vfy_read_file(const char *path, size_t max, char **text, size_t *len, char *why,
+                         size_t whylen)
+{
+    *text = NULL;
+    *len = 0;
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) {
+        snprintf(why, whylen, "cannot open: %s", strerror(errno));
+        return SIM_EIO;
+    }
+    char *buf = malloc(max + 1);
+    size_t n = buf ? fread(buf, 1, max + 1, f) : 0;
+    const int read_errno = errno;
+    sim_status st = SIM_OK;
+    if (buf == NULL)
+        snprintf(why, whylen, "out of memory reading the file"), st = SIM_ENOMEM;
+    else if (ferror(f))
+        snprintf(why, whylen, "cannot read: %s", strerror(read_errno)), st = SIM_EIO;
+    else if (n > max)
+        snprintf(why, whylen, "too large (allowed at most %zu bytes)", max), st = SIM_EINVAL;
+    fclose(f);
+    if (st != SIM_OK) {
+        free(buf);
+        return st;
+    }
+    buf[n] = '\0';
+    *text = buf;
+    *len = n;
+    return SIM_OK;
 }

@@ -13,6 +13,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "error.h"
+
 /* A string that grows as text is appended.  {0} is the empty text; after a
  * failed append (out of memory) it keeps what it held and `failed` is set,
  * and every later append fails too. */
@@ -43,6 +45,16 @@ void vfy_text_free(vfy_text *t);
  * out of memory. */
 char *vfy_aprintf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 char *vfy_vaprintf(const char *fmt, va_list ap) __attribute__((format(printf, 1, 0)));
+
+/* The whole file at path, at most max bytes, as NUL-terminated text: *text
+ * (the caller frees it) and *len, its length without the NUL.  Returns
+ * SIM_OK, or an error with `why` the reason alone, for the caller to put
+ * after the file's name: "cannot open: REASON" or "cannot read: REASON"
+ * (SIM_EIO), "too large (allowed at most MAX bytes)" (SIM_EINVAL), "out of
+ * memory reading the file" (SIM_ENOMEM).  A NUL byte inside is the
+ * caller's to refuse. */
+sim_status vfy_read_file(const char *path, size_t max, char **text, size_t *len, char *why,
+                         size_t whylen);
 
 /* A copy of s (NULL: of ""), or NULL when out of memory. */
 char *vfy_strdup(const char *s);
