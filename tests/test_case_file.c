@@ -78,7 +78,17 @@ static const char good[] =
     "\n"
     "[figure]\n"
     "kind = curves\n"
-    "quantity = T\n";
+    "quantity = T\n"
+    "\n"
+    "[figure]\n"
+    "kind = row curves\n"
+    "suffix = -{alpha}\n"
+    "each_row = true\n"
+    "band = true\n"
+    "logy = true\n"
+    "key_inside = bottom left\n"
+    "curve = y = 1x - 2=grw_curve_ln_f\n"
+    "ref_curve = model=grw_curve_line_1_5\n";
 
 static vfy_case_file *parse_ok(const char *text)
 {
@@ -147,7 +157,21 @@ static void test_every_key_reaches_its_member(void **state)
     assert_string_equal(d->figures[0].series[1], "b");
     assert_null(d->figures[0].series[2]);
     assert_int_equal(d->figures[1].kind, VFY_FIGURE_CURVES);
-    assert_int_equal(d->figures[2].kind, VFY_FIGURE_NONE);
+    const vfy_figure_spec *rows = &d->figures[2];
+    assert_int_equal(rows->kind, VFY_FIGURE_ROW_CURVES);
+    assert_string_equal(rows->suffix, "-{alpha}");
+    assert_true(rows->each_row && rows->band && rows->logy);
+    assert_string_equal(rows->key_inside, "bottom left");
+    /* the label ends at the last '='; a fixed-x curve has its x */
+    assert_string_equal(rows->curves->label, "y = 1x - 2");
+    assert_non_null(rows->curves->fn);
+    assert_false(rows->curves->reference);
+    assert_true(isnan(rows->curves->x));
+    assert_string_equal(rows->curves->next->label, "model");
+    assert_true(rows->curves->next->reference);
+    assert_close(rows->curves->next->x, 1.5, 0, 0);
+    assert_null(rows->curves->next->next);
+    assert_int_equal(d->figures[3].kind, VFY_FIGURE_NONE);
     assert_null(d->label);   /* absent: NULL, as in a C description */
     vfy_case_file_free(f);
 }
@@ -259,7 +283,16 @@ static void test_bad_input_names_file_line_and_key(void **state)
     refused(42, "guard = at_most\nguard = at_least", "t.case:43: [check] guard: set twice");
     refused(37, "", "t.case:35: [check] needs name and rule");
     refused(51, "", "t.case:45: [check] second: a known difference needs");
-    refused(58, "kind = bars", "t.case:58: [figure] kind: 'bars' (allowed curves, points)");
+    refused(58, "kind = bars", "t.case:58: [figure] kind: 'bars' (allowed curves, points, "
+            "row curves, row points)");
+    refused(74, "curve = grw_curve_ln_f", "t.case:74: [figure] curve: 'grw_curve_ln_f' "
+            "(allowed LABEL=FUNCTION)");
+    refused(74, "curve = f=no_such_curve", "t.case:74: [figure] curve: unknown curve "
+            "'no_such_curve'");
+    refused(74, "", "t.case:67: [figure] of kind row curves or row points needs a curve");
+    refused(69, "suffix = -rows", "t.case:67: [figure] each_row needs a suffix that tells");
+    refused(61, "x_lo = 0.5\nlogy = true", "t.case:57: [figure]: curve, ref_curve, each_row, "
+            "band, logy and key_inside are for kinds row curves and row points");
     refused(32, "    more", "t.case:32: [metric Emax] fn: an indented line continues only a "
             "text value");
     refused(31, "fn max_rel_err", "t.case:31: not a [section] header");

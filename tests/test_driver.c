@@ -1065,6 +1065,72 @@ static void test_points_groups(void **state)
     assert_non_null(strstr(gp, "set offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n"));
 }
 
+/* Figures of the curves a row makes (driver.h, ROW_CURVES and ROW_POINTS):
+ * one a row with its suffix a template, or the last row's; the data drawn
+ * as points with error bars, the references as lines; data curves that do
+ * not share their x are refused. */
+static int line_curve(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
+{
+    (void)run;
+    if (vfy_curve_alloc(out, isnan(x) ? 3 : (size_t)x, isnan(x)) != 0)
+        return -1;
+    for (size_t k = 0; k < out->count; k++) {
+        out->x[k] = (double)k;
+        out->y[k] = vfy_values_get(&row->values, "y") * (double)k;
+        if (out->ci)
+            out->ci[k] = 0.5;
+    }
+    return 0;
+}
+static const vfy_figure_curve row_model = {.label = "model", .fn = line_curve, .x = 2,
+                                           .reference = 1};
+static const vfy_figure_curve row_data = {.label = "y {y:%g}", .fn = line_curve, .x = NAN,
+                                          .next = &row_model};
+static const vfy_figure_curve row_short = {.label = "short", .fn = line_curve, .x = 2};
+static const vfy_figure_curve row_mixed = {.label = "data", .fn = line_curve, .x = NAN,
+                                           .next = &row_short};
+static const char *const row_rows[] = {"a: $y=1", "b: $y=2", NULL};
+#define ROW_FIGURES(...)                                                               \
+    {.scene = "grw-ex3", .no_simulation = 1, .quick_rows = {.rows = row_rows},           \
+     .label = "{case} {label}", .columns = "y:%g", .figures = VFY_FIGURES(__VA_ARGS__),   \
+     .title = "{case}", .notes = "notes"}
+static const vfy_case_desc row_desc = ROW_FIGURES(
+    {.kind = VFY_FIGURE_ROW_POINTS, .suffix = "-{label}", .each_row = 1, .curves = &row_data,
+     .title = "{case} {label}", .xlabel = "x", .ylabel = "y", .logy = 1,
+     .key_inside = "bottom left"},
+    {.kind = VFY_FIGURE_ROW_CURVES, .suffix = "-last", .curves = &row_data, .band = 1,
+     .xlabel = "x", .ylabel = "y"});
+static const vfy_case row_case = {"driver-row-figures", "test", "", 0, &row_desc};
+static const vfy_case_desc row_mixed_desc = ROW_FIGURES(
+    {.kind = VFY_FIGURE_ROW_POINTS, .suffix = "-mixed", .curves = &row_mixed});
+static const vfy_case row_mixed_case = {"driver-row-figures-mixed", "test", "", 0, &row_mixed_desc};
+
+static void test_row_figures(void **state)
+{
+    (void)state;
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    vfy_report r;
+    vfy_report_init(&r, NULL);
+    char msg[512], buf[8192];
+    assert_int_equal(vfy_run_described(&row_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    assert_non_null(strstr(read_out_file("driver-row-figures-b-points.csv", buf, sizeof buf),
+                           "x,y 2,y 2_ci\n0,0,0.5\n1,2,0.5\n2,4,0.5\n"));
+    assert_non_null(strstr(read_out_file("driver-row-figures-a-theory.csv", buf, sizeof buf),
+                           "0,0\n1,1\n"));
+    read_out_file("driver-row-figures-a.gp", buf, sizeof buf);
+    assert_non_null(strstr(buf, "set logscale y"));
+    assert_non_null(strstr(buf, "bottom left"));
+    assert_non_null(strstr(buf, "title 'model'"));
+    read_out_file("driver-row-figures-last.gp", buf, sizeof buf);   /* the last row's */
+    assert_non_null(strstr(buf, "'y 2'"));
+    assert_null(strstr(buf, "'y 1'"));
+    assert_non_null(strstr(buf, "filledcurves"));   /* the band */
+    vfy_report_init(&r, NULL);
+    assert_int_not_equal(vfy_run_described(&row_mixed_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+}
+
 /* A points figure's data files take its labels as their headers, each one
  * CSV field: a label with a comma or a quote is quoted, not split. */
 static void test_points_headers_quoted(void **state)
@@ -1161,6 +1227,7 @@ int main(void)
         cmocka_unit_test(test_time_average_and_abs_diff), cmocka_unit_test(test_columns),
         cmocka_unit_test(test_curve_panels), cmocka_unit_test(test_long_description),
         cmocka_unit_test(test_points_groups), cmocka_unit_test(test_points_headers_quoted),
+        cmocka_unit_test(test_row_figures),
         cmocka_unit_test(test_xy_grid),
     };
     return cmocka_run_group_tests(tests, setup, NULL);

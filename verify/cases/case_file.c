@@ -126,7 +126,9 @@ typedef enum key_type {
     K_FN,        /* a function pointer of kind fn */
     K_BATCHES,   /* vfy_batches: COUNT STRIDE */
     K_DIFFERS,   /* const char * of the record's vfy_difference */
-    K_KIND,      /* vfy_figure_kind: curves or points */
+    K_KIND,      /* vfy_figure_kind: curves, points, row curves or row points */
+    K_CURVE,     /* a vfy_figure_curve appended to the list: LABEL=FUNCTION, one
+                    per occurrence (ref_curve: a reference) */
 } key_type;
 
 typedef struct key_spec {
@@ -222,6 +224,12 @@ static const key_spec figure_keys[] = {
     FIGURE_KEY("title", K_TEXT, title),
     FIGURE_KEY("xlabel", K_TEXT, xlabel),
     FIGURE_KEY("ylabel", K_TEXT, ylabel),
+    FIGURE_KEY("curve", K_CURVE, curves),
+    FIGURE_KEY("ref_curve", K_CURVE, curves),
+    FIGURE_KEY("each_row", K_BOOL, each_row),
+    FIGURE_KEY("band", K_BOOL, band),
+    FIGURE_KEY("logy", K_BOOL, logy),
+    FIGURE_KEY("key_inside", K_TEXT, key_inside),
     {NULL, 0, 0, 0}};
 
 /* ------------------------------------------------------------ the parse */
@@ -465,6 +473,30 @@ static int set_fixed_x(parse_ctx *c, const key_spec *table, void *base, const ch
     return 1;
 }
 
+/* "LABEL=FUNCTION" (the label may hold '=': the last one ends it) appended
+ * to the figure's list at *list; key ref_curve makes a reference. */
+static int add_curve(parse_ctx *c, const char *key, const vfy_figure_curve **list,
+                     const char *value)
+{
+    const char *eq = strrchr(value, '=');
+    if (eq == NULL || eq == value || eq[1] == '\0')
+        return fail(c, SIM_EINVAL, key, "'%s' (allowed LABEL=FUNCTION)", value);
+    const vfy_named_fn *e = find_fn(c, VFY_FN_CURVE, eq + 1);
+    if (e == NULL)
+        return fail(c, SIM_EINVAL, key, "unknown curve '%s' (named.h, registry.c)", eq + 1);
+    vfy_figure_curve *curve = own(c->f, sizeof *curve);
+    char *label = own_strndup(c->f, value, (size_t)(eq - value));
+    if (curve == NULL || label == NULL)
+        return nomem(c);
+    *curve = (vfy_figure_curve){.label = label, .fn = e->curve, .x = e->x,
+                                .reference = strcmp(key, "ref_curve") == 0};
+    while (*list != NULL)
+        list = (const vfy_figure_curve **)&(*list)->next;
+    *list = curve;
+    c->last_field = NULL;
+    return 1;
+}
+
 static int apply_key(parse_ctx *c, const key_spec *table, void *base, const char *key,
                      const char *value)
 {
@@ -482,7 +514,7 @@ static int apply_key(parse_ctx *c, const key_spec *table, void *base, const char
     }
     if (strcmp(key, "x") == 0 && c->x_fixed_by != NULL)
         return fail(c, SIM_EINVAL, key, "'%s' sets x itself", c->x_fixed_by);
-    if (s->type != K_LIST) {
+    if (s->type != K_LIST && s->type != K_CURVE) {
         if (k < 64 && (c->seen >> k & 1))
             return fail(c, SIM_EINVAL, key, "set twice in this section");
         c->seen |= k < 64 ? (uint64_t)1 << k : 0;
@@ -513,11 +545,20 @@ static int apply_key(parse_ctx *c, const key_spec *table, void *base, const char
             return fail(c, SIM_EINVAL, key, "'%s' (allowed true, false)", value);
         *(int *)at = strcmp(value, "true") == 0;
         return 1;
-    case K_KIND:
-        if (strcmp(value, "curves") != 0 && strcmp(value, "points") != 0)
-            return fail(c, SIM_EINVAL, key, "'%s' (allowed curves, points)", value);
-        *(vfy_figure_kind *)at = value[0] == 'c' ? VFY_FIGURE_CURVES : VFY_FIGURE_POINTS;
-        return 1;
+    case K_KIND: {
+        static const struct {
+            const char *word;
+            vfy_figure_kind kind;
+        } kinds[] = {{"curves", VFY_FIGURE_CURVES}, {"points", VFY_FIGURE_POINTS},
+                     {"row curves", VFY_FIGURE_ROW_CURVES}, {"row points", VFY_FIGURE_ROW_POINTS}};
+        for (size_t i = 0; i < sizeof kinds / sizeof *kinds; i++)
+            if (strcmp(value, kinds[i].word) == 0)
+                return *(vfy_figure_kind *)at = kinds[i].kind, 1;
+        return fail(c, SIM_EINVAL, key, "'%s' (allowed curves, points, row curves, row points)",
+                    value);
+    }
+    case K_CURVE:
+        return add_curve(c, key, (const vfy_figure_curve **)at, value);
     case K_BATCHES: {
         vfy_batches *b = (vfy_batches *)at;
         unsigned long long count, stride;
@@ -560,6 +601,7 @@ static int apply_key(parse_ctx *c, const key_spec *table, void *base, const char
         case VFY_FN_HOOK: *(vfy_hook_fn *)at = e->hook; break;
         case VFY_FN_DERIVE: *(vfy_derive_fn *)at = e->derive; break;
         case VFY_FN_ADJUST: *(vfy_adjust_fn *)at = e->adjust; break;
+        case VFY_FN_CURVE: break;   /* no K_FN key names a curve (K_CURVE) */
         }
         return 1;
     }
@@ -908,8 +950,22 @@ static int finish(parse_ctx *c)
     }
     for (size_t i = 0; i < c->figures.n; i++) {
         at_origin(c, c->figures.lines[i]);
-        if (((const vfy_figure_spec *)c->figures.v[i])->kind == VFY_FIGURE_NONE)
+        const vfy_figure_spec *g = c->figures.v[i];
+        if (g->kind == VFY_FIGURE_NONE)
             return fail(c, SIM_EINVAL, NULL, "[figure] needs kind");
+        const int by_row = g->kind == VFY_FIGURE_ROW_CURVES || g->kind == VFY_FIGURE_ROW_POINTS;
+        int data = 0;
+        for (const vfy_figure_curve *k = g->curves; k != NULL; k = k->next)
+            data += !k->reference;
+        if (by_row && data == 0)
+            return fail(c, SIM_EINVAL, NULL, "[figure] of kind row curves or row points needs "
+                        "a curve (curve = LABEL=FUNCTION)");
+        if (!by_row && (g->curves || g->each_row || g->band || g->logy || g->key_inside))
+            return fail(c, SIM_EINVAL, NULL, "[figure]: curve, ref_curve, each_row, band, logy "
+                        "and key_inside are for kinds row curves and row points");
+        if (g->each_row && (g->suffix == NULL || strchr(g->suffix, '{') == NULL))
+            return fail(c, SIM_EINVAL, NULL, "[figure] each_row needs a suffix that tells the "
+                        "rows apart (a template: -{alpha})");
     }
     vfy_case_desc *d = &f->d;
     d->partners = records(c, &c->partners, sizeof *d->partners);

@@ -120,7 +120,7 @@ static sim_status ex5_extrapolate(vfy_case_run *run, vfy_report *r, char *msg, s
 enum { TAIL_B, TAIL_B_SE, TAIL_CHI2, TAIL_C_FIRST, TAIL_C_LAST, TAIL_SHELLS,
        TAIL_B_FAR, TAIL_B_FAR_SE, TAIL_B_LOCAL, TAIL_B_LOCAL_SE, TAIL_B_ANCHORED,
        TAIL_B_ANCHORED_SE, TAIL_B_EXPECTED, TAIL_A_THEORY, TAIL_A_FIT, TAIL_A_FIT_SE,
-       TAIL_A_SHELLS, TAIL_A_FIT_C2 };
+       TAIL_A_SHELLS, TAIL_A_FIT_C2, TAIL_B_NEAR };
 
 /* The row's histogram: upper edges r[k], f[k], ci[k] (bins each). */
 static int tail_histogram(const vfy_row *row, double **buf)
@@ -185,13 +185,15 @@ static double grw_tail_metric(const vfy_case_run *run, const vfy_row *row, const
         return ref_heated_tail_A(&p, row->scene.collisions.exponent,
                                  vfy_values_get(&row->values, "T"));
     }
-    if (which >= TAIL_A_FIT) {
+    if (which >= TAIL_A_FIT && which <= TAIL_A_FIT_C2) {
         double A, A_se;
         const double c_lo = which == TAIL_A_FIT_C2 ? VFY_TOL_TAILS_C_LO : VFY_TOL_TAILS_A_C_LO;
         const size_t used = tail_amplitude(row, c_lo, &A, &A_se);
         return which == TAIL_A_SHELLS ? (double)used : which == TAIL_A_FIT_SE ? A_se : A;
     }
     const vfy_tail_exponent t = tail_fit(row, 0, VFY_TOL_TAILS_C_LO, INFINITY);
+    if (which == TAIL_B_NEAR)   /* the clean range's first window */
+        return tail_fit(row, 0, t.r_first, t.r_first + VFY_TOL_TAILS_WINDOW).b;
     if (which == TAIL_B_FAR || which == TAIL_B_FAR_SE) {
         const vfy_tail_exponent far = tail_fit(row, 0, VFY_TOL_TAILS_C_FAR, INFINITY);
         return which == TAIL_B_FAR ? far.b : far.b_se;
@@ -226,166 +228,155 @@ static double grw_tail_metric(const vfy_case_run *run, const vfy_row *row, const
     }
 }
 
+/* ---------------------------------------------- the tails' figures' curves */
+
+/* The figures of grw-ex6..8 (their [figure]s): paper A Fig. 6, the steady
+ * histogram beside the initial Maxwellian, ln f against the speed; Figs.
+ * 7-9, y_k against x_k with the lines y = x - 2, 1.25 x - 2, 1.5 x - 2, in
+ * the paper's absolute speed r = c v0 (v0 from the steady T); ln G(c) = ln f
+ * + A c^b; and the local slope.  Each curve (vfy_curve_fn) is one of these,
+ * made from the row's histogram. */
+enum { CURVE_LN_F, CURVE_MAXWELLIAN, CURVE_LN_G, CURVE_EXPONENT };
+
+/* The curves by shell (which: a CURVE_ above). */
+static int tail_shells(const vfy_row *row, int which, vfy_curve *out)
+{
+    const sim_scene *s = &row->solver;
+    const size_t K = s->steady.bins;
+    const double T = vfy_values_get(&row->values, "T");
+    const double v0 = sqrt(2.0 * T / sim_scene_grain_mass(s));
+    const double delta = s->steady.c_max / (double)K;
+    const double A = vfy_values_get(&row->values, "A_theory");
+    const double b_theory = vfy_values_get(&row->values, "b_expected");
+    double *h = NULL;
+    if (tail_histogram(row, &h) != 0 || vfy_curve_alloc(out, K, which != CURVE_MAXWELLIAN) != 0) {
+        free(h);
+        return -1;
+    }
+    const double *edge = h, *f = h + K, *fci = h + 2 * K;
+    double lnf_min = INFINITY;   /* the initial Maxwellian is drawn down to the steady
+                                    state's smallest ln f (less 2): further down (ln f ~
+                                    -800 at r = 40) it would set the scale and flatten
+                                    the steady state into a line */
+    for (size_t k = 0; k < K; k++)
+        lnf_min = f[k] > 0.0 ? fmin(lnf_min, log(f[k])) : lnf_min;
+    for (size_t k = 0; k < K; k++) {
+        const double c = ((double)k + 0.5) * delta;
+        const double lnf = f[k] > 0.0 ? log(f[k]) : NAN;
+        const double lnf_ci = f[k] > 0.0 ? fci[k] / f[k] : NAN;
+        const double d = log(f[0]) - lnf;
+        const double lnf0 = -1.5 * log(M_PI) - c * c * T / s->particles.maxwellian.temperature;
+        switch (which) {
+        case CURVE_LN_F:
+            out->x[k] = c * v0;
+            out->y[k] = lnf;
+            out->ci[k] = lnf_ci;
+            break;
+        case CURVE_MAXWELLIAN:
+            out->x[k] = c * v0;
+            out->y[k] = lnf0 < lnf_min - 2.0 ? NAN : lnf0;
+            break;
+        case CURVE_LN_G:   /* the fit's shells */
+            out->x[k] = c;
+            out->y[k] = lnf_ci < 0.5 ? lnf + A * pow(c, b_theory) : NAN;
+            out->ci[k] = lnf_ci;
+            break;
+        default:
+            out->x[k] = k > 0 ? log(v0 * (edge[k] - edge[0])) : NAN;
+            out->y[k] = k > 0 && d > 0.0 ? log(d) : NAN;
+            out->ci[k] = k > 0 && d > 0.0 ? lnf_ci / d : NAN;
+        }
+    }
+    free(h);
+    return 0;
+}
+
+static int grw_curve_ln_f(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
+{
+    (void)run, (void)x;
+    return tail_shells(row, CURVE_LN_F, out);
+}
+
+static int grw_curve_maxwellian(const vfy_case_run *run, const vfy_row *row, double x,
+                                vfy_curve *out)
+{
+    (void)run, (void)x;
+    return tail_shells(row, CURVE_MAXWELLIAN, out);
+}
+
+static int grw_curve_ln_g(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
+{
+    (void)run, (void)x;
+    return tail_shells(row, CURVE_LN_G, out);
+}
+
+static int grw_curve_exponent(const vfy_case_run *run, const vfy_row *row, double x,
+                              vfy_curve *out)
+{
+    (void)run, (void)x;
+    return tail_shells(row, CURVE_EXPONENT, out);
+}
+
+/* Paper A's line y = x_slope * x - 2 over the exponent figure's x range,
+ * through two points. */
+static int grw_curve_line(const vfy_case_run *run, const vfy_row *row, double slope,
+                          vfy_curve *out)
+{
+    (void)run;
+    const sim_scene *s = &row->solver;
+    const double v0 = sqrt(2.0 * vfy_values_get(&row->values, "T") / sim_scene_grain_mass(s));
+    if (vfy_curve_alloc(out, 2, 0) != 0)
+        return -1;
+    out->x[0] = 0.0;
+    out->x[1] = log(v0 * s->steady.c_max);
+    out->y[0] = slope * out->x[0] - 2.0;
+    out->y[1] = slope * out->x[1] - 2.0;
+    return 0;
+}
+
 /* The local slope: the fit over a window of width VFY_TOL_TAILS_WINDOW in c
  * centred at each shell's upper edge, for every window that ends by c_last
  * (from the core, where it is near the Gaussian's 2, along the clean range),
- * against c, beside b_expected and 2 ({case}-local-slope.png); the case
- * values b_near (the clean range's first window), b_local (its last) and the
- * row's range, for the notes.  Returns 0 or -1 (I/O or memory). */
-static int tails_local_slope(vfy_case_run *run, const vfy_row *row, const double *edge,
-                             const double *f, const double *fci, size_t K)
+ * against c; its ci VFY_TOL_TAILS_Z standard errors. */
+static int grw_curve_local_slope(const vfy_case_run *run, const vfy_row *row, double x,
+                                 vfy_curve *out)
 {
-    const double c_first = vfy_values_get(&row->values, "c_first");
+    (void)run, (void)x;
+    const size_t K = row->solver.steady.bins;
     const double c_last = vfy_values_get(&row->values, "c_last");
-    const double half = 0.5 * VFY_TOL_TAILS_WINDOW, expected = vfy_values_get(&row->values,
-                                                                             "b_expected");
-    double *buf = malloc((3 * K + 6) * sizeof *buf);
-    if (buf == NULL)
+    const double half = 0.5 * VFY_TOL_TAILS_WINDOW;
+    double *h = NULL;
+    if (tail_histogram(row, &h) != 0 || vfy_curve_alloc(out, K, 1) != 0) {
+        free(h);
         return -1;
-    double *c = buf, *b = c + K, *b_ci = b + K, *lx = b_ci + K, *ly = lx + 2;
+    }
+    const double *edge = h, *f = h + K, *fci = h + 2 * K;
     for (size_t k = 0; k < K; k++) {
         const double lo = edge[k] - half, hi = edge[k] + half;
         vfy_tail_exponent w = {.b = NAN, .b_se = NAN};
         if (lo >= edge[0] && hi <= c_last + 1e-9)
             w = vfy_fit_tail_exponent(edge, f, fci, K, 0, lo, hi, VFY_TOL_TAILS_REL_MAX,
                                       SIM_LAMBDA_P);
-        c[k] = edge[k];
-        b[k] = w.b;
-        b_ci[k] = VFY_TOL_TAILS_Z * w.b_se;
+        out->x[k] = edge[k];
+        out->y[k] = w.b;
+        out->ci[k] = VFY_TOL_TAILS_Z * w.b_se;
     }
-    vfy_values_set(&run->values, "b_near",
-                   vfy_fit_tail_exponent(edge, f, fci, K, 0, c_first,
-                                         c_first + VFY_TOL_TAILS_WINDOW, VFY_TOL_TAILS_REL_MAX,
-                                         SIM_LAMBDA_P).b);
-    static const char *const copied[] = {"b_local", "b_expected", "c_first", "c_last"};
-    for (size_t i = 0; i < sizeof copied / sizeof copied[0]; i++)   /* for the notes */
-        vfy_values_set(&run->values, copied[i], vfy_values_get(&row->values, copied[i]));
-    lx[0] = 0.0;
-    lx[1] = c_last;
-    ly[0] = ly[1] = expected;
-    ly[2] = ly[3] = 2.0;
-    char expected_label[48], name[96], title[200];
-    snprintf(expected_label, sizeof expected_label, "b = 1 + lambda/2 = %g", expected);
-    const vfy_xy_curve curves[] = {
-        {.label = "local slope (DSMC), band: 2 standard errors", .count = K, .x = c,
-         .y = {b}, .ci = {b_ci}, .band = 1},
-        {.label = expected_label, .reference = 1, .count = 2, .x = lx, .y = {ly}},
-        {.label = "b = 2 (Gaussian)", .reference = 1, .count = 2, .x = lx, .y = {ly + 2}}};
-    snprintf(name, sizeof name, "%s-local-slope", run->c->name);
-    snprintf(title, sizeof title, "%s: the local slope of y_k against x_k (paper A Figs. 7-9) "
-             "over windows of width %g in c", run->c->name, VFY_TOL_TAILS_WINDOW);
-    const vfy_xy_figure fig = {.name = name, .title = title,
-                               .xlabel = "c = |C|/v0 (window centre)",
-                               .comment = run->comment, .npanels = 1,
-                               .ylabel = {"local slope"}, .ncurves = 3, .curves = curves};
-    const int rc = vfy_write_xy(run->o, &fig);
-    free(buf);
-    return rc;
+    free(h);
+    return 0;
 }
 
-/* The figures: paper A Fig. 6 (the steady histogram beside the initial
- * Maxwellian, ln f against the speed) and Figs. 7-9 (y_k against x_k with
- * the lines y = x - 2, 1.25 x - 2, 1.5 x - 2), in the paper's absolute
- * speed r = c v0 (v0 from the steady T). */
-static sim_status grw_tails_figures(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+/* A level line under the local slope, from c = 0 to c_last: at b_expected
+ * (level NaN), or at the level (the Gaussian's 2). */
+static int grw_curve_slope_level(const vfy_case_run *run, const vfy_row *row, double level,
+                                 vfy_curve *out)
 {
-    (void)r;
-    const vfy_row *row = &run->rows[run->nrows - 1];
-    const sim_scene *s = &row->solver;
-    const size_t K = s->steady.bins;
-    const double T = vfy_values_get(&row->values, "T");
-    const double v0 = sqrt(2.0 * T / sim_scene_grain_mass(s));
-    double *h = NULL;
-    double *buf = malloc(12 * (K ? K : 1) * sizeof *buf);
-    if (buf == NULL || tail_histogram(row, &h) != 0) {
-        free(buf);
-        free(h);
-        snprintf(msg, msglen, "out of memory");
-        return SIM_ENOMEM;
-    }
-    const double *edge = h, *f = h + K, *fci = h + 2 * K;
-    double *rc = buf, *lnf = rc + K, *lnf_ci = lnf + K, *lnf0 = lnf_ci + K;
-    double *x = lnf0 + K, *y = x + K, *y_ci = y + K, *cc = y_ci + K, *lnG = cc + K;
-    double *lines = lnG + K;
-    const double delta = s->steady.c_max / (double)K;
-    const double A = vfy_values_get(&row->values, "A_theory");
-    const double b_theory = vfy_values_get(&row->values, "b_expected");
-    for (size_t k = 0; k < K; k++) {
-        const double c = ((double)k + 0.5) * delta;
-        rc[k] = c * v0;
-        lnf[k] = f[k] > 0.0 ? log(f[k]) : NAN;
-        lnf_ci[k] = f[k] > 0.0 ? fci[k] / f[k] : NAN;
-        lnf0[k] = -1.5 * log(M_PI) - c * c * T / s->particles.maxwellian.temperature;
-        const double d = log(f[0]) - lnf[k];
-        x[k] = k > 0 ? log(v0 * (edge[k] - edge[0])) : NAN;
-        y[k] = k > 0 && d > 0.0 ? log(d) : NAN;
-        y_ci[k] = k > 0 && d > 0.0 ? lnf_ci[k] / d : NAN;
-        cc[k] = c;
-        lnG[k] = lnf_ci[k] < 0.5 ? lnf[k] + A * pow(c, b_theory) : NAN;   /* the fit's shells */
-    }
-    /* the initial Maxwellian drawn down to the steady state's smallest ln f
-     * (less 2): further down (ln f ~ -800 at r = 40) it would set the scale
-     * and flatten the steady state into a line */
-    double lnf_min = INFINITY;
-    for (size_t k = 0; k < K; k++)
-        lnf_min = isfinite(lnf[k]) ? fmin(lnf_min, lnf[k]) : lnf_min;
-    for (size_t k = 0; k < K; k++)
-        if (lnf0[k] < lnf_min - 2.0)
-            lnf0[k] = NAN;
-    const double b = vfy_values_get(&row->values, "b");
-    vfy_xy_curve hist[] = {
-        {.label = "steady state (DSMC)", .count = K, .x = rc, .y = {lnf}, .ci = {lnf_ci}},
-        {.label = "initial Maxwellian", .reference = 1, .count = K, .x = rc, .y = {lnf0}}};
-    char name[96], title[160];
-    snprintf(name, sizeof name, "%s-histogram", run->c->name);
-    snprintf(title, sizeof title, "paper A Fig. 6: ln f of the speed r, %s", run->c->name);
-    vfy_xy_figure fig = {.name = name, .title = title, .xlabel = "r = |v|",
-                         .comment = run->comment, .npanels = 1, .ylabel = {"ln f"},
-                         .ncurves = 2, .curves = hist};
-    int rc_io = vfy_write_xy(run->o, &fig);
-
-    /* ln G(c) = ln f + A c^b with the balance's A: level where the tail has its form */
-    const vfy_xy_curve levelled[] = {
-        {.label = "ln G (DSMC)", .count = K, .x = cc, .y = {lnG}, .ci = {lnf_ci}}};
-    snprintf(name, sizeof name, "%s-levelled", run->c->name);
-    snprintf(title, sizeof title, "%s: ln G(c) = ln f(c) + A c^%g, A = %.4f from the "
-             "loss-diffusion balance", run->c->name, b_theory, A);
-    fig = (vfy_xy_figure){.name = name, .title = title, .xlabel = "c = |v|/v0",
-                          .comment = run->comment, .npanels = 1, .ylabel = {"ln G"},
-                          .ncurves = 1, .curves = levelled};
-    rc_io |= vfy_write_xy(run->o, &fig);
-
-    /* y = b x - 2 for b = 1, 1.25, 1.5 and the fit, each through two points */
-    static const double slopes[] = {1.0, 1.25, 1.5};
-    const double x_lo = 0.0, x_hi = log(v0 * s->steady.c_max);
-    double *lx = lines, *ly = lines + 2;   /* 2 x values, then 2 y values per line */
-    lx[0] = x_lo;
-    lx[1] = x_hi;
-    vfy_xy_curve curves[4] = {
-        {.label = "y_k (DSMC)", .count = K, .x = x, .y = {y}, .ci = {y_ci}}};
-    char labels[3][48];
-    for (size_t i = 0; i < 3; i++) {
-        ly[2 * i] = slopes[i] * x_lo - 2.0;
-        ly[2 * i + 1] = slopes[i] * x_hi - 2.0;
-        snprintf(labels[i], sizeof labels[i], "y = %gx - 2", slopes[i]);
-        curves[1 + i] = (vfy_xy_curve){.label = labels[i], .reference = 1, .count = 2,
-                                       .x = lx, .y = {ly + 2 * i}};
-    }
-    snprintf(title, sizeof title, "paper A Figs. 7-9: y_k = ln(ln f_1 - ln f_k) against "
-             "x_k = ln(r_k - r_1), %s (fitted b = %.3f)", run->c->name, b);
-    snprintf(name, sizeof name, "%s-exponent", run->c->name);
-    fig = (vfy_xy_figure){.name = name, .title = title, .xlabel = "x_k",
-                          .comment = run->comment, .npanels = 1, .ylabel = {"y_k"},
-                          .ncurves = 4, .curves = curves};
-    rc_io |= vfy_write_xy(run->o, &fig);
-    rc_io |= tails_local_slope(run, row, edge, f, fci, K);
-    free(buf);
-    free(h);
-    if (rc_io != 0) {
-        snprintf(msg, msglen, "%s: cannot write the figures", run->c->name);
-        return SIM_EIO;
-    }
-    return SIM_OK;
+    (void)run;
+    if (vfy_curve_alloc(out, 2, 0) != 0)
+        return -1;
+    out->x[0] = 0.0;
+    out->x[1] = vfy_values_get(&row->values, "c_last");
+    out->y[0] = out->y[1] = isnan(level) ? vfy_values_get(&row->values, "b_expected") : level;
+    return 0;
 }
 
 /* The functions this file's case files name (named.h, registry.c). */
@@ -409,5 +400,15 @@ const vfy_named_fn vfy_grw_named[] = {
     VFY_NAMED_METRIC_X("grw_tail_a_fit_se", grw_tail_metric, TAIL_A_FIT_SE),
     VFY_NAMED_METRIC_X("grw_tail_a_shells", grw_tail_metric, TAIL_A_SHELLS),
     VFY_NAMED_METRIC_X("grw_tail_a_fit_c2", grw_tail_metric, TAIL_A_FIT_C2),
-    VFY_NAMED_HOOK("grw_tails_figures", grw_tails_figures),
+    VFY_NAMED_METRIC_X("grw_tail_b_near", grw_tail_metric, TAIL_B_NEAR),
+    VFY_NAMED_CURVE("grw_curve_ln_f", grw_curve_ln_f),
+    VFY_NAMED_CURVE("grw_curve_maxwellian", grw_curve_maxwellian),
+    VFY_NAMED_CURVE("grw_curve_ln_g", grw_curve_ln_g),
+    VFY_NAMED_CURVE("grw_curve_exponent", grw_curve_exponent),
+    VFY_NAMED_CURVE_X("grw_curve_line_1", grw_curve_line, 1.0),
+    VFY_NAMED_CURVE_X("grw_curve_line_1_25", grw_curve_line, 1.25),
+    VFY_NAMED_CURVE_X("grw_curve_line_1_5", grw_curve_line, 1.5),
+    VFY_NAMED_CURVE("grw_curve_local_slope", grw_curve_local_slope),
+    VFY_NAMED_CURVE("grw_curve_slope_expected", grw_curve_slope_level),
+    VFY_NAMED_CURVE_X("grw_curve_slope_gaussian", grw_curve_slope_level, 2.0),
     VFY_NAMED_END};

@@ -29,7 +29,8 @@
  *
  * Each case is a description run by the driver (driver.h); what is paper
  * C's own is here: the thermostat strength derived from alpha, the sizes
- * line of the notes, and the tail analysis with its G(c) figures.
+ * line of the notes, and the tail analysis with the curves of its G(c)
+ * figures.
   *
  * The cases are data (verify/cases/scenes/ms-*.case, docs/adding-a-case.md);
  * this file holds the metrics, guards, rules and hooks they name, listed
@@ -142,42 +143,28 @@ static double ms_tail_metric(const vfy_case_run *run, const vfy_row *row, const 
     return v[(size_t)m->x];
 }
 
-/* After the rows: each row's G(c) beside the Maxwellian's (paper C Figures
- * 3, 7). */
-static sim_status ms_tails_figures(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+/* The curves of the G(c) figures (paper C Figures 3, 7; ms-tails' [figure]):
+ * the row's G(c) with its half-widths (x NaN), or the Maxwellian's (x 1). */
+static int ms_curve_g(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
 {
-    (void)r;
-    sim_status status = SIM_OK;
-    for (size_t i = 0; i < run->nrows && status == SIM_OK; i++) {
-        const vfy_row *row = &run->rows[i];
-        const size_t bins = row->solver.steady.bins;
-        double *buf = malloc(6 * bins * sizeof *buf);
-        if (buf == NULL) {
-            snprintf(msg, msglen, "out of memory");
-            return SIM_ENOMEM;
-        }
-        double *c = buf, *G = buf + 3 * bins, *Gc = buf + 4 * bins, *Gphi = buf + 5 * bins;
-        ms_tail t;
-        ms_tail_analyse(row, c, buf + bins, buf + 2 * bins, G, Gc, Gphi, &t);
-        const char *th = vfy_row_text(row, "thermostat");
-        const double alpha = vfy_values_get(&row->values, "alpha");
-        char name[160], title[200];
-        snprintf(name, sizeof name, "%s-%s-%.1f", run->c->name, th, alpha);
-        snprintf(title, sizeof title, "%s: G(c) = exp(%.3f c^%.1f) f(c), %s, alpha = %.1f",
-                 run->c->name, t.A_theory, vfy_values_get(&row->values, "b"), th, alpha);
-        const char *series[] = {"G (DSMC)"}, *curves[] = {"G of the Maxwellian"};
-        const double *ys[] = {G}, *cs[] = {Gc}, *yf[] = {Gphi};
-        const vfy_points fig = {.name = name, .title = title,
-                                .xlabel = "c = |v - V|/v0 with v0 = sqrt(2T/m)", .ylabel = "G(c)",
-                                .logy = 1, .npoints = bins, .x = c, .nseries = 1,
-                                .series = series, .y = ys, .ci = cs, .nfine = bins,
-                                .xfine = c, .ncurves = 1, .curves = curves, .yfine = yf,
-                                .comment = run->comment, .key_inside = "bottom left"};
-        if (vfy_write_points(run->o, &fig) != 0)
-            status = vfy_io_error(name, msg, msglen);
+    (void)run;
+    const size_t bins = row->solver.steady.bins;
+    double *buf = malloc(6 * (bins ? bins : 1) * sizeof *buf);
+    if (buf == NULL || vfy_curve_alloc(out, bins, isnan(x)) != 0) {
         free(buf);
+        return -1;
     }
-    return status;
+    double *c = buf, *G = buf + 3 * bins, *Gc = buf + 4 * bins, *Gphi = buf + 5 * bins;
+    ms_tail t;
+    ms_tail_analyse(row, c, buf + bins, buf + 2 * bins, G, Gc, Gphi, &t);
+    for (size_t k = 0; k < bins; k++) {
+        out->x[k] = c[k];
+        out->y[k] = isnan(x) ? G[k] : Gphi[k];
+        if (out->ci != NULL)
+            out->ci[k] = Gc[k];
+    }
+    free(buf);
+    return 0;
 }
 
 /* The functions this file's case files name (named.h, registry.c). */
@@ -193,5 +180,6 @@ const vfy_named_fn vfy_ms_named[] = {
     VFY_NAMED_METRIC_X("ms_tail_k_ci", ms_tail_metric, TAIL_K_CI),
     VFY_NAMED_METRIC_X("ms_tail_ratio4", ms_tail_metric, TAIL_RATIO4),
     VFY_NAMED_METRIC_X("ms_tail_ratio4_ok", ms_tail_metric, TAIL_RATIO4_OK),
-    VFY_NAMED_HOOK("ms_tails_figures", ms_tails_figures),
+    VFY_NAMED_CURVE("ms_curve_g", ms_curve_g),
+    VFY_NAMED_CURVE_X("ms_curve_g_maxwellian", ms_curve_g, 1.0),
     VFY_NAMED_END};

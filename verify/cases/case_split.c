@@ -246,13 +246,6 @@ static vfy_verdict cf_in_band(vfy_report *r, const char *name, vfy_case_run *run
                            strang ? VFY_TOL_SPLIT_STRANG_CF_HI : VFY_TOL_SPLIT_EULER_CF_HI);
 }
 
-static double constant(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
-{
-    (void)run;
-    (void)row;
-    return m->x;
-}
-
 static double jump_value(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
     (void)row;
@@ -378,7 +371,6 @@ const vfy_named_fn vfy_split_named[] = {
     VFY_NAMED_GUARD("halving_clean", halving_clean),
     VFY_NAMED_GUARD("a2_halving", a2_halving),
     VFY_NAMED_RULE("cf_in_band", cf_in_band),
-    VFY_NAMED_METRIC("constant", constant),
     VFY_NAMED_METRIC("jump_value", jump_value),
     VFY_NAMED_HOOK("split_after_ex5", split_after_ex5),
     VFY_NAMED_HOOK("split_after_gaussian", split_after_gaussian),

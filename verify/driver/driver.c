@@ -1660,6 +1660,120 @@ static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
     return rc;
 }
 
+/* ------------------------------------------------------------ row figures */
+
+int vfy_curve_alloc(vfy_curve *out, size_t count, int ci)
+{
+    out->count = count;
+    out->x = malloc((ci ? 3 : 2) * (count ? count : 1) * sizeof *out->x);
+    if (out->x == NULL)
+        return -1;
+    out->y = out->x + count;
+    out->ci = ci ? out->y + count : NULL;
+    return 0;
+}
+
+/* The length of a figure's curve list. */
+static size_t curves_length(const vfy_figure_curve *k)
+{
+    size_t n = 0;
+    for (; k != NULL; k = k->next)
+        n++;
+    return n;
+}
+
+/* VFY_FIGURE_ROW_CURVES: the curves c (labels, n of them) as lines. */
+static int row_xy(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
+                  const char *title, const vfy_curve *c, char *const *labels, size_t n)
+{
+    vfy_xy_curve *xy = calloc(n, sizeof *xy);
+    if (xy == NULL)
+        return -1;
+    size_t i = 0;
+    for (const vfy_figure_curve *k = f->curves; k != NULL; k = k->next, i++)
+        xy[i] = (vfy_xy_curve){.label = labels[i], .reference = k->reference,
+                               .count = c[i].count, .x = c[i].x, .y = {c[i].y},
+                               .ci = {k->reference ? NULL : c[i].ci},
+                               .band = !k->reference && f->band};
+    const vfy_xy_figure fig = {.name = name, .title = title, .xlabel = f->xlabel,
+                               .comment = run->comment, .logy = f->logy, .npanels = 1,
+                               .ylabel = {f->ylabel}, .ncurves = n, .curves = xy};
+    const int rc = vfy_write_xy(run->o, &fig);
+    free(xy);
+    return rc;
+}
+
+/* VFY_FIGURE_ROW_POINTS: the data curves of c as points on their shared x,
+ * the references as lines on theirs; -1 when they do not share it (or a
+ * data curve has no half-widths) or out of memory. */
+static int row_points(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
+                      const char *title, const vfy_curve *c, char *const *labels, size_t n)
+{
+    const double **arrays = calloc(3 * n + 1, sizeof *arrays);
+    const char **names = calloc(2 * n + 1, sizeof *names);
+    const vfy_curve *first = NULL, *first_ref = NULL;
+    size_t S = 0, R = 0, i = 0;
+    int rc = arrays && names ? 0 : -1;
+    for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next, i++) {
+        const vfy_curve **shared = k->reference ? &first_ref : &first;
+        if (*shared == NULL)
+            *shared = &c[i];
+        if (c[i].count != (*shared)->count || (!k->reference && c[i].ci == NULL))
+            rc = -1;
+        else if (k->reference) {
+            arrays[2 * n + R] = c[i].y;
+            names[n + R++] = labels[i];
+        } else {
+            arrays[S] = c[i].y;
+            arrays[n + S] = c[i].ci;
+            names[S++] = labels[i];
+        }
+    }
+    if (rc == 0) {
+        const vfy_points points = {
+            .name = name, .title = title, .xlabel = f->xlabel, .ylabel = f->ylabel,
+            .logy = f->logy, .npoints = first->count, .x = first->x, .nseries = S,
+            .series = names, .y = arrays, .ci = arrays + n,
+            .nfine = first_ref ? first_ref->count : 0, .xfine = first_ref ? first_ref->x : NULL,
+            .ncurves = R, .curves = names + n, .yfine = arrays + 2 * n,
+            .comment = run->comment, .key_inside = f->key_inside};
+        rc = vfy_write_points(run->o, &points);
+    }
+    free(arrays);
+    free(names);
+    return rc;
+}
+
+/* A ROW_ figure of row (driver.h): its name the case's with the suffix
+ * expanded at the row, its title (else the case's) too. */
+static int write_row_figure(vfy_case_run *run, const vfy_figure_spec *f, const vfy_row *row,
+                            const char *case_title)
+{
+    const size_t n = curves_length(f->curves);
+    vfy_curve *c = calloc(n, sizeof *c);
+    char **labels = calloc(n, sizeof *labels);
+    char *suffix = vfy_expand_alloc(f->suffix ? f->suffix : "", run, row);
+    char *name = suffix ? vfy_aprintf("%s%s", run->c->name, suffix) : NULL;
+    char *title = f->title ? vfy_expand_alloc(f->title, run, row) : vfy_strdup(case_title);
+    int rc = c && labels && name && title ? 0 : -1;
+    size_t i = 0;
+    for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next, i++)
+        if ((labels[i] = vfy_expand_alloc(k->label, run, row)) == NULL
+            || k->fn(run, row, k->x, &c[i]) != 0)
+            rc = -1;
+    if (rc == 0)
+        rc = f->kind == VFY_FIGURE_ROW_CURVES ? row_xy(run, f, name, title, c, labels, n)
+                                              : row_points(run, f, name, title, c, labels, n);
+    for (i = 0; c != NULL && i < n; i++)
+        free(c[i].x);
+    free_strings(labels, n);
+    free(c);
+    free(suffix);
+    free(name);
+    free(title);
+    return rc;
+}
+
 /* Whether every row has the last row's output times. */
 static int rows_share_grid(const vfy_case_run *run)
 {
@@ -1788,6 +1902,12 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
 {
     if (f->kind == VFY_FIGURE_POINTS)
         return write_points(run, f);
+    if (f->kind == VFY_FIGURE_ROW_CURVES || f->kind == VFY_FIGURE_ROW_POINTS) {
+        int rc = 0;
+        for (size_t i = f->each_row ? 0 : run->nrows - 1; i < run->nrows && rc == 0; i++)
+            rc = write_row_figure(run, f, &run->rows[i], title);
+        return rc;
+    }
     char *name = vfy_aprintf("%s%s", run->c->name, f->suffix ? f->suffix : "");
     char *quantity = vfy_aprintf(   /* "T@*" is drawn as T */
         "%.*s", (int)(strstr(f->quantity, "@*") ? strcspn(f->quantity, "@") : strlen(f->quantity)),

@@ -272,7 +272,38 @@ typedef enum vfy_figure_kind {
                             beside reference lines */
     VFY_FIGURE_POINTS,   /* values against a row value (one point a row), with
                             error bars, beside value references as lines */
+    VFY_FIGURE_ROW_CURVES,   /* curves a row makes (vfy_curve_fn), as lines */
+    VFY_FIGURE_ROW_POINTS,   /* curves a row makes, the data as points with error
+                                bars, the references as lines */
 } vfy_figure_kind;
+
+/* A curve a row makes, for a ROW_ figure (paper A's ln f against the speed,
+ * paper C's G(c)): count points x, y and their half-widths ci (NULL: none),
+ * in one allocation at x that the figure frees. */
+typedef struct vfy_curve {
+    size_t count;
+    double *x, *y, *ci;
+} vfy_curve;
+
+/* Make row's curve into *out; x is the named function's fixed x (named.h),
+ * else NaN.  Returns 0, or -1 when out of memory. */
+typedef int (*vfy_curve_fn)(const vfy_case_run *run, const vfy_row *row, double x,
+                            vfy_curve *out);
+
+/* Allocate *out for count points: x, y and, with ci, half-widths; returns
+ * 0, or -1 when out of memory. */
+int vfy_curve_alloc(vfy_curve *out, size_t count, int ci);
+
+/* One curve of a ROW_ figure, in a list in the order the figure draws them:
+ * its label (a template at the row), its function, and whether it is a
+ * reference (a model, drawn dashed, without half-widths). */
+typedef struct vfy_figure_curve {
+    const char *label;
+    vfy_curve_fn fn;
+    double x;
+    int reference;
+    const struct vfy_figure_curve *next;
+} vfy_figure_curve;
 
 typedef struct vfy_figure_spec {
     vfy_figure_kind kind;
@@ -306,10 +337,21 @@ typedef struct vfy_figure_spec {
        labelled by the value.  NULL group_by: one group, unlabelled. */
     const char *group_by;
     const char *const *groups;
+    /* ROW_CURVES, ROW_POINTS: the curves (at least one that is no
+       reference; ROW_POINTS: the data curves share their x, and so do the
+       references), of the last row, or of each row (each_row: one figure a
+       row, suffix a template at the row that tells them apart); band: the
+       data curves' half-widths drawn as a shaded band (ROW_CURVES; else
+       only in the CSV); logy: a log y axis; key_inside: where the key goes,
+       in gnuplot's words (ROW_POINTS; NULL: top right). */
+    const vfy_figure_curve *curves;
+    int each_row, band, logy;
+    const char *key_inside;
     const char *title, *xlabel, *ylabel;   /* title: a template (curves:
-                                              NULL, the case's title); curves:
-                                              ylabel the y axis's label (NULL:
-                                              the quantity's name), no xlabel */
+                                              NULL, the case's title; ROW_: at
+                                              the row); curves: ylabel the y
+                                              axis's label (NULL: the
+                                              quantity's name), no xlabel */
 } vfy_figure_spec;
 /* A description's figures, ended by one of kind VFY_FIGURE_NONE:
  * VFY_FIGURES({.kind = VFY_FIGURE_CURVES, ...}, {...}). */

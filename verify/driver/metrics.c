@@ -149,6 +149,19 @@ double vfy_metric_first_row(const vfy_case_run *run, const vfy_row *row, const v
     return run->nrows > 0 ? vfy_values_get(&run->rows[0].values, m->a) : NAN;
 }
 
+double vfy_metric_constant(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)run;
+    (void)row;
+    return m->x;
+}
+
+double vfy_metric_last_row(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)row;
+    return run->nrows > 0 ? vfy_values_get(&run->rows[run->nrows - 1].values, m->a) : NAN;
+}
+
 double vfy_metric_rows_extrapolate(const vfy_case_run *run, const vfy_row *row,
                                    const vfy_metric *m)
 {

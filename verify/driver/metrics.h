@@ -71,16 +71,21 @@ vfy_metric_func vfy_metric_partner_z;
 vfy_metric_func vfy_metric_partner_percent;
 vfy_metric_func vfy_metric_partner_percent_ci;
 
+/* x: a tolerance or a parameter by its name in the case file, for the notes
+ * and titles (x = VFY_TOL_TAILS_WINDOW). */
+vfy_metric_func vfy_metric_constant;
+
 /* x a b (x a when b is NULL): n N = {"nN", vfy_metric_product, "n", "N", 1}. */
 vfy_metric_func vfy_metric_product;
 
 /* Case metrics (vfy_case_desc.case_metrics; row NULL): the smallest value a
- * over the rows; value a of the first row; the O(1/n) extrapolation of value
+ * over the rows; value a of the first row, of the last row; the O(1/n) extrapolation of value
  * a over the rows, each with standard error b (vfy_extrapolate_inverse_n): x
  * = 0 its n = infinity value, x = 1 that value's half-width (SIM_LAMBDA_P
  * standard errors), x = 2 the fit's chi^2. */
 vfy_metric_func vfy_metric_rows_min;
 vfy_metric_func vfy_metric_first_row;
+vfy_metric_func vfy_metric_last_row;
 vfy_metric_func vfy_metric_rows_extrapolate;
 vfy_metric_func vfy_metric_batch_mean;
 vfy_metric_func vfy_metric_batch_se;

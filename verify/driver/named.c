@@ -44,8 +44,10 @@ const vfy_named_fn vfy_driver_named[] = {
     VFY_NAMED_METRIC("partner_percent", vfy_metric_partner_percent),
     VFY_NAMED_METRIC("partner_percent_ci", vfy_metric_partner_percent_ci),
     VFY_NAMED_METRIC("product", vfy_metric_product),
+    VFY_NAMED_METRIC("constant", vfy_metric_constant),
     VFY_NAMED_METRIC("rows_min", vfy_metric_rows_min),
     VFY_NAMED_METRIC("first_row", vfy_metric_first_row),
+    VFY_NAMED_METRIC("last_row", vfy_metric_last_row),
     VFY_NAMED_METRIC("rows_extrapolate", vfy_metric_rows_extrapolate),
     VFY_NAMED_METRIC("batch_mean", vfy_metric_batch_mean),
     VFY_NAMED_METRIC("batch_se", vfy_metric_batch_se),
@@ -68,6 +70,7 @@ const vfy_named_fn *vfy_named_find(const vfy_named_fn *table, vfy_fn_kind kind,
 
 const char *vfy_fn_kind_word(vfy_fn_kind kind)
 {
-    static const char *const words[] = {"metric", "rule", "guard", "hook", "derive", "adjust"};
+    static const char *const words[] = {"metric", "rule", "guard", "hook", "derive", "adjust",
+                                       "curve"};
     return (size_t)kind < sizeof words / sizeof *words ? words[kind] : "function";
 }

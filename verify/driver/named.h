@@ -6,6 +6,8 @@
 #ifndef GDSMC_VFY_NAMED_H
 #define GDSMC_VFY_NAMED_H
 
+#include <math.h>
+
 #include "driver.h"
 
 typedef enum vfy_fn_kind {
@@ -15,6 +17,7 @@ typedef enum vfy_fn_kind {
     VFY_FN_HOOK,     /* vfy_hook_fn: [case] after_rows */
     VFY_FN_DERIVE,   /* vfy_derive_fn: [case] derive */
     VFY_FN_ADJUST,   /* vfy_adjust_fn: [case] adjust */
+    VFY_FN_CURVE,    /* vfy_curve_fn: [figure] curve, ref_curve */
 } vfy_fn_kind;
 
 /* One named function: `name` and the member of its kind set (the others
@@ -32,6 +35,7 @@ typedef struct vfy_named_fn {
     vfy_hook_fn hook;
     vfy_derive_fn derive;
     vfy_adjust_fn adjust;
+    vfy_curve_fn curve;
     int fixed_x;
     double x;
 } vfy_named_fn;
@@ -42,8 +46,10 @@ typedef struct vfy_named_fn {
 #define VFY_NAMED_HOOK(NAME, FN) {NAME, VFY_FN_HOOK, .hook = FN}
 #define VFY_NAMED_DERIVE(NAME, FN) {NAME, VFY_FN_DERIVE, .derive = FN}
 #define VFY_NAMED_ADJUST(NAME, FN) {NAME, VFY_FN_ADJUST, .adjust = FN}
+#define VFY_NAMED_CURVE(NAME, FN) {NAME, VFY_FN_CURVE, .curve = FN, .x = NAN}
 #define VFY_NAMED_METRIC_X(NAME, FN, X) {NAME, VFY_FN_METRIC, .metric = FN, .fixed_x = 1, .x = X}
 #define VFY_NAMED_RULE_X(NAME, FN, X) {NAME, VFY_FN_RULE, .rule = FN, .fixed_x = 1, .x = X}
+#define VFY_NAMED_CURVE_X(NAME, FN, X) {NAME, VFY_FN_CURVE, .curve = FN, .fixed_x = 1, .x = X}
 #define VFY_NAMED_END {NULL, VFY_FN_METRIC, .metric = NULL}
 
 /* The driver's: the rules ("relative", ...), guards ("at_most", ...) and
