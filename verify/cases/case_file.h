@@ -31,11 +31,14 @@
  *                    guard (by name), guard_a, guard_b, guard_x,
  *                    guard_reason; differs_paper, differs_evidence,
  *                    differs_judged_by (a known difference, all three).
- *   [figure]         (each header starts one) kind (curves or points),
- *                    suffix, quantity, ref (one per reference line),
- *                    x_from, panel_per_row, extrapolated, x, series (one per
- *                    series), x_lo, x_hi, group_by, group (one per group),
- *                    title, xlabel, ylabel.
+ *   [figure]         (each header starts one) kind (curves, points, row
+ *                    curves or row points), suffix, quantity, ref (one per
+ *                    reference line), x_from, panel_per_row, extrapolated, x,
+ *                    series (one per series), x_lo, x_hi, group_by, group
+ *                    (one per group), title, xlabel, ylabel; the row kinds'
+ *                    curve and ref_curve (LABEL=FUNCTION, one per curve, the
+ *                    label ending at the last '='), each_row, band, logy,
+ *                    key_inside.
  *
  * A number is a decimal number, nan, inf, -inf, or a tolerance of
  * tolerances.h by its name, with a minus sign or without (VFY_TOL_ZMAX): a
