@@ -86,6 +86,7 @@ static const char good[] =
     "each_row = true\n"
     "band = true\n"
     "logy = true\n"
+    "logx = true\n"
     "key_inside = bottom left\n"
     "curve = y = 1x - 2=grw_curve_ln_f\n"
     "ref_curve = model=grw_curve_line_1_5\n";
@@ -160,7 +161,7 @@ static void test_every_key_reaches_its_member(void **state)
     const vfy_figure_spec *rows = &d->figures[2];
     assert_int_equal(rows->kind, VFY_FIGURE_ROW_CURVES);
     assert_string_equal(rows->suffix, "-{alpha}");
-    assert_true(rows->each_row && rows->band && rows->logy);
+    assert_true(rows->each_row && rows->band && rows->logx && rows->logy);
     assert_string_equal(rows->key_inside, "bottom left");
     /* the label ends at the last '='; a fixed-x curve has its x */
     assert_string_equal(rows->curves->label, "y = 1x - 2");
@@ -285,14 +286,19 @@ static void test_bad_input_names_file_line_and_key(void **state)
     refused(51, "", "t.case:45: [check] second: a known difference needs");
     refused(58, "kind = bars", "t.case:58: [figure] kind: 'bars' (allowed curves, points, "
             "row curves, row points)");
-    refused(74, "curve = grw_curve_ln_f", "t.case:74: [figure] curve: 'grw_curve_ln_f' "
+    refused(75, "curve = grw_curve_ln_f", "t.case:75: [figure] curve: 'grw_curve_ln_f' "
             "(allowed LABEL=FUNCTION)");
-    refused(74, "curve = f=no_such_curve", "t.case:74: [figure] curve: unknown curve "
+    refused(75, "curve = f=no_such_curve", "t.case:75: [figure] curve: unknown curve "
             "'no_such_curve'");
-    refused(74, "", "t.case:67: [figure] of kind row curves or row points needs a curve");
+    refused(75, "", "t.case:67: [figure] of kind row curves or row points needs a curve");
+    refused(75, "row_label = {label}", "t.case:67: [figure] of row series (row_label) needs "
+            "x and series");
     refused(69, "suffix = -rows", "t.case:67: [figure] each_row needs a suffix that tells");
-    refused(61, "x_lo = 0.5\nlogy = true", "t.case:57: [figure]: curve, ref_curve, each_row, "
-            "band, logy and key_inside are for kinds row curves and row points");
+    refused(61, "x_lo = 0.5\nlogy = true", "t.case:57: [figure]: curve, ref_curve, row_label, "
+            "each_row, band, logx, logy and key_inside are for kinds row curves and row "
+            "points");
+    refused(54, "name = on the case\nguard = after_first", "t.case:55: [case check] guard: "
+            "'after_first' needs a row (allowed here at_most,");
     refused(32, "    more", "t.case:32: [metric Emax] fn: an indented line continues only a "
             "text value");
     refused(31, "fn max_rel_err", "t.case:31: not a [section] header");

@@ -668,14 +668,17 @@ static void test_rows_variants_adjust(void **state)
 /* Settings derived from value references (vfy_case_desc.derived): the
  * thermostat strength that holds T0 reaches the solver in the description's
  * format, and a reference that does not apply (a series) sets nothing; a
+ * row metric of the name is evaluated before the run (t_end halved); a
  * requirement the scene does not meet stops the case, naming it. */
 static const vfy_metric derived_metrics[] = {
-    {"beta", vfy_metric_heating_strength, NULL, NULL, 0}, {NULL, NULL, NULL, NULL, 0}};
+    {"beta", vfy_metric_heating_strength, NULL, NULL, 0},
+    {"t_half", vfy_metric_constant, NULL, NULL, 0.05}, {NULL, NULL, NULL, NULL, 0}};
 static const vfy_case_desc derived_desc = {
     .scene = "grw-ex5",
     .quick_rows = {.keys = VFY_KEYS({"particles.n", "8", NULL}),
                    .sets = "particles.ensembles=2;scene.outputs=3;scene.t_end=0.1"},
-    .derived = "heating.strength=heating_strength_T0:%.6g scene.t_end=T_exact",
+    .derived = "heating.strength=heating_strength_T0:%.6g scene.t_end=T_exact "
+               "scene.t_end=t_half",
     .require = "[heating] heating.type=white-noise", .require_why = "white noise, please",
     .metrics = derived_metrics, .columns = "beta:%.9g", .title = "{case}",
     .notes = ""};
@@ -702,6 +705,7 @@ static void test_derived_and_required(void **state)
     if (strstr(table, want) == NULL)
         print_error("wanted %s in:\n%s\n", want, table);
     assert_non_null(strstr(table, want));
+    assert_non_null(strstr(table, "3 outputs on [0, 0.05]"));
 
     vfy_case_desc wrong = derived_desc;
     wrong.require = "[heating] heating.type=gaussian";
@@ -1105,6 +1109,17 @@ static const vfy_case_desc row_mixed_desc = ROW_FIGURES(
     {.kind = VFY_FIGURE_ROW_POINTS, .suffix = "-mixed", .curves = &row_mixed});
 static const vfy_case row_mixed_case = {"driver-row-figures-mixed", "test", "", 0, &row_mixed_desc};
 
+static const vfy_case_desc series_desc = {
+    .scene = "grw-ex3",
+    .quick_rows = {.keys = VFY_KEYS({"particles.n", "8 16", NULL}),
+                   .sets = "particles.ensembles=2;scene.outputs=3;scene.t_end=0.1"},
+    .needs = VFY_LIST("T_exact"), .columns = "n:%.0f", .title = "{case}", .notes = "",
+    .figures = VFY_FIGURES({.kind = VFY_FIGURE_ROW_CURVES, .suffix = "-series",
+                            .row_label = "n = {n}", .x = "T_exact",
+                            .series = VFY_LIST("T raw=T_raw", "T=T", "absent=no_such"),
+                            .xlabel = "T_exact", .logx = 1})};
+static const vfy_case series_case = {"driver-series", "test", "", 0, &series_desc};
+
 static void test_row_figures(void **state)
 {
     (void)state;
@@ -1129,6 +1144,17 @@ static void test_row_figures(void **state)
     vfy_report_init(&r, NULL);
     assert_int_not_equal(vfy_run_described(&row_mixed_case, &o, &r, msg, sizeof msg), SIM_OK);
     vfy_report_free(&r);
+
+    /* row series: a curve a row against x, a panel a series (one it lacks stays empty) */
+    vfy_report_init(&r, NULL);
+    assert_int_equal(vfy_run_described(&series_case, &o, &r, msg, sizeof msg), SIM_OK);
+    vfy_report_free(&r);
+    read_out_file("driver-series-series-curves.csv", buf, sizeof buf);
+    assert_non_null(strstr(buf, "# n = 8\n"));
+    assert_non_null(strstr(buf, "# n = 16\n"));
+    assert_non_null(strstr(buf, "T_exact,T raw,T raw_ci,T,T_ci,absent,absent_ci\n"));
+    read_out_file("driver-series-series.gp", buf, sizeof buf);
+    assert_non_null(strstr(buf, "set logscale x"));
 }
 
 /* A points figure's data files take its labels as their headers, each one

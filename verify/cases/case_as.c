@@ -1371,29 +1371,6 @@ static double asv_z_homogeneous(const vfy_case_run *run, const vfy_row *row, con
                       vfy_values_get(&hom->values, m->a), vfy_values_get(&hom->values, ci));
 }
 
-/* After the rows: E Fig. 9, T/T0 and the reduced stresses against s. */
-static sim_status as_vs_after(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
-{
-    (void)r;
-    asx_plot pl;
-    memset(&pl, 0, sizeof pl);
-    static const char *const stress[] = {"T_ratio", "Pxy_reduced", "N1"};
-    static const double plus[] = {1.0, 1.0, 1.0};
-    for (size_t i = 0; i < run->nrows; i++) {
-        asx_dsmc(&pl, &run->rows[i], "s", 1.0, stress, plus, 3);
-        if (pl.ncurves > 0)
-            asx_relabel(&pl, pl.ncurves - 1, vfy_strdup(run->rows[i].label));
-    }
-    char name[96];
-    snprintf(name, sizeof name, "%s-stress", run->c->name);
-    vfy_xy_figure f = {.name = name, .title = "paper E Fig. 9: T/T0 and the reduced stresses "
-                       "against s, IHS at alpha = 0.9, a tau0 = 4: homogeneous and the slab",
-                       .xlabel = "s", .comment = run->comment, .logx = 1, .npanels = 3,
-                       .ylabel = {"T/T0", "-Pxy/nT", "(Pxx - Pyy)/nT"}};
-    const int rc = asx_write(run->o, &f, &pl);
-    const int nomem = asx_plot_free(&pl);
-    return asx_figures_written(run, rc, nomem, msg, msglen);
-}
 
 /* The functions this file's case files name (named.h, registry.c). */
 const vfy_named_fn vfy_as_named[] = {
@@ -1422,5 +1399,4 @@ const vfy_named_fn vfy_as_named[] = {
     VFY_NAMED_HOOK("as_slab_after", as_slab_after),
     VFY_NAMED_METRIC("asv_window", asv_window),
     VFY_NAMED_METRIC("asv_z_homogeneous", asv_z_homogeneous),
-    VFY_NAMED_HOOK("as_vs_after", as_vs_after),
     VFY_NAMED_END};

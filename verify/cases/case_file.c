@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "figure.h"
 #include "text.h"
 
 #define MAX_FILE_BYTES (1u << 20)
@@ -152,7 +153,6 @@ static const key_spec case_keys[] = {
     CASE_KEY("batches", K_BATCHES, d.batches),
     CASE_KEY("row_progress", K_TEXT, d.row_progress),
     CASE_KEY("derived", K_TEXT, d.derived),
-    {"derive", K_FN, offsetof(vfy_case_file, d.derive), VFY_FN_DERIVE},
     CASE_KEY("require", K_TEXT, d.require),
     CASE_KEY("require_why", K_TEXT, d.require_why),
     CASE_KEY("jump_rows", K_BOOL, d.jump_rows),
@@ -226,8 +226,10 @@ static const key_spec figure_keys[] = {
     FIGURE_KEY("ylabel", K_TEXT, ylabel),
     FIGURE_KEY("curve", K_CURVE, curves),
     FIGURE_KEY("ref_curve", K_CURVE, curves),
+    FIGURE_KEY("row_label", K_TEXT, row_label),
     FIGURE_KEY("each_row", K_BOOL, each_row),
     FIGURE_KEY("band", K_BOOL, band),
+    FIGURE_KEY("logx", K_BOOL, logx),
     FIGURE_KEY("logy", K_BOOL, logy),
     FIGURE_KEY("key_inside", K_TEXT, key_inside),
     {NULL, 0, 0, 0}};
@@ -599,7 +601,6 @@ static int apply_key(parse_ctx *c, const key_spec *table, void *base, const char
         case VFY_FN_RULE: *(vfy_rule_fn *)at = e->rule; break;
         case VFY_FN_GUARD: *(vfy_guard_fn *)at = e->guard; break;
         case VFY_FN_HOOK: *(vfy_hook_fn *)at = e->hook; break;
-        case VFY_FN_DERIVE: *(vfy_derive_fn *)at = e->derive; break;
         case VFY_FN_ADJUST: *(vfy_adjust_fn *)at = e->adjust; break;
         case VFY_FN_CURVE: break;   /* no K_FN key names a curve (K_CURVE) */
         }
@@ -732,6 +733,22 @@ static int start_record(parse_ctx *c, const char *section)
     return 1;
 }
 
+/* A key of [case check]: as [check]'s, but a guard gets no row there
+ * (driver.h), so only those that need none. */
+static int case_check_key(parse_ctx *c, const char *key, const char *value)
+{
+    static const char *const case_guards[] = {"at_most", "only_at_most", "at_least",
+                                              "only_at_least", "unless", "only_unless",
+                                              "paper_sizes"};
+    int allowed = strcmp(key, "guard") != 0;
+    for (size_t i = 0; i < sizeof case_guards / sizeof *case_guards && !allowed; i++)
+        allowed = strcmp(value, case_guards[i]) == 0;
+    if (!allowed)
+        return fail(c, SIM_EINVAL, key, "'%s' needs a row (allowed here at_most, only_at_most, "
+                    "at_least, only_at_least, unless, only_unless, paper_sizes)", value);
+    return apply_key(c, check_keys, c->record, key, value);
+}
+
 static int handler(void *user, const char *section, const char *name, const char *value)
 {
     parse_ctx *c = user;
@@ -756,8 +773,8 @@ static int handler(void *user, const char *section, const char *name, const char
     case SEC_PARTNER: return apply_key(c, partner_keys, c->record, name, value);
     case SEC_METRIC:
     case SEC_CASE_METRIC: return apply_key(c, metric_keys, c->record, name, value);
-    case SEC_CHECK:
-    case SEC_CASE_CHECK: return apply_key(c, check_keys, c->record, name, value);
+    case SEC_CHECK: return apply_key(c, check_keys, c->record, name, value);
+    case SEC_CASE_CHECK: return case_check_key(c, name, value);
     case SEC_FIGURE: return apply_key(c, figure_keys, c->record, name, value);
     case SEC_NONE: break;
     }
@@ -957,12 +974,25 @@ static int finish(parse_ctx *c)
         int data = 0;
         for (const vfy_figure_curve *k = g->curves; k != NULL; k = k->next)
             data += !k->reference;
-        if (by_row && data == 0)
+        const int of_series = g->kind == VFY_FIGURE_ROW_CURVES && g->row_label != NULL;
+        if (of_series && (g->curves || g->each_row || g->x == NULL || g->series == NULL))
+            return fail(c, SIM_EINVAL, NULL, "[figure] of row series (row_label) needs x and "
+                        "series, and takes no curve or each_row");
+        size_t panels = 0;
+        while (g->series != NULL && g->series[panels] != NULL)
+            panels++;
+        if (of_series && panels > VFY_XY_PANELS)
+            return fail(c, SIM_EINVAL, NULL, "[figure] of row series: at most %d series (a "
+                        "panel each)", VFY_XY_PANELS);
+        if (by_row && !of_series && data == 0)
             return fail(c, SIM_EINVAL, NULL, "[figure] of kind row curves or row points needs "
-                        "a curve (curve = LABEL=FUNCTION)");
-        if (!by_row && (g->curves || g->each_row || g->band || g->logy || g->key_inside))
-            return fail(c, SIM_EINVAL, NULL, "[figure]: curve, ref_curve, each_row, band, logy "
-                        "and key_inside are for kinds row curves and row points");
+                        "a curve (curve = LABEL=FUNCTION) or, for row curves, row_label, x "
+                        "and series");
+        if (!by_row && (g->curves || g->row_label || g->each_row || g->band || g->logx
+                        || g->logy || g->key_inside))
+            return fail(c, SIM_EINVAL, NULL, "[figure]: curve, ref_curve, row_label, each_row, "
+                        "band, logx, logy and key_inside are for kinds row curves and row "
+                        "points");
         if (g->each_row && (g->suffix == NULL || strchr(g->suffix, '{') == NULL))
             return fail(c, SIM_EINVAL, NULL, "[figure] each_row needs a suffix that tells the "
                         "rows apart (a template: -{alpha})");

@@ -13,8 +13,8 @@
  *                    separated by spaces; "needs =" with none: each row's
  *                    references are made, none required of every row);
  *                    needs_why; variant (one per
- *                    variant, in order); batches (COUNT STRIDE); derive,
- *                    adjust, after_rows (a function by name).
+ *                    variant, in order); batches (COUNT STRIDE); adjust,
+ *                    after_rows (a function by name).
  *   [paper rows], [quick rows]
  *                    the sweep: "SECTION.KEY = V1 V2 ..." for each swept
  *                    scene key in order ("SECTION.KEY as NAME = ..." names
@@ -37,8 +37,9 @@
  *                    series (one per series), x_lo, x_hi, group_by, group
  *                    (one per group), title, xlabel, ylabel; the row kinds'
  *                    curve and ref_curve (LABEL=FUNCTION, one per curve, the
- *                    label ending at the last '='), each_row, band, logy,
- *                    key_inside.
+ *                    label ending at the last '='), row_label (row curves of
+ *                    row series: x, series one per panel), each_row, band,
+ *                    logx, logy, key_inside.
  *
  * A number is a decimal number, nan, inf, -inf, or a tolerance of
  * tolerances.h by its name, with a minus sign or without (VFY_TOL_ZMAX): a

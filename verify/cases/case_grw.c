@@ -13,7 +13,7 @@
  * every output time), and both closures of docs/theory.md §11.4.
   *
  * The cases are data (verify/cases/scenes/grw-ex*.case, docs/adding-a-case.md);
- * this file holds the metrics, guards, rules and hooks they name, listed
+ * this file holds the metrics, guards, rules, curves and hooks they name, listed
  * in vfy_grw_named at its end.
  */
 #include <gsl/gsl_cdf.h>

@@ -33,7 +33,7 @@
  * figures.
   *
  * The cases are data (verify/cases/scenes/ms-*.case, docs/adding-a-case.md);
- * this file holds the metrics, guards, rules and hooks they name, listed
+ * this file holds the metrics, guards, rules and curves they name, listed
  * in vfy_ms_named at its end.
  */
 #include <math.h>

@@ -24,7 +24,7 @@
  * give the cost; the notes compare what each scheme pays for a given error.
   *
  * The cases are data (verify/cases/scenes/split-*.case, docs/adding-a-case.md);
- * this file holds the metrics, guards, rules and hooks they name, listed
+ * this file holds the metrics, guards, rules and curves they name, listed
  * in vfy_split_named at its end.
  */
 #include <math.h>
@@ -94,40 +94,6 @@ static double split_step_for(const split_row *rows, size_t count, double order, 
         if (fabs(rows[k].dT) > VFY_TOL_SPLIT_CLEAN_RATIO * rows[k].dT_ci)
             return rows[k].h * pow(eps / fabs(rows[k].dT), 1.0 / order);
     return NAN;
-}
-
-/* The figure: |difference in T̄| against h, log-log, with error bars, beside
- * slope 1 and slope 2 through each splitting's largest step (figure.h). */
-static int split_figure(const vfy_options *o, const char *name, const char *comment,
-                        const split_row *rows, size_t levels)
-{
-    double *buf = malloc(7 * levels * sizeof *buf);
-    if (buf == NULL)
-        return -1;
-    double *h = buf, *e = buf + levels, *ec = e + levels, *s = ec + levels, *sc = s + levels;
-    double *one = sc + levels, *two = one + levels;
-    const double h0 = rows[0].h, e0 = fabs(rows[0].dT), s0 = fabs(rows[levels].dT);
-    for (size_t k = 0; k < levels; k++) {
-        h[k] = rows[k].h;
-        e[k] = fabs(rows[k].dT);
-        ec[k] = rows[k].dT_ci;
-        s[k] = fabs(rows[levels + k].dT);
-        sc[k] = rows[levels + k].dT_ci;
-        one[k] = e0 * (h[k] / h0);
-        two[k] = s0 * (h[k] / h0) * (h[k] / h0);
-    }
-    char title[200];
-    snprintf(title, sizeof title, "%s: |time-step - jump| in the time-averaged T", name);
-    const char *series[] = {"Euler |dT|", "Strang |dT|"}, *curves[] = {"slope 1", "slope 2"};
-    const double *ys[] = {e, s}, *cs[] = {ec, sc}, *yf[] = {one, two};
-    const vfy_points fig = {.name = name, .title = title, .xlabel = "h",
-                            .ylabel = "|difference in T|", .logy = 1, .logx = 1,
-                            .npoints = levels, .x = h, .nseries = 2, .series = series, .y = ys,
-                            .ci = cs, .nfine = levels, .xfine = h, .ncurves = 2,
-                            .curves = curves, .yfine = yf, .comment = comment};
-    int rc = vfy_write_points(o, &fig);
-    free(buf);
-    return rc;
 }
 
 /* ------------------------------------------------------------ the rows */
@@ -252,111 +218,125 @@ static double jump_value(const vfy_case_run *run, const vfy_row *row, const vfy_
     return vfy_values_get(&run->rows[0].values, m->a);
 }
 
-/* What a given accuracy costs (the notes and a progress line): for a target
- * error eps of T̄ (relative to T̄), the step each splitting needs (from its
- * error at its smallest resolved step and its order) and the CPU time at that
- * step, beside the jump scheme, which has no splitting error at any cost. */
-#define SPLIT_COST_TEXT \
-    " {cost_alpha:%.1f} ns per candidate, {cost_beta:%.1f} ns per normal variate (least " \
-    "squares over the time-step rows); relative error 1e-02: Euler h = {he0:%.3g} ({ce0:%.0f} " \
-    "CPU s), Strang h = {hs0:%.3g} ({cs0:%.0f} CPU s), jump {jump_cpu:%.0f} CPU s; relative " \
-    "error 1e-03: Euler h = {he1:%.3g} ({ce1:%.0f} CPU s), Strang h = {hs1:%.3g} ({cs1:%.0f} " \
-    "CPU s), jump {jump_cpu:%.0f} CPU s; relative error 1e-04: Euler h = {he2:%.3g} ({ce2:%.0f} " \
-    "CPU s), Strang h = {hs2:%.3g} ({cs2:%.0f} CPU s), jump {jump_cpu:%.0f} CPU s"
+/* ------------------------------------------------------------ over the rows */
 
-static void split_cost_values(vfy_case_run *run, const split_row *rows, size_t levels)
+/* The time-step rows (every row after the jump row, Euler's `levels` then
+ * Strang's) as split_rows, in *rows (the caller frees it); returns levels,
+ * or 0 (none, or out of memory). */
+static size_t split_rows(const vfy_case_run *run, split_row **rows)
 {
-    static const double targets[] = {1e-2, 1e-3, 1e-4};
+    const size_t levels = (run->nrows - 1) / 2;
+    *rows = levels ? calloc(2 * levels, sizeof **rows) : NULL;
+    if (*rows == NULL)
+        return 0;
+    for (size_t k = 0; k < 2 * levels; k++) {
+        const vfy_row *q = &run->rows[1 + k];
+        (*rows)[k] = (split_row){vfy_values_get(&q->values, "h"),
+                                 vfy_values_get(&q->values, "dT"),
+                                 vfy_values_get(&q->values, "dT_ci"),
+                                 vfy_values_get(&q->values, "cpu_s"), q->res.counts};
+    }
+    return levels;
+}
+
+/* Whether m->a names Strang ("strang"), else Euler ("euler"). */
+static int is_strang(const vfy_metric *m) { return strcmp(m->a, "strang") == 0; }
+
+/* How many halvings of T the splitting m->a could judge: both differences
+ * VFY_TOL_SPLIT_CLEAN_RATIO times above their half-widths (a case metric). */
+static double split_judged(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)row;
+    size_t judged = 0;
+    for (size_t i = 1; i < run->nrows; i++) {
+        const vfy_row *q = &run->rows[i];
+        judged += strcmp(vfy_row_text(q, "scheme"), m->a) == 0
+                  && !isnan(vfy_values_get(&q->values, "h_prev"))
+                  && clean_halving(q, "dT_abs", "dT_ci");
+    }
+    return (double)judged;
+}
+
+/* What a given accuracy costs (case metrics for the notes and the progress
+ * line): the cost model's ns per candidate (x = 0) and per normal variate
+ * (x = 1); for a target error x of T̄ (relative to the jump row's T̄), the
+ * step splitting m->a needs (split_step, from its error at its smallest
+ * resolved step and its order) and the CPU seconds at that step
+ * (split_cpu), beside the jump scheme, which has no splitting error at any
+ * cost. */
+enum { COST_STEP, COST_CPU };
+static double split_cost_value(const vfy_case_run *run, const vfy_metric *m, int which)
+{
+    split_row *rows;
+    const size_t levels = split_rows(run, &rows);
+    if (levels == 0)
+        return NAN;
     const split_cost model = split_cost_fit(rows, 2 * levels);
     const sim_scene *s = &run->rows[run->nrows - 1].solver;
     const double initial = 3.0 * (double)s->particles.n * (double)s->particles.ensembles;
-    const double T_jump = vfy_values_get(&run->rows[0].values, "T");
-    vfy_values *v = &run->values;
-    vfy_values_set(v, "cost_alpha", 1e9 * model.alpha);
-    vfy_values_set(v, "cost_beta", 1e9 * model.beta);
-    vfy_values_set(v, "jump_cpu", vfy_values_get(&run->rows[0].values, "cpu_s"));
-    for (size_t i = 0; i < 3; i++) {
-        const double eps = targets[i] * T_jump;
-        const double he = split_step_for(rows, levels, 1.0, eps);
-        const double hs = split_step_for(rows + levels, levels, 2.0, eps);
-        char name[8];
-        const double cells[4] = {he, split_cost_at(&model, rows, levels, he, initial), hs,
-                                 split_cost_at(&model, rows + levels, levels, hs, initial)};
-        for (int c = 0; c < 4; c++) {
-            snprintf(name, sizeof name, "%s%zu", (const char *[]){"he", "ce", "hs", "cs"}[c], i);
-            vfy_values_set(v, name, cells[c]);
-        }
-    }
-}
-
-/* After the rows: how many halvings of T each splitting could judge (at
- * least min_halvings[0] for Euler, [1] for Strang at paper sizes), the cost
- * of a given accuracy, the notes' values and the figure. */
-static sim_status split_after(vfy_case_run *run, vfy_report *r, const size_t min_halvings[2],
-                              char *msg, size_t msglen)
-{
-    const size_t levels = (run->nrows - 1) / 2;
-    split_row *rows = calloc(2 * levels + 1, sizeof *rows);
-    if (rows == NULL) {
-        snprintf(msg, msglen, "out of memory");
-        return SIM_ENOMEM;
-    }
-    size_t judged[2] = {0, 0};
-    for (size_t k = 0; k < 2 * levels; k++) {
-        const vfy_row *q = &run->rows[1 + k];
-        rows[k] = (split_row){vfy_values_get(&q->values, "h"), vfy_values_get(&q->values, "dT"),
-                              vfy_values_get(&q->values, "dT_ci"),
-                              vfy_values_get(&q->values, "cpu_s"), q->res.counts};
-        judged[k >= levels] += !isnan(vfy_values_get(&q->values, "h_prev"))
-                               && clean_halving(q, "dT_abs", "dT_ci");
-    }
-    for (int sp = 0; sp < 2; sp++) {
-        char name[160];
-        snprintf(name, sizeof name, "%s %s halvings judged (difference above %g x its "
-                 "half-width)", run->c->name, sp ? "strang" : "euler", VFY_TOL_SPLIT_CLEAN_RATIO);
-        if (run->o->size == VFY_PAPER)
-            vfy_check_range(r, name, (double)judged[sp], (double)min_halvings[sp], INFINITY);
-        else
-            vfy_skip(r, name, "quick sizes: the statistical error hides the small steps");
-    }
-    split_cost_values(run, rows, levels);
-    const sim_scene *s = &run->rows[run->nrows - 1].solver;
-    const double v[] = {(double)s->particles.n, (double)s->particles.ensembles, s->steady.from,
-                        s->t_end, VFY_TOL_SPLIT_EULER_CF_LO, VFY_TOL_SPLIT_EULER_CF_HI,
-                        VFY_TOL_SPLIT_STRANG_CF_LO, VFY_TOL_SPLIT_STRANG_CF_HI,
-                        VFY_TOL_SPLIT_CLEAN_RATIO};
-    static const char *const names[] = {"n", "N", "steady_from", "t_end", "euler_lo",
-                                        "euler_hi", "strang_lo", "strang_hi", "clean_ratio"};
-    for (size_t i = 0; i < sizeof names / sizeof *names; i++)
-        vfy_values_set(&run->values, names[i], v[i]);
-    if (run->o->progress) {
-        char cost[1400];
-        fprintf(run->o->progress, "   %s: cost of a splitting error of T̄ at N = %zu, n = %zu:%s\n",
-                run->c->name, s->particles.ensembles, s->particles.n,
-                vfy_expand(cost, sizeof cost, SPLIT_COST_TEXT, run, NULL));
-    }
-    sim_status status = SIM_OK;
-    if (split_figure(run->o, run->c->name, run->comment, rows, levels) != 0)
-        status = vfy_io_error(run->c->name, msg, msglen);
+    const double eps = m->x * vfy_values_get(&run->rows[0].values, "T");
+    const int strang = is_strang(m);
+    const split_row *own = rows + (strang ? levels : 0);
+    const double h = split_step_for(own, levels, strang ? 2.0 : 1.0, eps);
+    const double v = which == COST_STEP ? h : split_cost_at(&model, own, levels, h, initial);
     free(rows);
-    return status;
+    return v;
 }
 
-static sim_status split_after_ex5(vfy_case_run *run, vfy_report *r, char *msg, size_t msglen)
+static double split_step(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    static const size_t min_halvings[2] = {VFY_TOL_SPLIT_MIN_HALVINGS,
-                                           VFY_TOL_SPLIT_MIN_HALVINGS};
-    return split_after(run, r, min_halvings, msg, msglen);
+    (void)row;
+    return split_cost_value(run, m, COST_STEP);
 }
 
-/* The Gaussian thermostat's Strang error is small beside its Euler error:
- * at the scene's N it stands clear of the noise for one or two halvings. */
-static sim_status split_after_gaussian(vfy_case_run *run, vfy_report *r, char *msg,
-                                       size_t msglen)
+static double split_cpu(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
 {
-    static const size_t min_halvings[2] = {VFY_TOL_SPLIT_MIN_HALVINGS,
-                                           VFY_TOL_SPLIT_GAUSSIAN_STRANG_MIN_HALVINGS};
-    return split_after(run, r, min_halvings, msg, msglen);
+    (void)row;
+    return split_cost_value(run, m, COST_CPU);
+}
+
+static double split_cost_model(const vfy_case_run *run, const vfy_row *row, const vfy_metric *m)
+{
+    (void)row;
+    split_row *rows;
+    const size_t levels = split_rows(run, &rows);
+    if (levels == 0)
+        return NAN;
+    const split_cost model = split_cost_fit(rows, 2 * levels);
+    free(rows);
+    return 1e9 * (m->x == 1.0 ? model.beta : model.alpha);
+}
+
+/* The figure's curves (split-case.inc): |difference in T̄| of a splitting
+ * against h with its half-widths, or the slope 1 (Euler's) or 2 (Strang's)
+ * through its largest step. */
+enum { CURVE_EULER, CURVE_STRANG, CURVE_SLOPE_1, CURVE_SLOPE_2 };
+static int split_curve(const vfy_case_run *run, double which, vfy_curve *out)
+{
+    split_row *rows;
+    const size_t levels = split_rows(run, &rows);
+    const int data = which == CURVE_EULER || which == CURVE_STRANG;
+    if (levels == 0 || vfy_curve_alloc(out, levels, data) != 0) {
+        free(rows);
+        return -1;
+    }
+    const split_row *own = rows + (which == CURVE_STRANG || which == CURVE_SLOPE_2 ? levels : 0);
+    const double h0 = rows[0].h, d0 = fabs(own[0].dT);
+    for (size_t k = 0; k < levels; k++) {
+        const double r = rows[k].h / h0;
+        out->x[k] = rows[k].h;
+        out->y[k] = data ? fabs(own[k].dT) : which == CURVE_SLOPE_1 ? d0 * r : d0 * r * r;
+        if (data)
+            out->ci[k] = own[k].dT_ci;
+    }
+    free(rows);
+    return 0;
+}
+
+static int split_curve_fn(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
+{
+    (void)row;
+    return split_curve(run, x, out);
 }
 
 /* The functions this file's case files name (named.h, registry.c). */
@@ -372,6 +352,13 @@ const vfy_named_fn vfy_split_named[] = {
     VFY_NAMED_GUARD("a2_halving", a2_halving),
     VFY_NAMED_RULE("cf_in_band", cf_in_band),
     VFY_NAMED_METRIC("jump_value", jump_value),
-    VFY_NAMED_HOOK("split_after_ex5", split_after_ex5),
-    VFY_NAMED_HOOK("split_after_gaussian", split_after_gaussian),
+    VFY_NAMED_METRIC("split_judged", split_judged),
+    VFY_NAMED_METRIC("split_step", split_step),
+    VFY_NAMED_METRIC("split_cpu", split_cpu),
+    VFY_NAMED_METRIC_X("split_ns_per_candidate", split_cost_model, 0),
+    VFY_NAMED_METRIC_X("split_ns_per_normal", split_cost_model, 1),
+    VFY_NAMED_CURVE_X("split_curve_euler", split_curve_fn, CURVE_EULER),
+    VFY_NAMED_CURVE_X("split_curve_strang", split_curve_fn, CURVE_STRANG),
+    VFY_NAMED_CURVE_X("split_curve_slope_1", split_curve_fn, CURVE_SLOPE_1),
+    VFY_NAMED_CURVE_X("split_curve_slope_2", split_curve_fn, CURVE_SLOPE_2),
     VFY_NAMED_END};

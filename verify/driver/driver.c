@@ -659,6 +659,14 @@ vfy_guard_result vfy_guard_only_unless(const vfy_case_run *run, const vfy_row *r
     return lookup(run, row, g->a) > 0.0 ? VFY_OMIT : VFY_JUDGE;
 }
 
+vfy_guard_result vfy_guard_paper_sizes(const vfy_case_run *run, const vfy_row *row,
+                                       const vfy_guard *g)
+{
+    (void)row;
+    (void)g;
+    return run->o->size == VFY_PAPER ? VFY_JUDGE : VFY_GUARD_SKIP;
+}
+
 vfy_guard_result vfy_guard_after_first(const vfy_case_run *run, const vfy_row *row,
                                        const vfy_guard *g)
 {
@@ -877,11 +885,21 @@ static sim_status observe_only(const char *names, sim_scene *solver, char *msg, 
     return SIM_OK;
 }
 
-/* The description's settings derived from value references at the row's
- * scene ("KEY=REFERENCE[:FORMAT] ...", vfy_case_desc.derived) as "KEY=V;"
- * appended to *out, a NaN reference's left out; 0, or -1 when out of
- * memory. */
-static int referenced_sets(const char *words, const vfy_row *row, vfy_text *out)
+/* A derived setting's value (vfy_case_desc.derived): the row metric named
+ * `name`, before the run, else the value reference at the row's scene. */
+static double derived_value(const vfy_case_run *run, const vfy_row *row, const char *name)
+{
+    for (const vfy_metric *m = run->d->metrics; m != NULL && m->name != NULL; m++)
+        if (strcmp(m->name, name) == 0)
+            return m->fn(run, row, m);
+    return vfy_reference_value(name, &row->scene);
+}
+
+/* The description's settings derived from value references or metrics
+ * ("KEY=NAME[:FORMAT] ...", vfy_case_desc.derived) as "KEY=V;" appended to
+ * *out, a NaN value's left out; 0, or -1 when out of memory. */
+static int referenced_sets(const vfy_case_run *run, const char *words, const vfy_row *row,
+                           vfy_text *out)
 {
     int rc = 0;
     for (const char *p = words + strspn(words, " "); *p && rc == 0; p += strspn(p, " ")) {
@@ -894,7 +912,7 @@ static int referenced_sets(const char *words, const vfy_row *row, vfy_text *out)
             *eq = '\0';
             if (colon != NULL)
                 *colon = '\0';
-            const double v = vfy_reference_value(eq + 1, &row->scene);
+            const double v = derived_value(run, row, eq + 1);
             if (!isnan(v)) {
                 char value[64];
                 snprintf(value, sizeof value, colon ? colon + 1 : "%.17g", v);
@@ -907,30 +925,13 @@ static int referenced_sets(const char *words, const vfy_row *row, vfy_text *out)
     return rc;
 }
 
-/* The description's derived settings for the row: its referenced ones, then
- * its vfy_derive_fn's (in a buffer grown until they fit); NULL when out of
- * memory. */
+/* The description's derived settings for the row; NULL when out of memory. */
 static char *derived_sets(const vfy_case_run *run, const vfy_row *row)
 {
     vfy_text out = {0};
-    if (run->d->derived && referenced_sets(run->d->derived, row, &out) != 0) {
+    if (referenced_sets(run, run->d->derived, row, &out) != 0) {
         vfy_text_free(&out);
         return NULL;
-    }
-    for (size_t len = 512; run->d->derive; len *= 2) {
-        char *buf = malloc(len);
-        if (buf == NULL) {
-            vfy_text_free(&out);
-            return NULL;
-        }
-        buf[0] = '\0';
-        run->d->derive(row, buf, len);
-        const int fits = strlen(buf) + 1 < len;
-        if (fits)
-            vfy_text_printf(&out, "%s", buf);   /* a failure is vfy_text_take's NULL */
-        free(buf);
-        if (fits)   /* else it may have been cut short: again, with twice the room */
-            break;
     }
     return vfy_text_take(&out);
 }
@@ -1001,7 +1002,7 @@ static sim_status row_scenes(vfy_case_run *run, const vfy_sweep *s, vfy_row *row
     if (status == SIM_OK)
         status = vfy_load_scene_sets(stem, run->o, (const char *const *)l.sets, l.count,
                                      &row->scene, &row->solver, msg, msglen);
-    if (status == SIM_OK && (run->d->derived || run->d->derive)) {
+    if (status == SIM_OK && run->d->derived) {
         derived = derived_sets(run, row);
         if (derived == NULL || split_sets(derived, &l, &stem, row) != 0)
             status = SIM_ENOMEM;
@@ -1250,8 +1251,7 @@ static char *differs_text(const vfy_case_run *run, const vfy_row *row, const vfy
 static void judge_check(vfy_case_run *run, vfy_row *row, const vfy_check_spec *c,
                         vfy_report *r, const vfy_row *no, const char *refused, int incomplete)
 {
-    const vfy_guard_result g = c->guard.fn && row ? c->guard.fn(run, row, &c->guard)
-                                                  : VFY_JUDGE;
+    const vfy_guard_result g = c->guard.fn ? c->guard.fn(run, row, &c->guard) : VFY_JUDGE;
     if (g == VFY_OMIT)
         return;
     char *expanded = vfy_expand_alloc(c->name, run, row);
@@ -1277,7 +1277,7 @@ static void judge_check(vfy_case_run *run, vfy_row *row, const vfy_check_spec *c
     free(expanded);
 }
 
-/* The checks of a row, or of the case (row NULL: no guards).  On an
+/* The checks of a row, or of the case (row NULL).  On an
  * external solver's incomplete result, a NaN any rule meets is a SKIP. */
 static void run_checks(vfy_case_run *run, vfy_row *row, const vfy_check_spec *checks,
                        vfy_report *r)
@@ -1696,7 +1696,8 @@ static int row_xy(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
                                .ci = {k->reference ? NULL : c[i].ci},
                                .band = !k->reference && f->band};
     const vfy_xy_figure fig = {.name = name, .title = title, .xlabel = f->xlabel,
-                               .comment = run->comment, .logy = f->logy, .npanels = 1,
+                               .comment = run->comment, .logx = f->logx, .logy = f->logy,
+                               .npanels = 1,
                                .ylabel = {f->ylabel}, .ncurves = n, .curves = xy};
     const int rc = vfy_write_xy(run->o, &fig);
     free(xy);
@@ -1732,7 +1733,7 @@ static int row_points(vfy_case_run *run, const vfy_figure_spec *f, const char *n
     if (rc == 0) {
         const vfy_points points = {
             .name = name, .title = title, .xlabel = f->xlabel, .ylabel = f->ylabel,
-            .logy = f->logy, .npoints = first->count, .x = first->x, .nseries = S,
+            .logx = f->logx, .logy = f->logy, .npoints = first->count, .x = first->x, .nseries = S,
             .series = names, .y = arrays, .ci = arrays + n,
             .nfine = first_ref ? first_ref->count : 0, .xfine = first_ref ? first_ref->x : NULL,
             .ncurves = R, .curves = names + n, .yfine = arrays + 2 * n,
@@ -1741,6 +1742,58 @@ static int row_points(vfy_case_run *run, const vfy_figure_spec *f, const char *n
     }
     free(arrays);
     free(names);
+    return rc;
+}
+
+/* A ROW_CURVES figure of row series (driver.h, row_label): every row a
+ * curve against its series f->x, a panel per item of f->series. */
+static int write_series_curves(vfy_case_run *run, const vfy_figure_spec *f, const char *title)
+{
+    const size_t P = list_length(f->series), rows = run->nrows;
+    size_t width = 1, n = 0;
+    for (size_t i = 0; i < rows; i++)
+        width = run->rows[i].res.outputs > width ? run->rows[i].res.outputs : width;
+    const size_t per_row = (2 * P + 2) * width;   /* x and its ci, then each panel's */
+    vfy_xy_curve *curves = calloc(rows, sizeof *curves);
+    char **labels = calloc(rows + P, sizeof *labels), **axes = labels + rows;
+    double *buf = malloc(per_row * rows * sizeof *buf);
+    char *name = vfy_aprintf("%s%s", run->c->name, f->suffix ? f->suffix : "");
+    const char *series[VFY_XY_PANELS] = {NULL};
+    vfy_xy_figure fig = {.name = name, .title = title, .xlabel = f->xlabel,
+                         .comment = run->comment, .logx = f->logx, .logy = f->logy,
+                         .npanels = P, .curves = curves};
+    int rc = curves && labels && buf && name ? 0 : -1;
+    for (size_t p = 0; p < P && rc == 0; p++) {   /* "AXIS LABEL=series" */
+        series[p] = label_and_name(f->series[p], &axes[p]);
+        fig.ylabel[p] = axes[p];
+        rc = axes[p] ? 0 : -1;
+    }
+    for (size_t i = 0; i < rows && rc == 0; i++) {
+        const vfy_row *row = &run->rows[i];
+        double *x = buf + i * per_row, *y = x + 2 * width;
+        if (vfy_row_series(row, f->x, x, x + width) != 0)
+            continue;   /* a row without it is left out */
+        vfy_xy_curve *c = &curves[n];
+        *c = (vfy_xy_curve){.count = row->res.outputs, .x = x, .band = f->band};
+        for (size_t p = 0; p < P; p++) {
+            double *mean = y + 2 * p * width, *ci = mean + width;
+            if (vfy_row_series(row, series[p], mean, ci) != 0)
+                continue;   /* a panel without it */
+            for (size_t k = 0; k < c->count; k++)
+                ci[k] = fabs(ci[k]);
+            c->y[p] = mean;
+            c->ci[p] = ci;
+        }
+        rc = (labels[n] = vfy_expand_alloc(f->row_label, run, row)) ? 0 : -1;
+        c->label = labels[n++];
+    }
+    fig.ncurves = n;
+    if (rc == 0)
+        rc = vfy_write_xy(run->o, &fig);
+    free_strings(labels, rows + P);
+    free(curves);
+    free(buf);
+    free(name);
     return rc;
 }
 
@@ -1902,6 +1955,12 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
 {
     if (f->kind == VFY_FIGURE_POINTS)
         return write_points(run, f);
+    if (f->kind == VFY_FIGURE_ROW_CURVES && f->row_label != NULL) {
+        char *own = f->title ? vfy_expand_alloc(f->title, run, NULL) : vfy_strdup(title);
+        const int rc = own != NULL ? write_series_curves(run, f, own) : -1;
+        free(own);
+        return rc;
+    }
     if (f->kind == VFY_FIGURE_ROW_CURVES || f->kind == VFY_FIGURE_ROW_POINTS) {
         int rc = 0;
         for (size_t i = f->each_row ? 0 : run->nrows - 1; i < run->nrows && rc == 0; i++)

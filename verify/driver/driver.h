@@ -158,7 +158,9 @@ struct vfy_metric {
 
 /* A guard decides whether a check is judged on this row: VFY_JUDGE, a SKIP
  * with the guard's reason, or VFY_OMIT (the check does not exist here, e.g.
- * a ratio to the previous row on the first row). */
+ * a ratio to the previous row on the first row).  A case check's guard gets
+ * row NULL: only the value guards and paper_sizes take one (case_file.c
+ * refuses the others there). */
 typedef enum vfy_guard_result { VFY_JUDGE, VFY_GUARD_SKIP, VFY_OMIT } vfy_guard_result;
 typedef struct vfy_guard vfy_guard;
 typedef vfy_guard_result vfy_guard_func(const vfy_case_run *run, const vfy_row *row,
@@ -340,12 +342,17 @@ typedef struct vfy_figure_spec {
     /* ROW_CURVES, ROW_POINTS: the curves (at least one that is no
        reference; ROW_POINTS: the data curves share their x, and so do the
        references), of the last row, or of each row (each_row: one figure a
-       row, suffix a template at the row that tells them apart); band: the
+       row, suffix a template at the row that tells them apart).  Or
+       ROW_CURVES of row series: every row one curve, labelled row_label (a
+       template at the row), against its series x, one panel per item of
+       series ("AXIS LABEL=series", with its half-widths in the CSV); a row
+       without series x is left out.  band: the
        data curves' half-widths drawn as a shaded band (ROW_CURVES; else
-       only in the CSV); logy: a log y axis; key_inside: where the key goes,
+       only in the CSV); logx, logy: log axes; key_inside: where the key goes,
        in gnuplot's words (ROW_POINTS; NULL: top right). */
     const vfy_figure_curve *curves;
-    int each_row, band, logy;
+    const char *row_label;
+    int each_row, band, logx, logy;
     const char *key_inside;
     const char *title, *xlabel, *ylabel;   /* title: a template (curves:
                                               NULL, the case's title; ROW_: at
@@ -356,14 +363,6 @@ typedef struct vfy_figure_spec {
 /* A description's figures, ended by one of kind VFY_FIGURE_NONE:
  * VFY_FIGURES({.kind = VFY_FIGURE_CURVES, ...}, {...}). */
 #define VFY_FIGURES(...) ((const vfy_figure_spec[]){__VA_ARGS__, {.kind = VFY_FIGURE_NONE}})
-
-/* Settings derived from a row (its scene as the sweep left it, and its
- * values: e.g. a thermostat's strength from alpha), as "key=value;key=value"
- * in buf (len bytes, written as snprintf would): applied after the sweep and
- * before --set and --solver-set, so they never override what the user
- * fixed.  Returns buf ("" for none).  Settings that fill buf are asked for
- * again with twice the room, so none is cut short. */
-typedef const char *(*vfy_derive_fn)(const vfy_row *row, char *buf, size_t len);
 
 /* Change a row's solver scene after it was loaded, for what no setting can
  * say (e.g. simulate the reference scene with another scheme).  Returns
@@ -401,12 +400,15 @@ typedef struct vfy_case_desc {
     vfy_batches batches;                /* count > 0: the variants are seeded batches */
     const char *row_progress;           /* printed after each row (a template), or NULL */
     const char *derived;                /* settings derived from value references
-                                           (references.h) at the row's scene:
-                                           "KEY=REFERENCE[:FORMAT] ..." (FORMAT: a printf
-                                           one, %.17g when none), each applied like a
-                                           vfy_derive_fn's, one whose reference is NaN
-                                           (does not apply) left out; or NULL */
-    vfy_derive_fn derive;               /* derived settings a reference cannot give, or
+                                           (references.h) at the row's scene, or from
+                                           the row metrics of that name (evaluated
+                                           before the run: one that reads only the
+                                           scene and the row's $ values):
+                                           "KEY=NAME[:FORMAT] ..." (FORMAT: a printf one,
+                                           %.17g when none), applied after the sweep and
+                                           before --set and --solver-set, so they never
+                                           override what the user fixed; one whose
+                                           value is NaN (does not apply) left out; or
                                            NULL */
     const char *require;                /* what the case needs of each row's scenes (both
                                            the references' and the solver's):
@@ -575,6 +577,9 @@ vfy_guard_func vfy_guard_unless;
 /* Judged unless value a is positive; then omitted (another check, with a
  * known difference, judges that row). */
 vfy_guard_func vfy_guard_only_unless;
+/* Judged at paper sizes; at quick sizes SKIP (what only the papers' sizes
+ * resolve). */
+vfy_guard_func vfy_guard_paper_sizes;
 /* Omitted on the first row (a ratio to the previous row). */
 vfy_guard_func vfy_guard_after_first;
 /* Omitted on the first row; judged when value a exceeds x times value b on

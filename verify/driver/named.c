@@ -20,6 +20,7 @@ const vfy_named_fn vfy_driver_named[] = {
     VFY_NAMED_GUARD("only_at_least", vfy_guard_only_at_least),
     VFY_NAMED_GUARD("unless", vfy_guard_unless),
     VFY_NAMED_GUARD("only_unless", vfy_guard_only_unless),
+    VFY_NAMED_GUARD("paper_sizes", vfy_guard_paper_sizes),
     VFY_NAMED_GUARD("after_first", vfy_guard_after_first),
     VFY_NAMED_GUARD("clean_pair", vfy_guard_clean_pair),
     VFY_NAMED_METRIC("max_rel_err", vfy_metric_max_rel_err),
@@ -70,7 +71,6 @@ const vfy_named_fn *vfy_named_find(const vfy_named_fn *table, vfy_fn_kind kind,
 
 const char *vfy_fn_kind_word(vfy_fn_kind kind)
 {
-    static const char *const words[] = {"metric", "rule", "guard", "hook", "derive", "adjust",
-                                       "curve"};
+    static const char *const words[] = {"metric", "rule", "guard", "hook", "adjust", "curve"};
     return (size_t)kind < sizeof words / sizeof *words ? words[kind] : "function";
 }

@@ -15,7 +15,6 @@ typedef enum vfy_fn_kind {
     VFY_FN_RULE,     /* vfy_rule_fn: [check] rule */
     VFY_FN_GUARD,    /* vfy_guard_fn: [check] guard */
     VFY_FN_HOOK,     /* vfy_hook_fn: [case] after_rows */
-    VFY_FN_DERIVE,   /* vfy_derive_fn: [case] derive */
     VFY_FN_ADJUST,   /* vfy_adjust_fn: [case] adjust */
     VFY_FN_CURVE,    /* vfy_curve_fn: [figure] curve, ref_curve */
 } vfy_fn_kind;
@@ -33,7 +32,6 @@ typedef struct vfy_named_fn {
     vfy_rule_fn rule;
     vfy_guard_fn guard;
     vfy_hook_fn hook;
-    vfy_derive_fn derive;
     vfy_adjust_fn adjust;
     vfy_curve_fn curve;
     int fixed_x;
@@ -44,7 +42,6 @@ typedef struct vfy_named_fn {
 #define VFY_NAMED_RULE(NAME, FN) {NAME, VFY_FN_RULE, .rule = FN}
 #define VFY_NAMED_GUARD(NAME, FN) {NAME, VFY_FN_GUARD, .guard = FN}
 #define VFY_NAMED_HOOK(NAME, FN) {NAME, VFY_FN_HOOK, .hook = FN}
-#define VFY_NAMED_DERIVE(NAME, FN) {NAME, VFY_FN_DERIVE, .derive = FN}
 #define VFY_NAMED_ADJUST(NAME, FN) {NAME, VFY_FN_ADJUST, .adjust = FN}
 #define VFY_NAMED_CURVE(NAME, FN) {NAME, VFY_FN_CURVE, .curve = FN, .x = NAN}
 #define VFY_NAMED_METRIC_X(NAME, FN, X) {NAME, VFY_FN_METRIC, .metric = FN, .fixed_x = 1, .x = X}
