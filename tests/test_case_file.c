@@ -290,9 +290,9 @@ static void test_bad_input_names_file_line_and_key(void **state)
             "(allowed LABEL=FUNCTION)");
     refused(75, "curve = f=no_such_curve", "t.case:75: [figure] curve: unknown curve "
             "'no_such_curve'");
+    refused(75, "row_label = {label}", "t.case:67: [figure]: row_label (a curve per row) or "
+            "each_row (a figure per row), not both");
     refused(75, "", "t.case:67: [figure] of kind row curves or row points needs a curve");
-    refused(75, "row_label = {label}", "t.case:67: [figure] of row series (row_label) needs "
-            "x and series");
     refused(69, "suffix = -rows", "t.case:67: [figure] each_row needs a suffix that tells");
     refused(61, "x_lo = 0.5\nlogy = true", "t.case:57: [figure]: curve, ref_curve, row_label, "
             "each_row, band, logx, logy and key_inside are for kinds row curves and row "

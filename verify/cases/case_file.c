@@ -974,10 +974,14 @@ static int finish(parse_ctx *c)
         int data = 0;
         for (const vfy_figure_curve *k = g->curves; k != NULL; k = k->next)
             data += !k->reference;
-        const int of_series = g->kind == VFY_FIGURE_ROW_CURVES && g->row_label != NULL;
-        if (of_series && (g->curves || g->each_row || g->x == NULL || g->series == NULL))
-            return fail(c, SIM_EINVAL, NULL, "[figure] of row series (row_label) needs x and "
-                        "series, and takes no curve or each_row");
+        const int of_series = g->row_label != NULL && g->curves == NULL;
+        if (of_series && (g->kind != VFY_FIGURE_ROW_CURVES || g->each_row || g->x == NULL
+                          || g->series == NULL))
+            return fail(c, SIM_EINVAL, NULL, "[figure] of row series (row_label, no curve) is "
+                        "of kind row curves and needs x and series, and no each_row");
+        if (g->row_label != NULL && g->each_row)
+            return fail(c, SIM_EINVAL, NULL, "[figure]: row_label (a curve per row) or each_row "
+                        "(a figure per row), not both");
         size_t panels = 0;
         while (g->series != NULL && g->series[panels] != NULL)
             panels++;

@@ -312,133 +312,55 @@ static double laguerre_half(int k, double x)
  * particles (the case keeps every bin in its steady averages). */
 #define MSG_PHI_CX_MAX 3.0
 
-/* D Figs. 5-6 for one row: phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x at the bin
- * centres beside its truncations phi_K = sum_{k <= K} b'_k L_k^{(1/2)}(c_x^2)
- * (the row's b'_k), in x, phi, phic and tr (3 bins) of `bins` each; the
- * row's beta_1/b'_1 at the bins' upper edges into beta (their squares into
- * bx). */
-static sim_status msg_phi_figure(const vfy_case_run *run, const vfy_row *row, size_t bins,
-                                 double *x, double *phi, double *phic, double *tr, double *bx,
-                                 double *beta, char *msg, size_t msglen)
+/* The curves of D Figs. 5-7 (msg-distribution's [figure]s), of one row:
+ * x = 0, phi(c_x^2) = sqrt(pi) e^{c_x^2} g1/c_x at the bin centres with its
+ * half-widths; x = K = 1..3, its truncation phi_K = sum_{k <= K} b'_k
+ * L_k^{(1/2)}(c_x^2) (the row's b'_k), both up to MSG_PHI_CX_MAX; x = 4,
+ * beta_1/b'_1 at the bins' upper edges (their squares), every bin; x = 5,
+ * the first Sonine's there, (8/(3 sqrt(pi))) int_0^c u^2 (3/2 - u^2)^2
+ * e^{-u^2} du (midpoint rule, 64 steps a bin). */
+enum { MSG_PHI, MSG_BETA1 = 4, MSG_BETA1_SONINE };
+static int msg_curve(const vfy_case_run *run, const vfy_row *row, double which, vfy_curve *out)
 {
+    (void)run;
     const sim_scene *s = &row->solver;
+    const size_t bins = s->steady.bins;
     const long g1 = sim_steady_find(s, "g1_0"), b0 = sim_steady_find(s, "beta1_0");
     const double f = row->solver.heat_flux.strength / row->scene.heat_flux.strength;
-    const double b1 = vfy_values_get(&row->values, "b1xc");
-    double b[3];
-    for (int k = 0; k < 3; k++) {
-        static const char *const bn[] = {"b1c", "b2c", "b3c"};
-        b[k] = vfy_values_get(&row->values, bn[k]);
-    }
-    for (size_t k = 0; k < bins; k++) {
-        const double c = sim_steady_bin_centre(s, k), c2 = c * c;
-        x[k] = c2;
-        phi[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
-        phic[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
-        double sum = 0.0;
-        for (int K = 0; K < 3; K++) {
-            sum += b[K] * laguerre_half(K + 1, c2);
-            tr[(size_t)K * bins + k] = sum;
-        }
-        const double edge = sim_steady_bin_lower(s, k + 1);
-        bx[k] = edge * edge;
-        beta[k] = f * row->res.steady_mean[(size_t)b0 + k] / b1;
-    }
-    char name[160], title[200];
-    snprintf(name, sizeof name, "%s-phi-%.1f", run->c->name,
-             vfy_values_get(&row->values, "alpha"));
-    snprintf(title, sizeof title, "%s: phi(c_x^2) and its truncations, alpha = %.1f "
-             "(paper D Figs. 5-6)", run->c->name, vfy_values_get(&row->values, "alpha"));
-    const char *phi_series[] = {"phi (DSMC)"};
-    const char *curves[] = {"phi_1", "phi_2", "phi_3"};
-    const double *ys[] = {phi}, *cs[] = {phic}, *yf[] = {tr, tr + bins, tr + 2 * bins};
     size_t shown = 0;
     while (shown < bins && sim_steady_bin_centre(s, shown) <= MSG_PHI_CX_MAX)
         shown++;
-    const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
-                            .ylabel = "phi", .npoints = shown, .x = x, .nseries = 1,
-                            .series = phi_series, .y = ys, .ci = cs, .nfine = shown,
-                            .xfine = x, .ncurves = 3, .curves = curves, .yfine = yf,
-                            .comment = run->comment};
-    return vfy_write_points(run->o, &fig) != 0 ? vfy_io_error(name, msg, msglen) : SIM_OK;
-}
-
-/* D Figs. 5-7 for each row (msg_phi_figure); beta_1/b'_1 of every row in one
- * figure beside the first Sonine's (8/(3 sqrt(pi))) int_0^c u^2 (3/2 -
- * u^2)^2 e^{-u^2} du. */
-static sim_status msg_distribution_after(vfy_case_run *run, vfy_report *r, char *msg,
-                                         size_t msglen)
-{
-    (void)r;
-    sim_status status = SIM_OK;
-    const size_t bins = run->rows[0].solver.steady.bins, rows = run->nrows;
-    double *buf = malloc((7 * bins + rows * bins) * sizeof *buf);
-    const double **betas = calloc(2 * rows, sizeof *betas);   /* then their error bars */
-    char **labels = calloc(rows, sizeof *labels);
-    if (buf == NULL || betas == NULL || labels == NULL || status != SIM_OK) {
-        free(buf);
-        free(betas);
-        free(labels);
-        snprintf(msg, msglen, "out of memory");
-        return SIM_ENOMEM;
-    }
-    double *x = buf, *phi = x + bins, *phic = phi + bins, *tr = phic + bins;  /* tr: 3 bins */
-    double *bx = buf + 6 * bins, *beta = bx + bins;   /* beta: rows x bins */
-    const double **betacs = betas + rows;
-    for (size_t i = 0; i < rows && status == SIM_OK; i++) {
-        const vfy_row *row = &run->rows[i];
-        if (row->solver.steady.bins != bins) {
-            snprintf(msg, msglen, "%s: the rows differ in steady.bins", run->c->name);
-            status = SIM_EINVAL;
-            break;
-        }
-        status = msg_phi_figure(run, row, bins, x, phi, phic, tr, bx, beta + i * bins, msg,
-                                msglen);
-        labels[i] = vfy_aprintf("alpha = %.1f", vfy_values_get(&row->values, "alpha"));
-        if (status == SIM_OK && labels[i] == NULL) {
-            snprintf(msg, msglen, "out of memory");
-            status = SIM_ENOMEM;
-        }
-        betas[i] = beta + i * bins;
-    }
-    if (status == SIM_OK) {
-        /* the first Sonine's beta_1/b'_1 at the same edges (midpoint rule, 64 steps a
-         * bin), in phi's storage, which the per-row figures no longer need */
-        double *sonine = phi, acc = 0.0, u0 = 0.0;
-        for (size_t k = 0; k < bins; k++) {
-            const double u1 = sqrt(bx[k]), du = (u1 - u0) / 64.0;
+    const int phi = which < MSG_BETA1;
+    if (g1 < 0 || b0 < 0 || vfy_curve_alloc(out, phi ? shown : bins, which == MSG_PHI) != 0)
+        return -1;
+    double acc = 0.0, u0 = 0.0;
+    for (size_t k = 0; k < out->count; k++) {
+        const double c = sim_steady_bin_centre(s, k), c2 = c * c;
+        const double edge = sim_steady_bin_lower(s, k + 1);
+        out->x[k] = phi ? c2 : edge * edge;
+        if (which == MSG_PHI) {
+            out->y[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
+            out->ci[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
+        } else if (phi) {
+            static const char *const bn[] = {"b1c", "b2c", "b3c"};
+            double sum = 0.0;
+            for (int K = 0; K < (int)which; K++)
+                sum += vfy_values_get(&row->values, bn[K]) * laguerre_half(K + 1, c2);
+            out->y[k] = sum;
+        } else if (which == MSG_BETA1) {
+            out->y[k] = f * row->res.steady_mean[(size_t)b0 + k]
+                        / vfy_values_get(&row->values, "b1xc");
+        } else {
+            const double u1 = sqrt(out->x[k]), du = (u1 - u0) / 64.0;
             for (int j = 0; j < 64; j++) {
                 const double u = u0 + (j + 0.5) * du, l = 1.5 - u * u;
                 acc += u * u * l * l * exp(-u * u) * du;
             }
-            sonine[k] = 8.0 / (3.0 * sqrt(M_PI)) * acc;
+            out->y[k] = 8.0 / (3.0 * sqrt(M_PI)) * acc;
             u0 = u1;
         }
-        double *zero = phic;   /* beta_1's error bars: none drawn (phic's storage) */
-        for (size_t k = 0; k < bins; k++)
-            zero[k] = 0.0;
-        for (size_t i = 0; i < rows; i++)
-            betacs[i] = zero;
-        char name[160], title[200];
-        snprintf(name, sizeof name, "%s-beta1", run->c->name);
-        snprintf(title, sizeof title, "%s: beta_1(c_x^2)/b'_1 (paper D Fig. 7)", run->c->name);
-        const char *curves[] = {"first Sonine"};
-        const double *yf[] = {sonine};
-        const vfy_points fig = {.name = name, .title = title, .xlabel = "c_x^2",
-                                .ylabel = "beta_1/b'_1", .npoints = bins, .x = bx,
-                                .nseries = rows, .series = (const char *const *)labels,
-                                .y = betas, .ci = betacs, .bars = "", .nfine = bins, .xfine = bx,
-                                .ncurves = 1, .curves = curves, .yfine = yf,
-                                .comment = run->comment};
-        if (vfy_write_points(run->o, &fig) != 0)
-            status = vfy_io_error(name, msg, msglen);
     }
-    for (size_t i = 0; i < rows; i++)
-        free(labels[i]);
-    free(labels);
-    free(betas);
-    free(buf);
-    return status;
+    return 0;
 }
 
 /* The functions this file's case files name (named.h, registry.c). */
@@ -452,5 +374,10 @@ const vfy_named_fn vfy_msg_named[] = {
     VFY_NAMED_METRIC("msg_inner_fraction", msg_inner_fraction),
     VFY_NAMED_HOOK("msg_linear", msg_linear),
     VFY_NAMED_HOOK("msg_kappa_after", msg_kappa_after),
-    VFY_NAMED_HOOK("msg_distribution_after", msg_distribution_after),
+    VFY_NAMED_CURVE_X("msg_curve_phi", msg_curve, MSG_PHI),
+    VFY_NAMED_CURVE_X("msg_curve_phi_1", msg_curve, 1),
+    VFY_NAMED_CURVE_X("msg_curve_phi_2", msg_curve, 2),
+    VFY_NAMED_CURVE_X("msg_curve_phi_3", msg_curve, 3),
+    VFY_NAMED_CURVE_X("msg_curve_beta1", msg_curve, MSG_BETA1),
+    VFY_NAMED_CURVE_X("msg_curve_beta1_sonine", msg_curve, MSG_BETA1_SONINE),
     VFY_NAMED_END};

@@ -1673,73 +1673,79 @@ int vfy_curve_alloc(vfy_curve *out, size_t count, int ci)
     return 0;
 }
 
-/* The length of a figure's curve list. */
-static size_t curves_length(const vfy_figure_curve *k)
-{
-    size_t n = 0;
-    for (; k != NULL; k = k->next)
-        n++;
-    return n;
-}
+/* The curves a ROW_ figure draws, made: n of them, each with its label and
+ * whether it is a reference. */
+typedef struct row_plot {
+    size_t n;
+    vfy_curve *c;
+    char **labels;
+    int *ref;
+} row_plot;
 
-/* VFY_FIGURE_ROW_CURVES: the curves c (labels, n of them) as lines. */
+/* VFY_FIGURE_ROW_CURVES: the curves as lines. */
 static int row_xy(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
-                  const char *title, const vfy_curve *c, char *const *labels, size_t n)
+                  const char *title, const row_plot *pl)
 {
-    vfy_xy_curve *xy = calloc(n, sizeof *xy);
+    vfy_xy_curve *xy = calloc(pl->n ? pl->n : 1, sizeof *xy);
     if (xy == NULL)
         return -1;
-    size_t i = 0;
-    for (const vfy_figure_curve *k = f->curves; k != NULL; k = k->next, i++)
-        xy[i] = (vfy_xy_curve){.label = labels[i], .reference = k->reference,
-                               .count = c[i].count, .x = c[i].x, .y = {c[i].y},
-                               .ci = {k->reference ? NULL : c[i].ci},
-                               .band = !k->reference && f->band};
+    for (size_t i = 0; i < pl->n; i++)
+        xy[i] = (vfy_xy_curve){.label = pl->labels[i], .reference = pl->ref[i],
+                               .count = pl->c[i].count, .x = pl->c[i].x, .y = {pl->c[i].y},
+                               .ci = {pl->ref[i] ? NULL : pl->c[i].ci},
+                               .band = !pl->ref[i] && f->band};
     const vfy_xy_figure fig = {.name = name, .title = title, .xlabel = f->xlabel,
                                .comment = run->comment, .logx = f->logx, .logy = f->logy,
-                               .npanels = 1,
-                               .ylabel = {f->ylabel}, .ncurves = n, .curves = xy};
+                               .npanels = 1, .ylabel = {f->ylabel}, .ncurves = pl->n,
+                               .curves = xy};
     const int rc = vfy_write_xy(run->o, &fig);
     free(xy);
     return rc;
 }
 
-/* VFY_FIGURE_ROW_POINTS: the data curves of c as points on their shared x,
- * the references as lines on theirs; -1 when they do not share it (or a
- * data curve has no half-widths) or out of memory. */
+/* VFY_FIGURE_ROW_POINTS: the data curves as points on their shared x (with
+ * no error bars when none has half-widths), the references as lines on
+ * theirs; -1 when they do not share it or out of memory. */
 static int row_points(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
-                      const char *title, const vfy_curve *c, char *const *labels, size_t n)
+                      const char *title, const row_plot *pl)
 {
+    const size_t n = pl->n;
     const double **arrays = calloc(3 * n + 1, sizeof *arrays);
     const char **names = calloc(2 * n + 1, sizeof *names);
     const vfy_curve *first = NULL, *first_ref = NULL;
-    size_t S = 0, R = 0, i = 0;
+    double *zero = NULL;   /* the half-widths of data without them */
+    size_t S = 0, R = 0, with_ci = 0;
     int rc = arrays && names ? 0 : -1;
-    for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next, i++) {
-        const vfy_curve **shared = k->reference ? &first_ref : &first;
+    for (size_t i = 0; i < n && rc == 0; i++) {
+        const vfy_curve **shared = pl->ref[i] ? &first_ref : &first;
         if (*shared == NULL)
-            *shared = &c[i];
-        if (c[i].count != (*shared)->count || (!k->reference && c[i].ci == NULL))
+            *shared = &pl->c[i];
+        if (pl->c[i].count != (*shared)->count)
             rc = -1;
-        else if (k->reference) {
-            arrays[2 * n + R] = c[i].y;
-            names[n + R++] = labels[i];
+        else if (pl->ref[i]) {
+            arrays[2 * n + R] = pl->c[i].y;
+            names[n + R++] = pl->labels[i];
         } else {
-            arrays[S] = c[i].y;
-            arrays[n + S] = c[i].ci;
-            names[S++] = labels[i];
+            if (pl->c[i].ci == NULL && zero == NULL
+                && (zero = calloc(pl->c[i].count + 1, sizeof *zero)) == NULL)
+                rc = -1;
+            with_ci += pl->c[i].ci != NULL;
+            arrays[S] = pl->c[i].y;
+            arrays[n + S] = pl->c[i].ci ? pl->c[i].ci : zero;
+            names[S++] = pl->labels[i];
         }
     }
     if (rc == 0) {
         const vfy_points points = {
             .name = name, .title = title, .xlabel = f->xlabel, .ylabel = f->ylabel,
-            .logx = f->logx, .logy = f->logy, .npoints = first->count, .x = first->x, .nseries = S,
-            .series = names, .y = arrays, .ci = arrays + n,
-            .nfine = first_ref ? first_ref->count : 0, .xfine = first_ref ? first_ref->x : NULL,
-            .ncurves = R, .curves = names + n, .yfine = arrays + 2 * n,
-            .comment = run->comment, .key_inside = f->key_inside};
+            .logx = f->logx, .logy = f->logy, .npoints = first->count, .x = first->x,
+            .nseries = S, .series = names, .y = arrays, .ci = arrays + n,
+            .bars = with_ci ? NULL : "", .nfine = first_ref ? first_ref->count : 0,
+            .xfine = first_ref ? first_ref->x : NULL, .ncurves = R, .curves = names + n,
+            .yfine = arrays + 2 * n, .comment = run->comment, .key_inside = f->key_inside};
         rc = vfy_write_points(run->o, &points);
     }
+    free(zero);
     free(arrays);
     free(names);
     return rc;
@@ -1797,30 +1803,50 @@ static int write_series_curves(vfy_case_run *run, const vfy_figure_spec *f, cons
     return rc;
 }
 
+/* Curve k of row (its label the template `label` at the row) into the
+ * plot's next place; 0, or -1 when out of memory. */
+static int row_plot_add(row_plot *pl, vfy_case_run *run, const vfy_row *row,
+                        const vfy_figure_curve *k, const char *label)
+{
+    const size_t i = pl->n++;
+    pl->ref[i] = k->reference;
+    return (pl->labels[i] = vfy_expand_alloc(label, run, row)) == NULL
+                   || k->fn(run, row, k->x, &pl->c[i]) != 0
+               ? -1
+               : 0;
+}
+
 /* A ROW_ figure of row (driver.h): its name the case's with the suffix
- * expanded at the row, its title (else the case's) too. */
+ * expanded at the row, its title (else the case's) too; with row_label,
+ * each data curve once per row of the run, the references of row. */
 static int write_row_figure(vfy_case_run *run, const vfy_figure_spec *f, const vfy_row *row,
                             const char *case_title)
 {
-    const size_t n = curves_length(f->curves);
-    vfy_curve *c = calloc(n, sizeof *c);
-    char **labels = calloc(n, sizeof *labels);
+    size_t data = 0, refs = 0;
+    for (const vfy_figure_curve *k = f->curves; k != NULL; k = k->next)
+        *(k->reference ? &refs : &data) += 1;
+    const size_t cap = (f->row_label ? data * run->nrows : data) + refs;
+    row_plot pl = {.c = calloc(cap, sizeof *pl.c), .labels = calloc(cap, sizeof *pl.labels),
+                   .ref = calloc(cap, sizeof *pl.ref)};
     char *suffix = vfy_expand_alloc(f->suffix ? f->suffix : "", run, row);
     char *name = suffix ? vfy_aprintf("%s%s", run->c->name, suffix) : NULL;
     char *title = f->title ? vfy_expand_alloc(f->title, run, row) : vfy_strdup(case_title);
-    int rc = c && labels && name && title ? 0 : -1;
-    size_t i = 0;
-    for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next, i++)
-        if ((labels[i] = vfy_expand_alloc(k->label, run, row)) == NULL
-            || k->fn(run, row, k->x, &c[i]) != 0)
-            rc = -1;
+    int rc = pl.c && pl.labels && pl.ref && name && title ? 0 : -1;
+    for (size_t i = 0; f->row_label && i < run->nrows && rc == 0; i++)   /* over rows */
+        for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next)
+            if (!k->reference)
+                rc = row_plot_add(&pl, run, &run->rows[i], k, f->row_label);
+    for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next)
+        if (k->reference || !f->row_label)
+            rc = row_plot_add(&pl, run, row, k, k->label);
     if (rc == 0)
-        rc = f->kind == VFY_FIGURE_ROW_CURVES ? row_xy(run, f, name, title, c, labels, n)
-                                              : row_points(run, f, name, title, c, labels, n);
-    for (i = 0; c != NULL && i < n; i++)
-        free(c[i].x);
-    free_strings(labels, n);
-    free(c);
+        rc = f->kind == VFY_FIGURE_ROW_CURVES ? row_xy(run, f, name, title, &pl)
+                                              : row_points(run, f, name, title, &pl);
+    for (size_t i = 0; pl.c != NULL && i < pl.n; i++)
+        free(pl.c[i].x);
+    free_strings(pl.labels, pl.n);
+    free(pl.c);
+    free(pl.ref);
     free(suffix);
     free(name);
     free(title);
@@ -1955,7 +1981,7 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
 {
     if (f->kind == VFY_FIGURE_POINTS)
         return write_points(run, f);
-    if (f->kind == VFY_FIGURE_ROW_CURVES && f->row_label != NULL) {
+    if (f->kind == VFY_FIGURE_ROW_CURVES && f->row_label != NULL && f->curves == NULL) {
         char *own = f->title ? vfy_expand_alloc(f->title, run, NULL) : vfy_strdup(title);
         const int rc = own != NULL ? write_series_curves(run, f, own) : -1;
         free(own);

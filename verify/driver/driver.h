@@ -342,11 +342,14 @@ typedef struct vfy_figure_spec {
     /* ROW_CURVES, ROW_POINTS: the curves (at least one that is no
        reference; ROW_POINTS: the data curves share their x, and so do the
        references), of the last row, or of each row (each_row: one figure a
-       row, suffix a template at the row that tells them apart).  Or
-       ROW_CURVES of row series: every row one curve, labelled row_label (a
-       template at the row), against its series x, one panel per item of
+       row, suffix a template at the row that tells them apart); with
+       row_label (a template at the row), each data curve once per row of
+       the run, labelled row_label, the references the figure's row's.  Or
+       ROW_CURVES of row series (row_label, no curves): every row one curve,
+       labelled row_label, against its series x, one panel per item of
        series ("AXIS LABEL=series", with its half-widths in the CSV); a row
-       without series x is left out.  band: the
+       without series x is left out.  ROW_POINTS without any data curve's
+       half-widths draws no error bars.  band: the
        data curves' half-widths drawn as a shaded band (ROW_CURVES; else
        only in the CSV); logx, logy: log axes; key_inside: where the key goes,
        in gnuplot's words (ROW_POINTS; NULL: top right). */
