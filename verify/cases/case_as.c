@@ -986,10 +986,12 @@ static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *
                 cif[k] = F.ci[k] * F.t_factor;
             }
             /* a row's colour, the same in every panel: IHS blue, EHS vermilion, at a tau0
-             * = 0.1 their lighter kin (sky blue, orange) */
+             * = 0.1 their lighter kin (sky blue, orange), dash-dotted: the steady state
+             * forgets the initial rate (E), so the two lie on one another */
             const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0;
             const int cold = vfy_values_get(&row->values, "a_tau0") != 4.0;
             c->lc = cf->lc = ehs ? (cold ? 4 : 2) : (cold ? 5 : 1);
+            c->dt = cf->dt = cold ? 4 : 1;
             c->x = x;
             c->y[0] = gx.mean, c->ci[0] = cix;
             c->y[1] = gy.mean, c->ci[1] = ciy;
