@@ -1022,7 +1022,9 @@ static const vfy_case_desc group_desc = {
     .figures = VFY_FIGURES(GROUP_FIGURE("-listed", .group_by = "model",
                                         .groups = VFY_LIST("IHS=ihs", "EHS=ehs")),
                            GROUP_FIGURE("-found", .group_by = "k"),
-                           GROUP_FIGURE("-none", .group_by = NULL)),
+                           GROUP_FIGURE("-none", .group_by = NULL),
+                           GROUP_FIGURE("-pair", .group_by = "model k",
+                                        .groups = VFY_LIST("IHS 4=ihs 4", "EHS 0.5=ehs 0.5"))),
     .title = "{case}", .notes = "notes"};
 static const vfy_case group_case = {"driver-groups", "test", "", 0, &group_desc};
 
@@ -1063,6 +1065,9 @@ static void test_points_groups(void **state)
                         "0.1,1,0.1,,\n0.1,,,2,0.2\n0.2,3,0.3,,\n0.2,,,4,0.4\n");
     assert_string_equal(group_file("-none-points.csv", buf, sizeof buf),
                         "x,Y,Y_ci\n0.1,1,0.1\n0.1,2,0.2\n0.2,3,0.3\n0.2,4,0.4\n");
+    assert_string_equal(group_file("-pair-points.csv", buf, sizeof buf),   /* two names */
+                        "x,Y (IHS 4),Y (IHS 4)_ci,Y (EHS 0.5),Y (EHS 0.5)_ci\n"
+                        "0.1,1,0.1,,\n0.1,,,2,0.2\n0.2,3,0.3,,\n");
     gp = group_file("-none.gp", buf, sizeof buf);
     assert_non_null(strstr(gp, "using 1:2:3 with yerrorbars pt 5 lc rgb '#0072b2' title 'Y " VFY_CI_LEGEND "'\n"));
     assert_non_null(strstr(gp, "set key top right\n"));

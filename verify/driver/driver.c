@@ -1445,12 +1445,31 @@ static void points_groups_free(points_groups *g)
 }
 
 /* The row's value of group_by as a text (its text, else its number with
- * %g, else ""), allocated (NULL: out of memory). */
-static char *group_value(const vfy_case_run *run, const vfy_row *row, const char *name)
+ * %g, else ""; of several names, their values joined by a space, "" when
+ * one has none), allocated (NULL: out of memory). */
+static char *group_value(const vfy_case_run *run, const vfy_row *row, const char *names)
 {
-    const char *text = vfy_row_text(row, name);
-    const double v = lookup(run, row, name);
-    return text != NULL ? vfy_strdup(text) : isnan(v) ? vfy_strdup("") : vfy_aprintf("%g", v);
+    vfy_text out = {0};
+    int none = 0;
+    for (const char *p = names; *p && !none && !out.failed; p += strspn(p, " ")) {
+        const size_t len = strcspn(p, " ");
+        char *name = vfy_aprintf("%.*s", (int)len, p);
+        const char *text = name ? vfy_row_text(row, name) : NULL;
+        const double v = name ? lookup(run, row, name) : NAN;
+        const char *sep = p == names ? "" : " ";
+        if (name == NULL)
+            out.failed = 1;
+        else if (text != NULL)
+            vfy_text_printf(&out, "%s%s", sep, text);
+        else if (!(none = isnan(v)))
+            vfy_text_printf(&out, "%s%g", sep, v);
+        free(name);
+        p += len;
+    }
+    char *value = vfy_text_take(&out);
+    if (value != NULL && none)
+        value[0] = '\0';
+    return value;
 }
 
 /* Add group value (taken: freed on failure) labelled label (likewise). */

@@ -329,8 +329,9 @@ typedef struct vfy_figure_spec {
     const char *const *series;       /* VFY_LIST, or NULL for none */
     double x_lo, x_hi;
     /* POINTS: group_by names a row value that splits the rows into groups
-       (as-steady's "model": ihs, ehs): each series is drawn once per group,
-       "LABEL (GROUP)", with a symbol of its own per group and a colour per
+       (as-steady's "model": ihs, ehs; of several names, "model a_tau0",
+       their values joined by a space: "ihs 4"): each series is drawn once
+       per group, "LABEL (GROUP)", with a symbol of its own per group and a colour per
        series (with one series, per group), as columns of its own in the
        points file (empty where a row is in another group).  A row's group is
        its text of that name, or else its number (%g).  `groups` lists them
