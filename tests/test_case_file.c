@@ -88,7 +88,7 @@ static const char good[] =
     "logy = true\n"
     "logx = true\n"
     "key_inside = bottom left\n"
-    "curve = y = 1x - 2=grw_curve_ln_f\n"
+    "curve = y = 1x - 2=grw_curve_local_slope\n"
     "ref_curve = model=grw_curve_line_1_5\n";
 
 static vfy_case_file *parse_ok(const char *text)

@@ -291,30 +291,12 @@ static int tail_shells(const vfy_row *row, int which, vfy_curve *out)
     return 0;
 }
 
-static int grw_curve_ln_f(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
+/* The curve by shell `which` (a CURVE_, the name's fixed x). */
+static int grw_curve_shells(const vfy_case_run *run, const vfy_row *row, double which,
+                            vfy_curve *out)
 {
-    (void)run, (void)x;
-    return tail_shells(row, CURVE_LN_F, out);
-}
-
-static int grw_curve_maxwellian(const vfy_case_run *run, const vfy_row *row, double x,
-                                vfy_curve *out)
-{
-    (void)run, (void)x;
-    return tail_shells(row, CURVE_MAXWELLIAN, out);
-}
-
-static int grw_curve_ln_g(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
-{
-    (void)run, (void)x;
-    return tail_shells(row, CURVE_LN_G, out);
-}
-
-static int grw_curve_exponent(const vfy_case_run *run, const vfy_row *row, double x,
-                              vfy_curve *out)
-{
-    (void)run, (void)x;
-    return tail_shells(row, CURVE_EXPONENT, out);
+    (void)run;
+    return tail_shells(row, (int)which, out);
 }
 
 /* Paper A's line y = x_slope * x - 2 over the exponent figure's x range,
@@ -401,10 +383,10 @@ const vfy_named_fn vfy_grw_named[] = {
     VFY_NAMED_METRIC_X("grw_tail_a_shells", grw_tail_metric, TAIL_A_SHELLS),
     VFY_NAMED_METRIC_X("grw_tail_a_fit_c2", grw_tail_metric, TAIL_A_FIT_C2),
     VFY_NAMED_METRIC_X("grw_tail_b_near", grw_tail_metric, TAIL_B_NEAR),
-    VFY_NAMED_CURVE("grw_curve_ln_f", grw_curve_ln_f),
-    VFY_NAMED_CURVE("grw_curve_maxwellian", grw_curve_maxwellian),
-    VFY_NAMED_CURVE("grw_curve_ln_g", grw_curve_ln_g),
-    VFY_NAMED_CURVE("grw_curve_exponent", grw_curve_exponent),
+    VFY_NAMED_CURVE_X("grw_curve_ln_f", grw_curve_shells, CURVE_LN_F),
+    VFY_NAMED_CURVE_X("grw_curve_maxwellian", grw_curve_shells, CURVE_MAXWELLIAN),
+    VFY_NAMED_CURVE_X("grw_curve_ln_g", grw_curve_shells, CURVE_LN_G),
+    VFY_NAMED_CURVE_X("grw_curve_exponent", grw_curve_shells, CURVE_EXPONENT),
     VFY_NAMED_CURVE_X("grw_curve_line_1", grw_curve_line, 1.0),
     VFY_NAMED_CURVE_X("grw_curve_line_1_25", grw_curve_line, 1.25),
     VFY_NAMED_CURVE_X("grw_curve_line_1_5", grw_curve_line, 1.5),
