@@ -1132,13 +1132,14 @@ static double asl_percent_ihs(const vfy_case_run *run, const vfy_row *row, const
     return 100.0 * (vfy_values_get(&row->values, m->a) - b) / b;
 }
 
-/* Relabel the plot's last curve: "ihs (3.5)" and what follows. */
+/* Relabel the plot's last curve: "ihs from E Eq. (3.5)" (the initial
+ * state) and what follows. */
 static void asl_label(asx_plot *pl, const vfy_row *row, const char *what)
 {
     const char *model = vfy_row_text(row, "model");
     if (pl->ncurves > 0)
         asx_relabel(pl, pl->ncurves - 1,
-                    vfy_aprintf("%s (%g)%s", model ? model : "",
+                    vfy_aprintf("%s from E Eq. (%g)%s", model ? model : "",
                                 vfy_values_get(&row->values, "initial"), what));
 }
 
