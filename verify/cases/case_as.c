@@ -653,12 +653,20 @@ static int asx_viscosity_figure(const vfy_case_run *run, int *nomem)
         c->x = a;
         c->y[0] = eta;
         c->ci[0] = ci;
-        if (vfy_values_get(&row->values, "is_ehs") == 0.0) {
+        /* styled as the plots by alpha are (asx_curve): IHS blue, EHS vermilion, BGK
+         * black; a tau0 = 4 solid (BGK dashed), 0.1 dash-dot (BGK dotted) */
+        const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0;
+        const int hot = vfy_values_get(&row->values, "a_tau0") == 4.0;
+        c->lc = ehs ? 2 : 1;
+        c->dt = hot ? 1 : 4;
+        if (!ehs) {
             double *ab = asx_own(&pl, malloc(2 * M * sizeof *ab));
             vfy_xy_curve *b = ab ? asx_curve(&pl, row, "BGK ", M, 1) : NULL;
             if (b != NULL && asx_bgk_eta(row, ab, ab + M) == 0) {
                 b->x = ab;
                 b->y[0] = ab + M;
+                b->lc = 7;
+                b->dt = hot ? 2 : 3;
             }
         }
     }
