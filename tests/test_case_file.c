@@ -89,7 +89,10 @@ static const char good[] =
     "logx = true\n"
     "key_inside = bottom left\n"
     "curve = y = 1x - 2=grw_curve_local_slope\n"
-    "ref_curve = model=grw_curve_line_1_5\n";
+    "ref_curve = model=grw_curve_line_1_5\n"
+    "only = alpha=0.5\n"
+    "panel = top\n"
+    "panel = bottom\n";
 
 static vfy_case_file *parse_ok(const char *text)
 {
@@ -172,6 +175,9 @@ static void test_every_key_reaches_its_member(void **state)
     assert_true(rows->curves->next->reference);
     assert_close(rows->curves->next->x, 1.5, 0, 0);
     assert_null(rows->curves->next->next);
+    assert_string_equal(rows->only, "alpha=0.5");
+    assert_string_equal(rows->panels[1], "bottom");
+    assert_null(rows->panels[2]);
     assert_int_equal(d->figures[3].kind, VFY_FIGURE_NONE);
     assert_null(d->label);   /* absent: NULL, as in a C description */
     vfy_case_file_free(f);
@@ -293,10 +299,11 @@ static void test_bad_input_names_file_line_and_key(void **state)
     refused(75, "row_label = {label}", "t.case:67: [figure]: row_label (a curve per row) or "
             "each_row (a figure per row), not both");
     refused(75, "", "t.case:67: [figure] of kind row curves or row points needs a curve");
+    refused(77, "only = alpha", "t.case:67: [figure] only: 'alpha' (allowed NAME=VALUE)");
     refused(69, "suffix = -rows", "t.case:67: [figure] each_row needs a suffix that tells");
     refused(61, "x_lo = 0.5\nlogy = true", "t.case:57: [figure]: curve, ref_curve, row_label, "
-            "each_row, band, logx, logy and key_inside are for kinds row curves and row "
-            "points");
+            "each_row, band, logx, logy, key_inside and only are for kinds row curves and "
+            "row points");
     refused(54, "name = on the case\nguard = after_first", "t.case:55: [case check] guard: "
             "'after_first' needs a row (allowed here at_most,");
     refused(32, "    more", "t.case:32: [metric Emax] fn: an indented line continues only a "

@@ -1085,9 +1085,9 @@ static int line_curve(const vfy_case_run *run, const vfy_row *row, double x, vfy
         return -1;
     for (size_t k = 0; k < out->count; k++) {
         out->x[k] = (double)k;
-        out->y[k] = vfy_values_get(&row->values, "y") * (double)k;
-        if (out->ci)
-            out->ci[k] = 0.5;
+        out->y[0][k] = vfy_values_get(&row->values, "y") * (double)k;
+        if (out->ci[0])
+            out->ci[0][k] = 0.5;
     }
     return 0;
 }
@@ -1099,6 +1099,27 @@ static const vfy_figure_curve row_short = {.label = "short", .fn = line_curve, .
 static const vfy_figure_curve row_mixed = {.label = "data", .fn = line_curve, .x = NAN,
                                            .next = &row_short};
 static const char *const row_rows[] = {"a: $y=1", "b: $y=2", NULL};
+/* two panels: y in the first, 10 y in the second; none for row a (left out) */
+static int panels_curve(const vfy_case_run *run, const vfy_row *row, double x, vfy_curve *out)
+{
+    (void)run, (void)x;
+    const double y = vfy_values_get(&row->values, "y");
+    if (y == 1.0)
+        return 1;
+    *out = (vfy_curve){.count = 2, .x = malloc(6 * sizeof *out->x)};   /* x, y[0], y[1] */
+    if (out->x == NULL)
+        return -1;
+    out->y[0] = out->x + 2;
+    out->y[1] = out->x + 4;
+    for (size_t k = 0; k < 2; k++) {
+        out->x[k] = (double)k;
+        out->y[0][k] = y;
+        out->y[1][k] = 10.0 * y;
+    }
+    out->lc = 3;
+    return 0;
+}
+static const vfy_figure_curve row_panels = {.label = "p", .fn = panels_curve, .x = NAN};
 #define ROW_FIGURES(...)                                                               \
     {.scene = "grw-ex3", .no_simulation = 1, .quick_rows = {.rows = row_rows},           \
      .label = "{case} {label}", .columns = "y:%g", .figures = VFY_FIGURES(__VA_ARGS__),   \
@@ -1108,6 +1129,10 @@ static const vfy_case_desc row_desc = ROW_FIGURES(
      .title = "{case} {label}", .xlabel = "x", .ylabel = "y", .logy = 1,
      .key_inside = "bottom left"},
     {.kind = VFY_FIGURE_ROW_CURVES, .suffix = "-last", .curves = &row_data, .band = 1,
+     .xlabel = "x", .ylabel = "y"},
+    {.kind = VFY_FIGURE_ROW_CURVES, .suffix = "-panels", .curves = &row_panels,
+     .row_label = "{label}", .panels = VFY_LIST("first", "second"), .xlabel = "x"},
+    {.kind = VFY_FIGURE_ROW_CURVES, .suffix = "-only", .curves = &row_data, .only = "y=1",
      .xlabel = "x", .ylabel = "y"});
 static const vfy_case row_case = {"driver-row-figures", "test", "", 0, &row_desc};
 static const vfy_case_desc row_mixed_desc = ROW_FIGURES(
@@ -1146,6 +1171,15 @@ static void test_row_figures(void **state)
     assert_non_null(strstr(buf, "'y 2'"));
     assert_null(strstr(buf, "'y 1'"));
     assert_non_null(strstr(buf, "filledcurves"));   /* the band */
+    /* panels, a row left out by its curve function; only the rows with y = 1 */
+    read_out_file("driver-row-figures-panels-curves.csv", buf, sizeof buf);
+    assert_non_null(strstr(buf, "# x,first,first_ci,second,second_ci\n# b\n0,2,0,20,0\n"));
+    assert_null(strstr(buf, "# a\n"));
+    read_out_file("driver-row-figures-panels.gp", buf, sizeof buf);
+    assert_non_null(strstr(buf, "lc rgb"));   /* the curve's colour */
+    read_out_file("driver-row-figures-only.gp", buf, sizeof buf);
+    assert_non_null(strstr(buf, "'y 1'"));
+    assert_null(strstr(buf, "'y 2'"));
     vfy_report_init(&r, NULL);
     assert_int_not_equal(vfy_run_described(&row_mixed_case, &o, &r, msg, sizeof msg), SIM_OK);
     vfy_report_free(&r);

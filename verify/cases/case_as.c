@@ -435,15 +435,6 @@ static void asx_relabel(asx_plot *pl, size_t k, char *label)
     pl->curves[k]->label = label;
 }
 
-/* The index of curve c in the plot. */
-static size_t asx_index(const asx_plot *pl, const vfy_xy_curve *c)
-{
-    size_t k = 0;
-    while (k < pl->ncurves && pl->curves[k] != c)
-        k++;
-    return k;
-}
-
 /* Figure f with the plot's curves (f's ncurves and curves set here);
  * vfy_write_xy's 0 or -1. */
 static int asx_write(const vfy_options *o, vfy_xy_figure *f, asx_plot *pl)
@@ -905,125 +896,108 @@ static vfy_guard_result asd_guard_resolved(const vfy_case_run *run, const vfy_ro
     return isnan(h) ? VFY_OMIT : fabs(d) > h ? VFY_JUDGE : VFY_GUARD_SKIP;
 }
 
+/* ------------------------------------ the marginals' figures (E Figs. 17-18) */
+
 /* BGK and local-equilibrium curves on a fine grid beside the bins. */
 enum { ASD_FINE = 121 };
 
-/* The BGK model's and the local equilibrium's marginals at points (not bin
- * averages) into the plot, for the rows of `alpha` (last: one of them). */
-static void asd_reference_curves(asx_plot *plot, const vfy_row *last, double alpha)
+/* Allocate out for count points in panels p0 .. p1 (each y, and with ci its
+ * half-widths); 0 or -1. */
+static int asd_curve_alloc(vfy_curve *out, size_t count, size_t p0, size_t p1, int ci)
 {
-    const ref_bgk_params p = vfy_bgk_params(&last->scene);
-    const double cmax = last->solver.steady.c_max;
-    double *fine = asx_own(plot, malloc(8 * ASD_FINE * sizeof *fine));
-    vfy_xy_curve *b = fine ? asx_curve(plot, last, "BGK ", ASD_FINE, 1) : NULL;
-    vfy_xy_curve *bf = b ? asx_curve(plot, last, "BGK ", ASD_FINE, 1) : NULL;
-    vfy_xy_curve *e = bf ? asx_curve(plot, last, "equilibrium ", ASD_FINE, 1) : NULL;
-    vfy_xy_curve *ef = e ? asx_curve(plot, last, "equilibrium ", ASD_FINE, 1) : NULL;
-    if (ef != NULL) {
-        double *x = fine, *bx = x + ASD_FINE, *by = bx + ASD_FINE, *xs = by + ASD_FINE;
-        double *bF = xs + ASD_FINE, *mg = bF + ASD_FINE, *mF = mg + ASD_FINE;
-        for (size_t k = 0; k < ASD_FINE; k++) {
-            x[k] = -cmax + 2.0 * cmax * (double)k / (ASD_FINE - 1);
-            xs[k] = cmax * (double)k / (ASD_FINE - 1);
-            if (ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, x[k], &bx[k], NULL, 0) != REF_OK)
-                bx[k] = NAN;
-            if (ref_bgk_steady_marginal(&p, REF_BGK_GY_PLUS, x[k], &by[k], NULL, 0) != REF_OK)
-                by[k] = NAN;
-            if (ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, xs[k], &bF[k], NULL, 0) != REF_OK)
-                bF[k] = NAN;
-            mg[k] = exp(-x[k] * x[k]) / (2.0 * sqrt(M_PI));
-            mF[k] = 4.0 * xs[k] * xs[k] * exp(-xs[k] * xs[k]) / sqrt(M_PI);
-        }
-        /* below 1e-6 the simulations hold no particle (10^9 samples at most): the
-         * curves stop there, so that E Fig. 18's range shows */
-        double *const ys[] = {bx, by, bF, mg, mF};
-        for (size_t j = 0; j < 5; j++)
-            for (size_t k = 0; k < ASD_FINE; k++)
-                if (!(ys[j][k] >= 1e-6))
-                    ys[j][k] = NAN;
-        /* one label for a model's two curves (the g panels' and F's), no row's */
-        vfy_xy_curve *const models[] = {b, bf, e, ef};
-        for (size_t j = 0; j < 4; j++)
-            asx_relabel(plot, asx_index(plot, models[j]),
-                        j < 2 ? vfy_aprintf("BGK alpha=%.1f", alpha)
-                              : vfy_strdup("equilibrium"));
-        b->lc = bf->lc = 7;   /* black and grey, whatever the rows' colours */
-        e->lc = ef->lc = 8;
-        b->x = x, b->y[0] = bx, b->y[1] = by;
-        bf->x = xs, bf->y[2] = bF;
-        e->x = x, e->y[0] = e->y[1] = mg;
-        ef->x = xs, ef->y[2] = mF;
+    const size_t per = ci ? 2 : 1;
+    *out = (vfy_curve){.count = count};
+    out->x = malloc((1 + per * (p1 - p0 + 1)) * (count ? count : 1) * sizeof *out->x);
+    if (out->x == NULL)
+        return -1;
+    for (size_t p = p0; p <= p1; p++) {
+        out->y[p] = out->x + (1 + per * (p - p0)) * count;
+        out->ci[p] = ci ? out->y[p] + count : NULL;
     }
+    return 0;
 }
 
-/* After the rows: E Figs. 17 (linear) and 18 (logarithmic) for each alpha:
- * g_x^(+), g_y^(+) and F of every row of that alpha with their half-widths,
- * the BGK model's and the local equilibrium's. */
-static sim_status as_distribution_after(vfy_case_run *run, vfy_report *r, char *msg,
-                                        size_t msglen)
+/* A row's marginals (curve functions of as-distribution's [figure]s): x = 0,
+ * g_x^(+) and g_y^(+) against the marginal bins' centres in panels 0 and 1;
+ * x = 1, F against the speed bins' in panel 2; with their Student
+ * half-widths.  A row's colour is the same in every panel: IHS blue, EHS
+ * vermilion, at a tau0 = 0.1 their lighter kin (sky blue, orange),
+ * dash-dotted: the steady state forgets the initial rate (E), so the two lie
+ * on one another.  1 for a row without them. */
+static int as_curve_marginals(const vfy_case_run *run, const vfy_row *row, double x,
+                              vfy_curve *out)
 {
-    (void)r;
-    static const double alphas[] = {0.9, 0.5};
-    int rc = 0, nomem = 0;
-    for (size_t ia = 0; ia < 2; ia++) {
-        asx_plot pl;
-        memset(&pl, 0, sizeof pl);
-        const vfy_row *last = NULL;
-        for (size_t i = 0; i < run->nrows; i++) {
-            const vfy_row *row = &run->rows[i];
-            asd_marginal gx, gy, F;
-            if (fabs(vfy_values_get(&row->values, "alpha") - alphas[ia]) > 1e-9
-                || asd_get(row, "gx", &gx) != 0 || asd_get(row, "gy", &gy) != 0
-                || asd_get(row, "F", &F) != 0)
-                continue;
-            last = row;
-            double *buf = asx_own(&pl, malloc((4 * gx.bins + 2 * F.bins) * sizeof *buf));
-            vfy_xy_curve *c = buf ? asx_curve(&pl, row, "", gx.bins, 0) : NULL;
-            vfy_xy_curve *cf = c ? asx_curve(&pl, row, "", F.bins, 0) : NULL;
-            if (cf == NULL)
-                break;
-            double *x = buf, *cix = x + gx.bins, *ciy = cix + gx.bins, *xf = ciy + gx.bins;
-            double *cif = xf + F.bins;
-            for (size_t k = 0; k < gx.bins; k++) {
-                x[k] = asd_centre(&gx, k);
-                cix[k] = gx.ci[k] * gx.t_factor;
-                ciy[k] = gy.ci[k] * gy.t_factor;
-            }
-            for (size_t k = 0; k < F.bins; k++) {
-                xf[k] = asd_centre(&F, k);
-                cif[k] = F.ci[k] * F.t_factor;
-            }
-            /* a row's colour, the same in every panel: IHS blue, EHS vermilion, at a tau0
-             * = 0.1 their lighter kin (sky blue, orange), dash-dotted: the steady state
-             * forgets the initial rate (E), so the two lie on one another */
-            const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0;
-            const int cold = vfy_values_get(&row->values, "a_tau0") != 4.0;
-            c->lc = cf->lc = ehs ? (cold ? 4 : 2) : (cold ? 5 : 1);
-            c->dt = cf->dt = cold ? 4 : 1;
-            c->x = x;
-            c->y[0] = gx.mean, c->ci[0] = cix;
-            c->y[1] = gy.mean, c->ci[1] = ciy;
-            cf->x = xf;
-            cf->y[2] = F.mean, cf->ci[2] = cif;
+    (void)run;
+    asd_marginal gx, gy, F;
+    if (asd_get(row, "gx", &gx) != 0 || asd_get(row, "gy", &gy) != 0
+        || asd_get(row, "F", &F) != 0)
+        return 1;
+    const int speed = x == 1.0;
+    const asd_marginal *g = speed ? &F : &gx;
+    if (asd_curve_alloc(out, g->bins, speed ? 2 : 0, speed ? 2 : 1, 1) != 0)
+        return -1;
+    for (size_t k = 0; k < g->bins; k++) {
+        out->x[k] = asd_centre(g, k);
+        if (speed) {
+            out->y[2][k] = F.mean[k];
+            out->ci[2][k] = F.ci[k] * F.t_factor;
+        } else {
+            out->y[0][k] = gx.mean[k];
+            out->ci[0][k] = gx.ci[k] * gx.t_factor;
+            out->y[1][k] = gy.mean[k];
+            out->ci[1][k] = gy.ci[k] * gy.t_factor;
         }
-        if (last == NULL)
-            continue;
-        asd_reference_curves(&pl, last, alphas[ia]);
-        for (int logy = 0; logy < 2; logy++) {
-            char name[96], title[160];
-            snprintf(name, sizeof name, "%s-%.1f%s", run->c->name, alphas[ia], logy ? "-log" : "");
-            snprintf(title, sizeof title, "paper E Fig. %d: the steady marginals at alpha = %.1f "
-                     "(C in units of sqrt(2T/m))", logy ? 18 : 17, alphas[ia]);
-            vfy_xy_figure f = {.name = name, .title = title,
-                                     .xlabel = "C_x (top), C_y (middle), C (bottom)",
-                                     .comment = run->comment, .logy = logy, .npanels = 3,
-                                     .ylabel = {"g_x^(+)", "g_y^(+)", "F(C)"}};
-            rc |= asx_write(run->o, &f, &pl);
-        }
-        nomem |= asx_plot_free(&pl);
     }
-    return asx_figures_written(run, rc, nomem, msg, msglen);
+    const int ehs = vfy_values_get(&row->values, "is_ehs") == 1.0;
+    const int cold = vfy_values_get(&row->values, "a_tau0") != 4.0;
+    out->lc = ehs ? (cold ? 4 : 2) : (cold ? 5 : 1);
+    out->dt = cold ? 4 : 1;
+    return 0;
 }
+
+/* The BGK model's (x = 0, 1; black) and the local equilibrium's (x = 2, 3;
+ * grey) marginals at points (not bin averages) at the row's scene: g_x^(+)
+ * and g_y^(+) (x even, panels 0 and 1) or F (x odd, panel 2). */
+enum { ASD_BGK_G, ASD_BGK_F, ASD_EQ_G, ASD_EQ_F };
+static int as_curve_model(const vfy_case_run *run, const vfy_row *row, double x,
+                          vfy_curve *out)
+{
+    (void)run;
+    const int which = (int)x, speed = which == ASD_BGK_F || which == ASD_EQ_F;
+    const ref_bgk_params p = vfy_bgk_params(&row->scene);
+    const double cmax = row->solver.steady.c_max;
+    if (asd_curve_alloc(out, ASD_FINE, speed ? 2 : 0, speed ? 2 : 1, 0) != 0)
+        return -1;
+    for (size_t k = 0; k < ASD_FINE; k++) {
+        const double c = speed ? cmax * (double)k / (ASD_FINE - 1)
+                               : -cmax + 2.0 * cmax * (double)k / (ASD_FINE - 1);
+        double y[2] = {NAN, NAN};
+        out->x[k] = c;
+        if (which == ASD_BGK_G) {
+            if (ref_bgk_steady_marginal(&p, REF_BGK_GX_PLUS, c, &y[0], NULL, 0) != REF_OK)
+                y[0] = NAN;
+            if (ref_bgk_steady_marginal(&p, REF_BGK_GY_PLUS, c, &y[1], NULL, 0) != REF_OK)
+                y[1] = NAN;
+        } else if (which == ASD_BGK_F) {
+            if (ref_bgk_steady_marginal(&p, REF_BGK_F_SPEED, c, &y[0], NULL, 0) != REF_OK)
+                y[0] = NAN;
+        } else if (which == ASD_EQ_G)
+            y[0] = y[1] = exp(-c * c) / (2.0 * sqrt(M_PI));
+        else
+            y[0] = 4.0 * c * c * exp(-c * c) / sqrt(M_PI);
+        /* below 1e-6 the simulations hold no particle (10^9 samples at most): the
+         * curves stop there, so that E Fig. 18's range shows */
+        for (size_t j = 0; j < 2; j++)
+            y[j] = y[j] >= 1e-6 ? y[j] : NAN;
+        if (speed)
+            out->y[2][k] = y[0];
+        else
+            out->y[0][k] = y[0], out->y[1][k] = y[1];
+    }
+    out->lc = which == ASD_BGK_G || which == ASD_BGK_F ? 7 : 8;   /* black, grey */
+    return 0;
+}
+
 
 /* ============================================================= as-slab */
 
@@ -1400,7 +1374,12 @@ const vfy_named_fn vfy_as_named[] = {
     VFY_NAMED_METRIC("asd_bgk_ratio", asd_bgk_ratio),
     VFY_NAMED_METRIC("asd_region", asd_region),
     VFY_NAMED_GUARD("asd_guard_resolved", asd_guard_resolved),
-    VFY_NAMED_HOOK("as_distribution_after", as_distribution_after),
+    VFY_NAMED_CURVE_X("as_curve_marginals_g", as_curve_marginals, 0),
+    VFY_NAMED_CURVE_X("as_curve_marginals_F", as_curve_marginals, 1),
+    VFY_NAMED_CURVE_X("as_curve_bgk_g", as_curve_model, ASD_BGK_G),
+    VFY_NAMED_CURVE_X("as_curve_bgk_F", as_curve_model, ASD_BGK_F),
+    VFY_NAMED_CURVE_X("as_curve_equilibrium_g", as_curve_model, ASD_EQ_G),
+    VFY_NAMED_CURVE_X("as_curve_equilibrium_F", as_curve_model, ASD_EQ_F),
     VFY_NAMED_METRIC("asl_at", asl_at),
     VFY_NAMED_METRIC("asl_at_s", asl_at_s),
     VFY_NAMED_METRIC("asl_extreme", asl_extreme),

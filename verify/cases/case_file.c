@@ -226,6 +226,8 @@ static const key_spec figure_keys[] = {
     FIGURE_KEY("ylabel", K_TEXT, ylabel),
     FIGURE_KEY("curve", K_CURVE, curves),
     FIGURE_KEY("ref_curve", K_CURVE, curves),
+    FIGURE_KEY("panel", K_LIST, panels),
+    FIGURE_KEY("only", K_TEXT, only),
     FIGURE_KEY("row_label", K_TEXT, row_label),
     FIGURE_KEY("each_row", K_BOOL, each_row),
     FIGURE_KEY("band", K_BOOL, band),
@@ -988,15 +990,24 @@ static int finish(parse_ctx *c)
         if (of_series && panels > VFY_XY_PANELS)
             return fail(c, SIM_EINVAL, NULL, "[figure] of row series: at most %d series (a "
                         "panel each)", VFY_XY_PANELS);
+        size_t npanel = 0;
+        while (g->panels != NULL && g->panels[npanel] != NULL)
+            npanel++;
+        if (npanel > VFY_XY_PANELS || (npanel && g->kind != VFY_FIGURE_ROW_CURVES))
+            return fail(c, SIM_EINVAL, NULL, "[figure]: panel (at most %d) is for kind row "
+                        "curves", VFY_XY_PANELS);
+        if (g->only && (strchr(g->only, '=') == NULL || g->only[0] == '='))
+            return fail(c, SIM_EINVAL, NULL, "[figure] only: '%s' (allowed NAME=VALUE)",
+                        g->only);
         if (by_row && !of_series && data == 0)
             return fail(c, SIM_EINVAL, NULL, "[figure] of kind row curves or row points needs "
                         "a curve (curve = LABEL=FUNCTION) or, for row curves, row_label, x "
                         "and series");
         if (!by_row && (g->curves || g->row_label || g->each_row || g->band || g->logx
-                        || g->logy || g->key_inside))
+                        || g->logy || g->key_inside || g->only))
             return fail(c, SIM_EINVAL, NULL, "[figure]: curve, ref_curve, row_label, each_row, "
-                        "band, logx, logy and key_inside are for kinds row curves and row "
-                        "points");
+                        "band, logx, logy, key_inside and only are for kinds row curves and "
+                        "row points");
         if (g->each_row && (g->suffix == NULL || strchr(g->suffix, '{') == NULL))
             return fail(c, SIM_EINVAL, NULL, "[figure] each_row needs a suffix that tells the "
                         "rows apart (a template: -{alpha})");

@@ -39,8 +39,9 @@
  *                    curve and ref_curve (LABEL=FUNCTION, one per curve, the
  *                    label ending at the last '='), row_label (each data
  *                    curve once per row; without curves, row curves of row
- *                    series: x, series one per panel), each_row, band, logx,
- *                    logy, key_inside.
+ *                    series: x, series one per panel), only (NAME=VALUE),
+ *                    panel (one per panel), each_row, band, logx, logy,
+ *                    key_inside.
  *
  * A number is a decimal number, nan, inf, -inf, or a tolerance of
  * tolerances.h by its name, with a minus sign or without (VFY_TOL_ZMAX): a

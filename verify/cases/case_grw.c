@@ -269,22 +269,22 @@ static int tail_shells(const vfy_row *row, int which, vfy_curve *out)
         switch (which) {
         case CURVE_LN_F:
             out->x[k] = c * v0;
-            out->y[k] = lnf;
-            out->ci[k] = lnf_ci;
+            out->y[0][k] = lnf;
+            out->ci[0][k] = lnf_ci;
             break;
         case CURVE_MAXWELLIAN:
             out->x[k] = c * v0;
-            out->y[k] = lnf0 < lnf_min - 2.0 ? NAN : lnf0;
+            out->y[0][k] = lnf0 < lnf_min - 2.0 ? NAN : lnf0;
             break;
         case CURVE_LN_G:   /* the fit's shells */
             out->x[k] = c;
-            out->y[k] = lnf_ci < 0.5 ? lnf + A * pow(c, b_theory) : NAN;
-            out->ci[k] = lnf_ci;
+            out->y[0][k] = lnf_ci < 0.5 ? lnf + A * pow(c, b_theory) : NAN;
+            out->ci[0][k] = lnf_ci;
             break;
         default:
             out->x[k] = k > 0 ? log(v0 * (edge[k] - edge[0])) : NAN;
-            out->y[k] = k > 0 && d > 0.0 ? log(d) : NAN;
-            out->ci[k] = k > 0 && d > 0.0 ? lnf_ci / d : NAN;
+            out->y[0][k] = k > 0 && d > 0.0 ? log(d) : NAN;
+            out->ci[0][k] = k > 0 && d > 0.0 ? lnf_ci / d : NAN;
         }
     }
     free(h);
@@ -311,8 +311,8 @@ static int grw_curve_line(const vfy_case_run *run, const vfy_row *row, double sl
         return -1;
     out->x[0] = 0.0;
     out->x[1] = log(v0 * s->steady.c_max);
-    out->y[0] = slope * out->x[0] - 2.0;
-    out->y[1] = slope * out->x[1] - 2.0;
+    out->y[0][0] = slope * out->x[0] - 2.0;
+    out->y[0][1] = slope * out->x[1] - 2.0;
     return 0;
 }
 
@@ -340,8 +340,8 @@ static int grw_curve_local_slope(const vfy_case_run *run, const vfy_row *row, do
             w = vfy_fit_tail_exponent(edge, f, fci, K, 0, lo, hi, VFY_TOL_TAILS_REL_MAX,
                                       SIM_LAMBDA_P);
         out->x[k] = edge[k];
-        out->y[k] = w.b;
-        out->ci[k] = VFY_TOL_TAILS_Z * w.b_se;
+        out->y[0][k] = w.b;
+        out->ci[0][k] = VFY_TOL_TAILS_Z * w.b_se;
     }
     free(h);
     return 0;
@@ -357,7 +357,8 @@ static int grw_curve_slope_level(const vfy_case_run *run, const vfy_row *row, do
         return -1;
     out->x[0] = 0.0;
     out->x[1] = vfy_values_get(&row->values, "c_last");
-    out->y[0] = out->y[1] = isnan(level) ? vfy_values_get(&row->values, "b_expected") : level;
+    out->y[0][0] = out->y[0][1] = isnan(level) ? vfy_values_get(&row->values, "b_expected")
+                                               : level;
     return 0;
 }
 

@@ -159,9 +159,9 @@ static int ms_curve_g(const vfy_case_run *run, const vfy_row *row, double x, vfy
     ms_tail_analyse(row, c, buf + bins, buf + 2 * bins, G, Gc, Gphi, &t);
     for (size_t k = 0; k < bins; k++) {
         out->x[k] = c[k];
-        out->y[k] = isnan(x) ? G[k] : Gphi[k];
-        if (out->ci != NULL)
-            out->ci[k] = Gc[k];
+        out->y[0][k] = isnan(x) ? G[k] : Gphi[k];
+        if (out->ci[0] != NULL)
+            out->ci[0][k] = Gc[k];
     }
     free(buf);
     return 0;

@@ -339,16 +339,16 @@ static int msg_curve(const vfy_case_run *run, const vfy_row *row, double which, 
         const double edge = sim_steady_bin_lower(s, k + 1);
         out->x[k] = phi ? c2 : edge * edge;
         if (which == MSG_PHI) {
-            out->y[k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
-            out->ci[k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
+            out->y[0][k] = sqrt(M_PI) * exp(c2) / c * f * row->res.steady_mean[(size_t)g1 + k];
+            out->ci[0][k] = sqrt(M_PI) * exp(c2) / c * fabs(f) * row->res.steady_ci[(size_t)g1 + k];
         } else if (phi) {
             static const char *const bn[] = {"b1c", "b2c", "b3c"};
             double sum = 0.0;
             for (int K = 0; K < (int)which; K++)
                 sum += vfy_values_get(&row->values, bn[K]) * laguerre_half(K + 1, c2);
-            out->y[k] = sum;
+            out->y[0][k] = sum;
         } else if (which == MSG_BETA1) {
-            out->y[k] = f * row->res.steady_mean[(size_t)b0 + k]
+            out->y[0][k] = f * row->res.steady_mean[(size_t)b0 + k]
                         / vfy_values_get(&row->values, "b1xc");
         } else {
             const double u1 = sqrt(out->x[k]), du = (u1 - u0) / 64.0;
@@ -356,7 +356,7 @@ static int msg_curve(const vfy_case_run *run, const vfy_row *row, double which, 
                 const double u = u0 + (j + 0.5) * du, l = 1.5 - u * u;
                 acc += u * u * l * l * exp(-u * u) * du;
             }
-            out->y[k] = 8.0 / (3.0 * sqrt(M_PI)) * acc;
+            out->y[0][k] = 8.0 / (3.0 * sqrt(M_PI)) * acc;
             u0 = u1;
         }
     }

@@ -325,9 +325,9 @@ static int split_curve(const vfy_case_run *run, double which, vfy_curve *out)
     for (size_t k = 0; k < levels; k++) {
         const double r = rows[k].h / h0;
         out->x[k] = rows[k].h;
-        out->y[k] = data ? fabs(own[k].dT) : which == CURVE_SLOPE_1 ? d0 * r : d0 * r * r;
+        out->y[0][k] = data ? fabs(own[k].dT) : which == CURVE_SLOPE_1 ? d0 * r : d0 * r * r;
         if (data)
-            out->ci[k] = own[k].dT_ci;
+            out->ci[0][k] = own[k].dT_ci;
     }
     free(rows);
     return 0;

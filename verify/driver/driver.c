@@ -1683,12 +1683,12 @@ static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
 
 int vfy_curve_alloc(vfy_curve *out, size_t count, int ci)
 {
-    out->count = count;
+    *out = (vfy_curve){.count = count};
     out->x = malloc((ci ? 3 : 2) * (count ? count : 1) * sizeof *out->x);
     if (out->x == NULL)
         return -1;
-    out->y = out->x + count;
-    out->ci = ci ? out->y + count : NULL;
+    out->y[0] = out->x + count;
+    out->ci[0] = ci ? out->y[0] + count : NULL;
     return 0;
 }
 
@@ -1701,22 +1701,29 @@ typedef struct row_plot {
     int *ref;
 } row_plot;
 
-/* VFY_FIGURE_ROW_CURVES: the curves as lines. */
+/* VFY_FIGURE_ROW_CURVES: the curves as lines, in the figure's panels. */
 static int row_xy(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
                   const char *title, const row_plot *pl)
 {
     vfy_xy_curve *xy = calloc(pl->n ? pl->n : 1, sizeof *xy);
     if (xy == NULL)
         return -1;
-    for (size_t i = 0; i < pl->n; i++)
+    const size_t P = f->panels ? list_length(f->panels) : 1;
+    for (size_t i = 0; i < pl->n; i++) {
+        const vfy_curve *c = &pl->c[i];
         xy[i] = (vfy_xy_curve){.label = pl->labels[i], .reference = pl->ref[i],
-                               .count = pl->c[i].count, .x = pl->c[i].x, .y = {pl->c[i].y},
-                               .ci = {pl->ref[i] ? NULL : pl->c[i].ci},
+                               .count = c->count, .x = c->x, .lc = c->lc, .dt = c->dt,
                                .band = !pl->ref[i] && f->band};
-    const vfy_xy_figure fig = {.name = name, .title = title, .xlabel = f->xlabel,
-                               .comment = run->comment, .logx = f->logx, .logy = f->logy,
-                               .npanels = 1, .ylabel = {f->ylabel}, .ncurves = pl->n,
-                               .curves = xy};
+        for (size_t p = 0; p < P; p++) {
+            xy[i].y[p] = c->y[p];
+            xy[i].ci[p] = pl->ref[i] ? NULL : c->ci[p];
+        }
+    }
+    vfy_xy_figure fig = {.name = name, .title = title, .xlabel = f->xlabel,
+                         .comment = run->comment, .logx = f->logx, .logy = f->logy,
+                         .npanels = P, .ylabel = {f->ylabel}, .ncurves = pl->n, .curves = xy};
+    for (size_t p = 0; f->panels && p < P; p++)
+        fig.ylabel[p] = f->panels[p];
     const int rc = vfy_write_xy(run->o, &fig);
     free(xy);
     return rc;
@@ -1724,7 +1731,7 @@ static int row_xy(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
 
 /* VFY_FIGURE_ROW_POINTS: the data curves as points on their shared x (with
  * no error bars when none has half-widths), the references as lines on
- * theirs; -1 when they do not share it or out of memory. */
+ * theirs (panel 0 each); -1 when they do not share it or out of memory. */
 static int row_points(vfy_case_run *run, const vfy_figure_spec *f, const char *name,
                       const char *title, const row_plot *pl)
 {
@@ -1734,26 +1741,28 @@ static int row_points(vfy_case_run *run, const vfy_figure_spec *f, const char *n
     const vfy_curve *first = NULL, *first_ref = NULL;
     double *zero = NULL;   /* the half-widths of data without them */
     size_t S = 0, R = 0, with_ci = 0;
-    int rc = arrays && names ? 0 : -1;
+    int rc = arrays && names && n > 0 ? 0 : -1;
     for (size_t i = 0; i < n && rc == 0; i++) {
-        const vfy_curve **shared = pl->ref[i] ? &first_ref : &first;
+        const vfy_curve *c = &pl->c[i], **shared = pl->ref[i] ? &first_ref : &first;
         if (*shared == NULL)
-            *shared = &pl->c[i];
-        if (pl->c[i].count != (*shared)->count)
+            *shared = c;
+        if (c->count != (*shared)->count)
             rc = -1;
         else if (pl->ref[i]) {
-            arrays[2 * n + R] = pl->c[i].y;
+            arrays[2 * n + R] = c->y[0];
             names[n + R++] = pl->labels[i];
         } else {
-            if (pl->c[i].ci == NULL && zero == NULL
-                && (zero = calloc(pl->c[i].count + 1, sizeof *zero)) == NULL)
+            if (c->ci[0] == NULL && zero == NULL
+                && (zero = calloc(c->count + 1, sizeof *zero)) == NULL)
                 rc = -1;
-            with_ci += pl->c[i].ci != NULL;
-            arrays[S] = pl->c[i].y;
-            arrays[n + S] = pl->c[i].ci ? pl->c[i].ci : zero;
+            with_ci += c->ci[0] != NULL;
+            arrays[S] = c->y[0];
+            arrays[n + S] = c->ci[0] ? c->ci[0] : zero;
             names[S++] = pl->labels[i];
         }
     }
+    if (rc == 0 && first == NULL)
+        rc = -1;   /* every data curve was left out */
     if (rc == 0) {
         const vfy_points points = {
             .name = name, .title = title, .xlabel = f->xlabel, .ylabel = f->ylabel,
@@ -1822,22 +1831,39 @@ static int write_series_curves(vfy_case_run *run, const vfy_figure_spec *f, cons
     return rc;
 }
 
+/* Whether row is one figure f draws (driver.h, only). */
+static int row_shown(const vfy_case_run *run, const vfy_figure_spec *f, const vfy_row *row)
+{
+    if (f->only == NULL)
+        return 1;
+    const char *eq = strchr(f->only, '=');
+    char *name = vfy_aprintf("%.*s", (int)(eq ? eq - f->only : 0), f->only);
+    char *value = name ? group_value(run, row, name) : NULL;
+    const int shown = value != NULL && eq != NULL && strcmp(value, eq + 1) == 0;
+    free(name);
+    free(value);
+    return shown;
+}
+
 /* Curve k of row (its label the template `label` at the row) into the
- * plot's next place; 0, or -1 when out of memory. */
+ * plot's next place, unless the row has none; 0, or -1 when out of
+ * memory. */
 static int row_plot_add(row_plot *pl, vfy_case_run *run, const vfy_row *row,
                         const vfy_figure_curve *k, const char *label)
 {
-    const size_t i = pl->n++;
+    const size_t i = pl->n;
+    const int made = k->fn(run, row, k->x, &pl->c[i]);
+    if (made == 1)
+        return 0;   /* left out */
+    pl->n++;
     pl->ref[i] = k->reference;
-    return (pl->labels[i] = vfy_expand_alloc(label, run, row)) == NULL
-                   || k->fn(run, row, k->x, &pl->c[i]) != 0
-               ? -1
-               : 0;
+    return made != 0 || (pl->labels[i] = vfy_expand_alloc(label, run, row)) == NULL ? -1 : 0;
 }
 
 /* A ROW_ figure of row (driver.h): its name the case's with the suffix
  * expanded at the row, its title (else the case's) too; with row_label,
- * each data curve once per row of the run, the references of row. */
+ * each data curve once per row of the run that the figure shows, the
+ * references of row. */
 static int write_row_figure(vfy_case_run *run, const vfy_figure_spec *f, const vfy_row *row,
                             const char *case_title)
 {
@@ -1853,7 +1879,7 @@ static int write_row_figure(vfy_case_run *run, const vfy_figure_spec *f, const v
     int rc = pl.c && pl.labels && pl.ref && name && title ? 0 : -1;
     for (size_t i = 0; f->row_label && i < run->nrows && rc == 0; i++)   /* over rows */
         for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next)
-            if (!k->reference)
+            if (!k->reference && row_shown(run, f, &run->rows[i]))
                 rc = row_plot_add(&pl, run, &run->rows[i], k, f->row_label);
     for (const vfy_figure_curve *k = f->curves; k != NULL && rc == 0; k = k->next)
         if (k->reference || !f->row_label)
@@ -2008,8 +2034,15 @@ static int write_figure(vfy_case_run *run, const vfy_figure_spec *f, const char 
     }
     if (f->kind == VFY_FIGURE_ROW_CURVES || f->kind == VFY_FIGURE_ROW_POINTS) {
         int rc = 0;
-        for (size_t i = f->each_row ? 0 : run->nrows - 1; i < run->nrows && rc == 0; i++)
-            rc = write_row_figure(run, f, &run->rows[i], title);
+        size_t last = run->nrows;   /* the last row shown: none yet */
+        for (size_t i = 0; i < run->nrows && rc == 0; i++)
+            if (row_shown(run, f, &run->rows[i])) {
+                last = i;
+                if (f->each_row)   /* each row's figure */
+                    rc = write_row_figure(run, f, &run->rows[i], title);
+            }
+        if (!f->each_row && last < run->nrows && rc == 0)   /* the last shown row's */
+            rc = write_row_figure(run, f, &run->rows[last], title);
         return rc;
     }
     char *name = vfy_aprintf("%s%s", run->c->name, f->suffix ? f->suffix : "");

@@ -50,6 +50,7 @@
 
 #include "cases.h"
 #include "ensemble.h"
+#include "figure.h"
 #include "scene.h"
 #include "scene_refs.h"
 #include "table.h"
@@ -280,20 +281,24 @@ typedef enum vfy_figure_kind {
 } vfy_figure_kind;
 
 /* A curve a row makes, for a ROW_ figure (paper A's ln f against the speed,
- * paper C's G(c)): count points x, y and their half-widths ci (NULL: none),
- * in one allocation at x that the figure frees. */
+ * paper C's G(c)): count points x, in each panel p its y[p] (NULL: not in
+ * that panel) and their half-widths ci[p] (NULL: none), in one allocation
+ * at x that the figure frees; its colour and dash (vfy_xy_curve's lc, dt;
+ * 0: the figure's default). */
 typedef struct vfy_curve {
     size_t count;
-    double *x, *y, *ci;
+    double *x, *y[VFY_XY_PANELS], *ci[VFY_XY_PANELS];
+    int lc, dt;
 } vfy_curve;
 
 /* Make row's curve into *out; x is the named function's fixed x (named.h),
- * else NaN.  Returns 0, or -1 when out of memory. */
+ * else NaN.  Returns 0; 1 when the row has no such curve (it is left out);
+ * -1 when out of memory. */
 typedef int (*vfy_curve_fn)(const vfy_case_run *run, const vfy_row *row, double x,
                             vfy_curve *out);
 
-/* Allocate *out for count points: x, y and, with ci, half-widths; returns
- * 0, or -1 when out of memory. */
+/* Allocate *out (zeroed first) for count points: x, y[0] and, with ci,
+ * ci[0]; returns 0, or -1 when out of memory. */
 int vfy_curve_alloc(vfy_curve *out, size_t count, int ci);
 
 /* One curve of a ROW_ figure, in a list in the order the figure draws them:
@@ -355,6 +360,11 @@ typedef struct vfy_figure_spec {
        only in the CSV); logx, logy: log axes; key_inside: where the key goes,
        in gnuplot's words (ROW_POINTS; NULL: top right). */
     const vfy_figure_curve *curves;
+    const char *const *panels;   /* ROW_CURVES: each panel's y label (VFY_LIST, at most
+                                    VFY_XY_PANELS), a curve's y[p] drawn in panel p;
+                                    NULL: one panel, ylabel */
+    const char *only;            /* "NAME=VALUE": only the rows whose value NAME (as
+                                    group_by reads it) is VALUE; NULL: every row */
     const char *row_label;
     int each_row, band, logx, logy;
     const char *key_inside;
