@@ -354,8 +354,8 @@ typedef struct vfy_figure_spec {
        ROW_CURVES of row series (row_label, no curves): every row one curve,
        labelled row_label, against its series x, one panel per item of
        series ("AXIS LABEL=series", with its half-widths in the CSV); a row
-       without series x is left out.  ROW_POINTS without any data curve's
-       half-widths draws no error bars.  band: the
+       without series x is left out.  ROW_POINTS draws each curve's panel 0,
+       without error bars when no data curve has half-widths.  band: the
        data curves' half-widths drawn as a shaded band (ROW_CURVES; else
        only in the CSV); logx, logy: log axes; key_inside: where the key goes,
        in gnuplot's words (ROW_POINTS; NULL: top right). */
