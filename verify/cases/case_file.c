@@ -477,6 +477,21 @@ static int set_fixed_x(parse_ctx *c, const key_spec *table, void *base, const ch
     return 1;
 }
 
+/* A figure's kind by its word. */
+static int set_kind(parse_ctx *c, const char *key, vfy_figure_kind *kind, const char *value)
+{
+    static const struct {
+        const char *word;
+        vfy_figure_kind kind;
+    } kinds[] = {{"curves", VFY_FIGURE_CURVES}, {"points", VFY_FIGURE_POINTS},
+                 {"row curves", VFY_FIGURE_ROW_CURVES}, {"row points", VFY_FIGURE_ROW_POINTS}};
+    for (size_t i = 0; i < sizeof kinds / sizeof *kinds; i++)
+        if (strcmp(value, kinds[i].word) == 0)
+            return *kind = kinds[i].kind, 1;
+    return fail(c, SIM_EINVAL, key, "'%s' (allowed curves, points, row curves, row points)",
+                value);
+}
+
 /* "LABEL=FUNCTION" (the label may hold '=': the last one ends it) appended
  * to the figure's list at *list; key ref_curve makes a reference. */
 static int add_curve(parse_ctx *c, const char *key, const vfy_figure_curve **list,
@@ -549,18 +564,8 @@ static int apply_key(parse_ctx *c, const key_spec *table, void *base, const char
             return fail(c, SIM_EINVAL, key, "'%s' (allowed true, false)", value);
         *(int *)at = strcmp(value, "true") == 0;
         return 1;
-    case K_KIND: {
-        static const struct {
-            const char *word;
-            vfy_figure_kind kind;
-        } kinds[] = {{"curves", VFY_FIGURE_CURVES}, {"points", VFY_FIGURE_POINTS},
-                     {"row curves", VFY_FIGURE_ROW_CURVES}, {"row points", VFY_FIGURE_ROW_POINTS}};
-        for (size_t i = 0; i < sizeof kinds / sizeof *kinds; i++)
-            if (strcmp(value, kinds[i].word) == 0)
-                return *(vfy_figure_kind *)at = kinds[i].kind, 1;
-        return fail(c, SIM_EINVAL, key, "'%s' (allowed curves, points, row curves, row points)",
-                    value);
-    }
+    case K_KIND:
+        return set_kind(c, key, (vfy_figure_kind *)at, value);
     case K_CURVE:
         return add_curve(c, key, (const vfy_figure_curve **)at, value);
     case K_BATCHES: {
@@ -930,6 +935,53 @@ static int finish_sweep(parse_ctx *c, vfy_sweep *sweep, const sweep_builder *b)
     return keys != NULL;
 }
 
+/* Whether figure g's keys go together (case_file.h); else a message. */
+static int figure_ok(parse_ctx *c, const vfy_figure_spec *g)
+{
+    if (g->kind == VFY_FIGURE_NONE)
+        return fail(c, SIM_EINVAL, NULL, "[figure] needs kind");
+    const int by_row = g->kind == VFY_FIGURE_ROW_CURVES || g->kind == VFY_FIGURE_ROW_POINTS;
+    int data = 0;
+    for (const vfy_figure_curve *k = g->curves; k != NULL; k = k->next)
+        data += !k->reference;
+    const int of_series = g->row_label != NULL && g->curves == NULL;
+    if (of_series && (g->kind != VFY_FIGURE_ROW_CURVES || g->each_row || g->x == NULL
+                      || g->series == NULL))
+        return fail(c, SIM_EINVAL, NULL, "[figure] of row series (row_label, no curve) is "
+                    "of kind row curves and needs x and series, and no each_row");
+    if (g->row_label != NULL && g->each_row)
+        return fail(c, SIM_EINVAL, NULL, "[figure]: row_label (a curve per row) or each_row "
+                    "(a figure per row), not both");
+    size_t panels = 0;
+    while (g->series != NULL && g->series[panels] != NULL)
+        panels++;
+    if (of_series && panels > VFY_XY_PANELS)
+        return fail(c, SIM_EINVAL, NULL, "[figure] of row series: at most %d series (a "
+                    "panel each)", VFY_XY_PANELS);
+    size_t npanel = 0;
+    while (g->panels != NULL && g->panels[npanel] != NULL)
+        npanel++;
+    if (npanel > VFY_XY_PANELS || (npanel && g->kind != VFY_FIGURE_ROW_CURVES))
+        return fail(c, SIM_EINVAL, NULL, "[figure]: panel (at most %d) is for kind row "
+                    "curves", VFY_XY_PANELS);
+    if (g->only && (strchr(g->only, '=') == NULL || g->only[0] == '='))
+        return fail(c, SIM_EINVAL, NULL, "[figure] only: '%s' (allowed NAME=VALUE)",
+                    g->only);
+    if (by_row && !of_series && data == 0)
+        return fail(c, SIM_EINVAL, NULL, "[figure] of kind row curves or row points needs "
+                    "a curve (curve = LABEL=FUNCTION) or, for row curves, row_label, x "
+                    "and series");
+    if (!by_row && (g->curves || g->row_label || g->each_row || g->band || g->logx
+                    || g->logy || g->key_inside || g->only))
+        return fail(c, SIM_EINVAL, NULL, "[figure]: curve, ref_curve, row_label, each_row, "
+                    "band, logx, logy, key_inside and only are for kinds row curves and "
+                    "row points");
+    if (g->each_row && (g->suffix == NULL || strchr(g->suffix, '{') == NULL))
+        return fail(c, SIM_EINVAL, NULL, "[figure] each_row needs a suffix that tells the "
+                    "rows apart (a template: -{alpha})");
+    return 1;
+}
+
 /* Check the records (their header's line in messages) and set the
  * description's arrays. */
 static int finish(parse_ctx *c)
@@ -969,48 +1021,8 @@ static int finish(parse_ctx *c)
     }
     for (size_t i = 0; i < c->figures.n; i++) {
         at_origin(c, c->figures.lines[i]);
-        const vfy_figure_spec *g = c->figures.v[i];
-        if (g->kind == VFY_FIGURE_NONE)
-            return fail(c, SIM_EINVAL, NULL, "[figure] needs kind");
-        const int by_row = g->kind == VFY_FIGURE_ROW_CURVES || g->kind == VFY_FIGURE_ROW_POINTS;
-        int data = 0;
-        for (const vfy_figure_curve *k = g->curves; k != NULL; k = k->next)
-            data += !k->reference;
-        const int of_series = g->row_label != NULL && g->curves == NULL;
-        if (of_series && (g->kind != VFY_FIGURE_ROW_CURVES || g->each_row || g->x == NULL
-                          || g->series == NULL))
-            return fail(c, SIM_EINVAL, NULL, "[figure] of row series (row_label, no curve) is "
-                        "of kind row curves and needs x and series, and no each_row");
-        if (g->row_label != NULL && g->each_row)
-            return fail(c, SIM_EINVAL, NULL, "[figure]: row_label (a curve per row) or each_row "
-                        "(a figure per row), not both");
-        size_t panels = 0;
-        while (g->series != NULL && g->series[panels] != NULL)
-            panels++;
-        if (of_series && panels > VFY_XY_PANELS)
-            return fail(c, SIM_EINVAL, NULL, "[figure] of row series: at most %d series (a "
-                        "panel each)", VFY_XY_PANELS);
-        size_t npanel = 0;
-        while (g->panels != NULL && g->panels[npanel] != NULL)
-            npanel++;
-        if (npanel > VFY_XY_PANELS || (npanel && g->kind != VFY_FIGURE_ROW_CURVES))
-            return fail(c, SIM_EINVAL, NULL, "[figure]: panel (at most %d) is for kind row "
-                        "curves", VFY_XY_PANELS);
-        if (g->only && (strchr(g->only, '=') == NULL || g->only[0] == '='))
-            return fail(c, SIM_EINVAL, NULL, "[figure] only: '%s' (allowed NAME=VALUE)",
-                        g->only);
-        if (by_row && !of_series && data == 0)
-            return fail(c, SIM_EINVAL, NULL, "[figure] of kind row curves or row points needs "
-                        "a curve (curve = LABEL=FUNCTION) or, for row curves, row_label, x "
-                        "and series");
-        if (!by_row && (g->curves || g->row_label || g->each_row || g->band || g->logx
-                        || g->logy || g->key_inside || g->only))
-            return fail(c, SIM_EINVAL, NULL, "[figure]: curve, ref_curve, row_label, each_row, "
-                        "band, logx, logy, key_inside and only are for kinds row curves and "
-                        "row points");
-        if (g->each_row && (g->suffix == NULL || strchr(g->suffix, '{') == NULL))
-            return fail(c, SIM_EINVAL, NULL, "[figure] each_row needs a suffix that tells the "
-                        "rows apart (a template: -{alpha})");
+        if (!figure_ok(c, c->figures.v[i]))
+            return 0;
     }
     vfy_case_desc *d = &f->d;
     d->partners = records(c, &c->partners, sizeof *d->partners);
