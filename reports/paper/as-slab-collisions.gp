@@ -11,8 +11,8 @@ set grid
 set offsets 0, 0, graph 0.05, graph 0.05
 set xlabel 't/tau0'
 set ylabel 's, s''/beta'
-plot 'reports/paper/as-slab-collisions-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc rgb '#0072b2' title 'ihs (3.5)', 'reports/paper/as-slab-collisions-curves.csv' index 1 using 1:2 with lines lw 1.5 dt 2 lc rgb '#0072b2' title 'ehs (3.5)', 'reports/paper/as-slab-collisions-curves.csv' index 2 using 1:2 with lines lw 1.5 dt 1 lc rgb '#d55e00' title 'ihs (3.6)', 'reports/paper/as-slab-collisions-curves.csv' index 3 using 1:2 with lines lw 1.5 dt 2 lc rgb '#d55e00' title 'ehs (3.6)'
+plot 'reports/paper/as-slab-collisions-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc rgb '#0072b2' title 'ihs from E Eq. (3.5)', 'reports/paper/as-slab-collisions-curves.csv' index 1 using 1:2 with lines lw 1.5 dt 2 lc rgb '#0072b2' title 'ehs from E Eq. (3.5)', 'reports/paper/as-slab-collisions-curves.csv' index 2 using 1:2 with lines lw 1.5 dt 1 lc rgb '#d55e00' title 'ihs from E Eq. (3.6)', 'reports/paper/as-slab-collisions-curves.csv' index 3 using 1:2 with lines lw 1.5 dt 2 lc rgb '#d55e00' title 'ehs from E Eq. (3.6)'
 set xlabel 't/tau0'
 set ylabel 's''/s'
-plot 'reports/paper/as-slab-collisions-curves.csv' index 1 using 1:4 with lines lw 1.5 dt 2 lc rgb '#0072b2' title 'ehs (3.5)', 'reports/paper/as-slab-collisions-curves.csv' index 3 using 1:4 with lines lw 1.5 dt 2 lc rgb '#d55e00' title 'ehs (3.6)'
+plot 'reports/paper/as-slab-collisions-curves.csv' index 1 using 1:4 with lines lw 1.5 dt 2 lc rgb '#0072b2' title 'ehs from E Eq. (3.5)', 'reports/paper/as-slab-collisions-curves.csv' index 3 using 1:4 with lines lw 1.5 dt 2 lc rgb '#d55e00' title 'ehs from E Eq. (3.6)'
 unset multiplot
