@@ -1554,6 +1554,10 @@ typedef struct points_plan {
 static int points_plan_make(const vfy_case_run *run, const vfy_figure_spec *f, points_plan *pl)
 {
     static const int group_pt[] = {7, 6, 2, 5, 4, 9, 8, 3};   /* filled, open, cross, ... */
+    /* the series' colours (figure.h's palette): blue, vermilion, reddish purple,
+     * then bluish green before orange, which a fourth series would confuse with
+     * the vermilion of the second */
+    static const int series_lc[] = {1, 2, 3, 6, 5, 4, 7, 8};
     const size_t nseries = list_length(f->series), ncurves = list_length(f->refs);
     *pl = (points_plan){.nseries = nseries, .ncurves = ncurves};
     pl->names = calloc(nseries + ncurves + 1, sizeof *pl->names);
@@ -1587,7 +1591,8 @@ static int points_plan_make(const vfy_case_run *run, const vfy_figure_spec *f, p
                 return -1;
             if (grouped) {
                 pl->pt[k] = group_pt[g % (sizeof group_pt / sizeof group_pt[0])];
-                pl->lc[k] = 1 + (int)(nseries == 1 ? g : j);
+                pl->lc[k] = nseries == 1 ? 1 + (int)g
+                                         : series_lc[j % (sizeof series_lc / sizeof *series_lc)];
             }
         }
     return 0;
