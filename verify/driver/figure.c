@@ -438,6 +438,8 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
     fprintf(f, "set title '%s'\nset xlabel 'CPU seconds (all threads)'\n"
                "set ylabel '%s'\nset logscale xy\nset format y '%%.0e'\n"
                "set grid\nset key outside right top\n"
+               /* room for the labels of the points at the edges */
+               "set offsets graph 0.04, graph 0.12, graph 0.1, graph 0.04\n"
                "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
             gp_text(title), gp_text(ylabel));
     for (size_t s = 0; s < nseries; s++)
@@ -449,7 +451,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
     if (pred->count > 0)
         fprintf(f, ", '%s' index %zu using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' "
                    "title 'predicted cheapest per target (model)', '' index %zu using 1:2:4 "
-                   "with labels offset 0,-1.4 font ',7' tc rgb 'black' notitle",
+                   "with labels offset -1.2,-0.9 font ',7' right tc rgb 'black' notitle",
                 data, nseries, nseries);
     for (size_t i = 0; i < VFY_WP_TARGETS; i++)
         fprintf(f, ", %g with lines dt 2 lc rgb 'gray50' %s", vfy_wp_targets[i],

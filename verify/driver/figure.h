@@ -150,10 +150,10 @@ void vfy_wp_prediction_free(vfy_wp_prediction *pred);
 
 /* out_dir/<name>-points.csv (one gnuplot index block per series: cpu_s,
  * Err, Err_model, label (labels[i] of point i); then the predictions) and
- * out_dir/<name>.gp: Err
- * against CPU seconds, log-log, each series with its model dotted, the
- * targets as grey lines, the predicted cheapest points as open circles;
- * rendered to <name>.png when gnuplot is installed.  Both files start with
+ * out_dir/<name>.gp: Err against CPU seconds, log-log, each series with its
+ * model dotted, the targets as grey lines, the predicted cheapest points as
+ * open circles labelled below left, the axes extended to leave room for the
+ * labels at the edges; rendered to <name>.png when gnuplot is installed.  Both files start with
  * the comment lines (the provenance).  Returns 0 or -1. */
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
                              const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
