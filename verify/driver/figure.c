@@ -442,12 +442,14 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
                "set offsets graph 0.04, graph 0.12, graph 0.1, graph 0.04\n"
                "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
             gp_text(title), gp_text(ylabel));
-    for (size_t s = 0; s < nseries; s++)
-        fprintf(f, "%s '%s' index %zu using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc %zu "
-                   "title '%s', '' index %zu using 1:3 with lines dt 3 lw 2 lc %zu notitle, "
+    for (size_t s = 0; s < nseries; s++) {   /* each series its colour of the palette */
+        const char *lc = palette(1 + (int)s);
+        fprintf(f, "%s '%s' index %zu using 1:2 with linespoints pt 7 ps 1.1 lw 2 lc rgb '%s' "
+                   "title '%s', '' index %zu using 1:3 with lines dt 3 lw 2 lc rgb '%s' notitle, "
                    "'' index %zu using 1:2:4 with labels offset 0.6,0.7 font ',7' left "
-                   "tc lt %zu notitle",
-                s ? "," : "", data, s, s + 1, gp_text(series[s].title), s, s + 1, s, s + 1);
+                   "tc rgb '%s' notitle",
+                s ? "," : "", data, s, lc, gp_text(series[s].title), s, lc, s, lc);
+    }
     if (pred->count > 0)
         fprintf(f, ", '%s' index %zu using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' "
                    "title 'predicted cheapest per target (model)', '' index %zu using 1:2:4 "
