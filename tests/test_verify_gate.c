@@ -181,8 +181,8 @@ static void test_differences_name_their_check(void **state)
 }
 
 /* Every description's data words are well formed: each derived setting is
- * KEY=REFERENCE[:FORMAT] with a scene key and a value reference of the
- * registry, and the requirements hold on the case's own first scene (so
+ * KEY=NAME[:FORMAT] with a scene key and a value reference of the registry
+ * or a row metric of the case (driver.h), and the requirements hold on the case's own first scene (so
  * none is malformed, and none refuses the shipped scenes). */
 static void test_derived_and_required_words(void **state)
 {
@@ -202,10 +202,14 @@ static void test_derived_and_required_words(void **state)
             if (eq != NULL)
                 *eq = '\0';
             const vfy_reference *ref = eq ? vfy_reference_find(eq + 1) : NULL;
-            if (eq == NULL || vfy_scene_key_class(word) == VFY_KEY_UNKNOWN || ref == NULL
-                || ref->kind != VFY_REF_VALUE || (colon && colon[1] != '%'))
-                fail_msg("%s: derived word '%.*s' is not KEY=REFERENCE[:FORMAT]", c->name,
-                         (int)len, w);
+            int metric = 0;
+            for (const vfy_metric *m = c->desc->metrics; eq && m && m->name; m++)
+                metric |= strcmp(m->name, eq + 1) == 0;
+            if (eq == NULL || vfy_scene_key_class(word) == VFY_KEY_UNKNOWN
+                || ((ref == NULL || ref->kind != VFY_REF_VALUE) && !metric)
+                || (colon && colon[1] != '%'))
+                fail_msg("%s: derived word '%.*s' is not KEY=NAME[:FORMAT]", c->name, (int)len,
+                         w);
             derived++;
             w += len;
         }
