@@ -901,22 +901,6 @@ static vfy_guard_result asd_guard_resolved(const vfy_case_run *run, const vfy_ro
 /* BGK and local-equilibrium curves on a fine grid beside the bins. */
 enum { ASD_FINE = 121 };
 
-/* Allocate out for count points in panels p0 .. p1 (each y, and with ci its
- * half-widths); 0 or -1. */
-static int asd_curve_alloc(vfy_curve *out, size_t count, size_t p0, size_t p1, int ci)
-{
-    const size_t per = ci ? 2 : 1;
-    *out = (vfy_curve){.count = count};
-    out->x = malloc((1 + per * (p1 - p0 + 1)) * (count ? count : 1) * sizeof *out->x);
-    if (out->x == NULL)
-        return -1;
-    for (size_t p = p0; p <= p1; p++) {
-        out->y[p] = out->x + (1 + per * (p - p0)) * count;
-        out->ci[p] = ci ? out->y[p] + count : NULL;
-    }
-    return 0;
-}
-
 /* A row's marginals (curve functions of as-distribution's [figure]s): x = 0,
  * g_x^(+) and g_y^(+) against the marginal bins' centres in panels 0 and 1;
  * x = 1, F against the speed bins' in panel 2; with their Student
@@ -934,7 +918,7 @@ static int as_curve_marginals(const vfy_case_run *run, const vfy_row *row, doubl
         return 1;
     const int speed = x == 1.0;
     const asd_marginal *g = speed ? &F : &gx;
-    if (asd_curve_alloc(out, g->bins, speed ? 2 : 0, speed ? 2 : 1, 1) != 0)
+    if (vfy_curve_alloc_panels(out, g->bins, speed ? 2 : 0, speed ? 2 : 1, 1) != 0)
         return -1;
     for (size_t k = 0; k < g->bins; k++) {
         out->x[k] = asd_centre(g, k);
@@ -966,7 +950,7 @@ static int as_curve_model(const vfy_case_run *run, const vfy_row *row, double x,
     const int which = (int)x, speed = which == ASD_BGK_F || which == ASD_EQ_F;
     const ref_bgk_params p = vfy_bgk_params(&row->scene);
     const double cmax = row->solver.steady.c_max;
-    if (asd_curve_alloc(out, ASD_FINE, speed ? 2 : 0, speed ? 2 : 1, 0) != 0)
+    if (vfy_curve_alloc_panels(out, ASD_FINE, speed ? 2 : 0, speed ? 2 : 1, 0) != 0)
         return -1;
     for (size_t k = 0; k < ASD_FINE; k++) {
         const double c = speed ? cmax * (double)k / (ASD_FINE - 1)

@@ -1686,15 +1686,23 @@ static int write_points(vfy_case_run *run, const vfy_figure_spec *f)
 
 /* ------------------------------------------------------------ row figures */
 
-int vfy_curve_alloc(vfy_curve *out, size_t count, int ci)
+int vfy_curve_alloc_panels(vfy_curve *out, size_t count, size_t p0, size_t p1, int ci)
 {
+    const size_t per = ci ? 2 : 1;
     *out = (vfy_curve){.count = count};
-    out->x = malloc((ci ? 3 : 2) * (count ? count : 1) * sizeof *out->x);
+    out->x = malloc((1 + per * (p1 - p0 + 1)) * (count ? count : 1) * sizeof *out->x);
     if (out->x == NULL)
         return -1;
-    out->y[0] = out->x + count;
-    out->ci[0] = ci ? out->y[0] + count : NULL;
+    for (size_t p = p0; p <= p1; p++) {
+        out->y[p] = out->x + (1 + per * (p - p0)) * count;
+        out->ci[p] = ci ? out->y[p] + count : NULL;
+    }
     return 0;
+}
+
+int vfy_curve_alloc(vfy_curve *out, size_t count, int ci)
+{
+    return vfy_curve_alloc_panels(out, count, 0, 0, ci);
 }
 
 /* The curves a ROW_ figure draws, made: n of them, each with its label and

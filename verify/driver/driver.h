@@ -301,6 +301,9 @@ typedef int (*vfy_curve_fn)(const vfy_case_run *run, const vfy_row *row, double 
  * ci[0]; returns 0, or -1 when out of memory. */
 int vfy_curve_alloc(vfy_curve *out, size_t count, int ci);
 
+/* The same for panels p0 .. p1 (p1 < VFY_XY_PANELS): y[p] and ci[p] each. */
+int vfy_curve_alloc_panels(vfy_curve *out, size_t count, size_t p0, size_t p1, int ci);
+
 /* One curve of a ROW_ figure, in a list in the order the figure draws them:
  * its label (a template at the row), its function, and whether it is a
  * reference (a model, drawn dashed, without half-widths). */
