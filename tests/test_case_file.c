@@ -310,6 +310,9 @@ static void test_bad_input_names_file_line_and_key(void **state)
             "text value");
     refused(31, "fn max_rel_err", "t.case:31: not a [section] header");
     refused(3, "", "t.case: [case] needs suite and summary");
+    refused(12, "derived = scene.t_end=no_such_value", "t.case: [case] derived: "
+            "'scene.t_end=no_such_value' (allowed KEY=NAME[:FORMAT]");
+    refused(12, "derived = no.key=Emax", "t.case: [case] derived: 'no.key=Emax'");
     char long_line[260];
     memset(long_line, 'x', sizeof long_line - 1);
     long_line[sizeof long_line - 1] = '\0';

@@ -30,6 +30,8 @@
 #include <string.h>
 
 #include "figure.h"
+#include "references.h"
+#include "scene_ini.h"
 #include "text.h"
 
 #define MAX_FILE_BYTES (1u << 20)
@@ -935,6 +937,36 @@ static int finish_sweep(parse_ctx *c, vfy_sweep *sweep, const sweep_builder *b)
     return keys != NULL;
 }
 
+/* Whether each word of [case] derived is KEY=NAME[:FORMAT], KEY a scene key
+ * and NAME a value reference or a [metric] of the file (driver.h); else a
+ * message: a name that is neither would set nothing. */
+static int derived_ok(parse_ctx *c, const char *words)
+{
+    for (const char *w = words + strspn(words, " "); *w; w += strspn(w, " ")) {
+        const size_t len = strcspn(w, " ");
+        char word[200];
+        snprintf(word, sizeof word, "%.*s", (int)len, w);
+        char *eq = strchr(word, '='), *colon = eq ? strchr(eq, ':') : NULL;
+        if (colon != NULL)
+            *colon = '\0';
+        int known = 0;
+        if (eq != NULL) {
+            *eq = '\0';
+            const vfy_reference *ref = vfy_reference_find(eq + 1);
+            known = ref != NULL && ref->kind == VFY_REF_VALUE;
+            for (size_t i = 0; i < c->metrics.n && !known; i++)
+                known = strcmp(((const vfy_metric *)c->metrics.v[i])->name, eq + 1) == 0;
+        }
+        if (eq == NULL || vfy_scene_key_class(word) == VFY_KEY_UNKNOWN || !known
+            || (colon != NULL && colon[1] != '%'))
+            return fail(c, SIM_EINVAL, NULL, "[case] derived: '%.*s' (allowed "
+                        "KEY=NAME[:FORMAT], NAME a value reference or a [metric] of the file)",
+                        (int)len, w);
+        w += len;
+    }
+    return 1;
+}
+
 /* Whether figure g's keys go together (case_file.h); else a message. */
 static int figure_ok(parse_ctx *c, const vfy_figure_spec *g)
 {
@@ -999,6 +1031,8 @@ static int finish(parse_ctx *c)
     at_origin(c, -1);
     if (f->c.suite == NULL || f->c.summary == NULL)
         return fail(c, SIM_EINVAL, NULL, "[case] needs suite and summary");
+    if (f->d.derived != NULL && !derived_ok(c, f->d.derived))
+        return 0;
     for (size_t i = 0; i < c->metrics.n + c->case_metrics.n; i++) {
         const int own_rows = i < c->metrics.n;
         const vfy_metric *m = own_rows ? c->metrics.v[i] : c->case_metrics.v[i - c->metrics.n];
