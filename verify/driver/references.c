@@ -247,10 +247,13 @@ const vfy_reference *vfy_reference_at(size_t i)
     return i < vfy_reference_count() ? &registry[i] : NULL;
 }
 
-/* Whether `name` is one of the space-separated words of names. */
+/* Whether `name` is one of the space-separated words of names (never the
+ * empty word). */
 static int names_word(const char *names, const char *name)
 {
     size_t len = strlen(name);
+    if (len == 0)
+        return 0;
     for (const char *p = strstr(names, name); p; p = strstr(p + 1, name))
         if ((p == names || p[-1] == ' ') && (p[len] == ' ' || p[len] == '\0'))
             return 1;
