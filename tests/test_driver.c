@@ -1217,6 +1217,32 @@ static void test_points_headers_quoted(void **state)
                            "\n\"c, reduced\",\"the \"\"model\"\"\"\n"));
 }
 
+/* A curve with a gap (a y it has no value for between two it has, as an
+ * empty histogram bin) is read through cell(), for gnuplot to break its line
+ * there rather than draw across, and marks its points (a lone bin between
+ * two gaps stays seen); a curve that only ends early is drawn as before. */
+static void test_xy_gap_breaks_the_line(void **state)
+{
+    (void)state;
+    const double x[4] = {1.0, 2.0, 3.0, 4.0}, gappy[4] = {1.0, NAN, 3.0, 4.0},
+                 short_y[4] = {1.0, 2.0, NAN, NAN};
+    vfy_xy_curve curves[2] = {{.label = "histogram", .count = 4, .x = x, .y = {gappy}},
+                              {.label = "reference", .count = 4, .x = x, .y = {short_y},
+                               .reference = 1}};
+    const vfy_xy_figure fig = {.name = "driver-gap", .title = "gap", .xlabel = "c",
+                               .comment = "comment", .npanels = 1, .ylabel = {"ln f"},
+                               .ncurves = 2, .curves = curves};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_xy(&o, &fig), 0);
+    char buf[4096];
+    read_out_file("driver-gap.gp", buf, sizeof buf);
+    assert_non_null(strstr(buf, "\ncell(k) = strlen(strcol(k)) ? real(strcol(k)) : NaN\n"));
+    assert_non_null(strstr(buf, "index 0 using 1:(cell(2)) with linespoints pt 7 ps 0.3 lw 1.5 "));
+    assert_non_null(strstr(buf, "index 1 using 1:2 with lines lw 2 dt 2 "));
+    read_out_file("driver-gap-curves.csv", buf, sizeof buf);
+    assert_non_null(strstr(buf, "\n1,1,0\n2,,\n3,3,0\n"));   /* the gap: an empty cell */
+}
+
 /* A grid of xy panels (figure.h, ncolumns): each column draws its own
  * curves under its title, the rows of panels on one y scale each, the key
  * once below the grid from the first panel's curves, with their colours
@@ -1294,6 +1320,7 @@ int main(void)
         cmocka_unit_test(test_points_groups), cmocka_unit_test(test_points_headers_quoted),
         cmocka_unit_test(test_row_figures),
         cmocka_unit_test(test_xy_grid),
+        cmocka_unit_test(test_xy_gap_breaks_the_line),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

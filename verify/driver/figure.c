@@ -200,6 +200,12 @@ static const char *axis_label(const vfy_xy_figure *f, size_t p)
     return f->yaxis[p] != NULL ? f->yaxis[p] : f->ylabel[p];
 }
 
+/* How an xy script reads a cell of <name>-curves.csv: an empty one (a y the
+ * curve has no value for, such as an empty histogram bin) is a gap that
+ * breaks the curve's line. Read as a column gnuplot would skip the row and
+ * draw the line across; read as a string it is undefined there. */
+#define XY_CELL "cell(k) = strlen(strcol(k)) ? real(strcol(k)) : NaN\n"
+
 /* <name>-curves.csv of vfy_write_xy, its path into data. */
 static int xy_data(const vfy_options *o, const vfy_xy_figure *f, char *data)
 {
@@ -233,13 +239,45 @@ static int xy_data(const vfy_options *o, const vfy_xy_figure *f, char *data)
     return vfy_file_commit(out, tmp, data, 1);
 }
 
+/* Whether curve c has a gap, a y it has no value for between two it has
+ * (in any of the figure's panels). */
+static int xy_has_gap(const vfy_xy_figure *f, const vfy_xy_curve *c)
+{
+    for (size_t p = 0; p < f->npanels; p++) {
+        int seen = 0, missing = 0;
+        for (size_t i = 0; c->y[p] != NULL && i < c->count; i++) {
+            if (!isfinite(c->x[i]))
+                continue;
+            if (!isfinite(c->y[p][i]))
+                missing = seen;
+            else if (missing)
+                return 1;
+            else
+                seen = 1;
+        }
+    }
+    return 0;
+}
+
+/* XY_CELL, where one of f's curves has a gap. */
+static void xy_cell(FILE *out, const vfy_xy_figure *f)
+{
+    for (size_t j = 0; j < f->ncurves; j++)
+        if (xy_has_gap(f, &f->curves[j])) {
+            fputs(XY_CELL, out);
+            return;
+        }
+}
+
 /* Curve j's style: "with lines lw .. dt .. lc .. title '..'" (notitle
- * unless titled). */
+ * unless titled); a curve with gaps also marks its points, so that a value
+ * between two gaps (a lone histogram bin) is seen. */
 static void xy_style(FILE *out, const vfy_xy_figure *f, size_t j, int titled)
 {
     const vfy_xy_curve *c = &f->curves[j];
     const int dt = c->dt > 0 ? c->dt : c->reference ? 2 : 1;
-    fprintf(out, "with lines lw %s dt %d ", c->reference ? "2" : "1.5", dt);
+    fprintf(out, "with %s lw %s dt %d ", xy_has_gap(f, c) ? "linespoints pt 7 ps 0.3" : "lines",
+            c->reference ? "2" : "1.5", dt);
     if (c->lc > 0)
         fprintf(out, "lc rgb '%s'", palette(c->lc));
     else
@@ -250,21 +288,29 @@ static void xy_style(FILE *out, const vfy_xy_figure *f, size_t j, int titled)
         fputs(" notitle", out);
 }
 
-/* Curve j of f in panel p: " 'data' index j using 1:COL with lines ...". */
+/* Curve j of f in panel p: " 'data' index j using 1:COL with lines ...",
+ * its columns read through cell() (XY_CELL) where it has gaps. */
 static void xy_plot_curve(FILE *out, const vfy_xy_figure *f, const char *data, size_t j,
                           size_t p, int titled)
 {
     const vfy_xy_curve *c = &f->curves[j];
+    const int gaps = xy_has_gap(f, c);
+    const size_t y = 2 + 2 * p, ci = 3 + 2 * p;
     if (c->band && c->ci[p] != NULL) {   /* the band first, under its curve */
-        fprintf(out, " '%s' index %zu using 1:($%zu-$%zu):($%zu+$%zu) with filledcurves "
-                     "fs transparent solid 0.25 noborder ",
-                data, j, 2 + 2 * p, 3 + 2 * p, 2 + 2 * p, 3 + 2 * p);
+        if (gaps)
+            fprintf(out, " '%s' index %zu using 1:(cell(%zu)-cell(%zu)):(cell(%zu)+cell(%zu)) ",
+                    data, j, y, ci, y, ci);
+        else
+            fprintf(out, " '%s' index %zu using 1:($%zu-$%zu):($%zu+$%zu) ", data, j, y, ci, y,
+                    ci);
+        fputs("with filledcurves fs transparent solid 0.25 noborder ", out);
         if (c->lc > 0)
             fprintf(out, "lc rgb '%s' notitle,", palette(c->lc));
         else
             fprintf(out, "lc %zu notitle,", 1 + j % 8);
     }
-    fprintf(out, " '%s' index %zu using 1:%zu ", data, j, 2 + 2 * p);
+    fprintf(out, gaps ? " '%s' index %zu using 1:(cell(%zu)) " : " '%s' index %zu using 1:%zu ",
+            data, j, y);
     xy_style(out, f, j, titled);
 }
 
@@ -316,6 +362,7 @@ static void xy_grid_panel(FILE *out, const vfy_xy_figure *f, size_t p, size_t k)
  * panel's curves, drawn once across the page below the panels. */
 static void xy_grid(FILE *out, const vfy_xy_figure *f, const char *data)
 {
+    xy_cell(out, f);
     fprintf(out, "set datafile missing ''\nset multiplot title '%s'\n%s%s"
                  "set key off\nset grid\n",
             gp_text(f->title), f->logx ? "set logscale x\n" : "",
@@ -377,6 +424,7 @@ int vfy_write_xy(const vfy_options *o, const vfy_xy_figure *f)
         return finish_script(o, out, tmp, gp);
     }
     /* offsets: a reference line at the data's extreme is not drawn on the border */
+    xy_cell(out, f);
     fprintf(out, "set datafile missing ''\nset multiplot layout %zu,1 title '%s'\n%s%s"
                  "set key outside right top\nset grid\nset offsets 0, 0, graph 0.05, graph 0.05\n",
             f->npanels, gp_text(f->title), f->logx ? "set logscale x\n" : "",
