@@ -4,6 +4,7 @@ set terminal pngcairo size 1000,390 font ',10'
 set termoption noenhanced
 set output 'reports/paper/grw-ex7-levelled.png'
 set datafile separator ','
+cell(k) = strlen(strcol(k)) ? real(strcol(k)) : NaN
 set datafile missing ''
 set multiplot layout 1,1 title 'grw-ex7: ln G(c) = ln f(c) + A c^1.5, A = 1.8257 from the loss-diffusion balance'
 set key outside right top
@@ -11,5 +12,5 @@ set grid
 set offsets 0, 0, graph 0.05, graph 0.05
 set xlabel 'c = |v|/v0'
 set ylabel 'ln G'
-plot 'reports/paper/grw-ex7-levelled-curves.csv' index 0 using 1:2 with lines lw 1.5 dt 1 lc 1 title 'ln G (DSMC)'
+plot 'reports/paper/grw-ex7-levelled-curves.csv' index 0 using 1:(cell(2)) with linespoints pt 7 ps 0.3 lw 1.5 dt 1 lc 1 title 'ln G (DSMC)'
 unset multiplot
