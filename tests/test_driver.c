@@ -1243,6 +1243,36 @@ static void test_xy_gap_breaks_the_line(void **state)
     assert_non_null(strstr(buf, "\n1,1,0\n2,,\n3,3,0\n"));   /* the gap: an empty cell */
 }
 
+/* A work-precision figure names each prediction in its key, each with its
+ * own open marker, below the plot (labels in the plot crossed the series
+ * where they crowd); the predictions are the data file's last block. */
+static void test_work_precision_key(void **state)
+{
+    (void)state;
+    const double cpu[3] = {1.0, 2.0, 4.0}, err[3] = {1e-2, 5e-3, 2e-3},
+                 model[3] = {1e-2, 5e-3, 2.5e-3};
+    const char *const labels[3] = {"n=64", "n=256", "n=1024"};
+    const size_t idx[3] = {0, 1, 2};
+    const vfy_wp_series series = {.title = "jump", .idx = idx, .count = 3};
+    vfy_wp_prediction pred = {.count = 2, .cpu = {0.9, 3.0}, .err = {1e-2, 1e-3},
+                              .label = {strdup("1e-02: n=64"), strdup("1e-03: n=4096")}};
+    vfy_options o = {.size = VFY_QUICK, .out_dir = out_dir, .scene_dir = scene_dir};
+    assert_int_equal(vfy_write_work_precision(&o, "driver-wp", "wp", "comment", "Err", &series,
+                                              1, cpu, err, model, labels, &pred),
+                     0);
+    vfy_wp_prediction_free(&pred);
+    char buf[4096];
+    read_out_file("driver-wp.gp", buf, sizeof buf);
+    assert_non_null(strstr(buf, "set key below center"));
+    assert_non_null(strstr(buf, "index 1 every ::0::0 using 1:2 with points pt 6 ps 2.2 lw 2 "
+                                "lc rgb 'black' title 'predicted cheapest (model), 1e-02: n=64'"));
+    assert_non_null(strstr(buf, "index 1 every ::1::1 using 1:2 with points pt 4 ps 2.2 lw 2 "
+                                "lc rgb 'black' title 'predicted cheapest (model), 1e-03: "
+                                "n=4096'"));
+    read_out_file("driver-wp-points.csv", buf, sizeof buf);
+    assert_non_null(strstr(buf, "(predictions)\n0.9,0.01,0.01,1e-02: n=64\n3,0.001,0.001,"));
+}
+
 /* A grid of xy panels (figure.h, ncolumns): each column draws its own
  * curves under its title, the rows of panels on one y scale each, the key
  * once below the grid from the first panel's curves, with their colours
@@ -1321,6 +1351,7 @@ int main(void)
         cmocka_unit_test(test_row_figures),
         cmocka_unit_test(test_xy_grid),
         cmocka_unit_test(test_xy_gap_breaks_the_line),
+        cmocka_unit_test(test_work_precision_key),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -485,7 +485,8 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
         return -1;
     fprintf(f, "set title '%s'\nset xlabel 'CPU seconds (all threads)'\n"
                "set ylabel '%s'\nset logscale xy\nset format y '%%.0e'\n"
-               "set grid\nset key outside right top\n"
+               /* the key below: its prediction entries are long */
+               "set grid\nset key below center maxcols 2 samplen 3\n"
                /* room for the labels of the points at the edges */
                "set offsets graph 0.04, graph 0.12, graph 0.1, graph 0.04\n"
                "set label 1 'dotted: the model' at graph 0.02, graph 0.04\nplot",
@@ -498,11 +499,14 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
                    "tc rgb '%s' notitle",
                 s ? "," : "", data, s, lc, gp_text(series[s].title), s, lc, s, lc);
     }
-    if (pred->count > 0)
-        fprintf(f, ", '%s' index %zu using 1:2 with points pt 6 ps 2.2 lw 2 lc rgb 'black' "
-                   "title 'predicted cheapest per target (model)', '' index %zu using 1:2:4 "
-                   "with labels offset -1.2,-0.9 font ',7' right tc rgb 'black' notitle",
-                data, nseries, nseries);
+    /* each prediction its open marker and its key entry (labels in the plot
+     * crossed the series where they crowd) */
+    static const int pred_pt[VFY_WP_TARGETS] = {6, 4, 8};
+    for (size_t k = 0; k < pred->count; k++)
+        fprintf(f, ", '%s' index %zu every ::%zu::%zu using 1:2 with points pt %d ps 2.2 lw 2 "
+                   "lc rgb 'black' title 'predicted cheapest (model), %s'",
+                data, nseries, k, k, pred_pt[k % VFY_WP_TARGETS],
+                gp_text(pred->label[k] ? pred->label[k] : ""));
     for (size_t i = 0; i < VFY_WP_TARGETS; i++)
         fprintf(f, ", %g with lines dt 2 lc rgb 'gray50' %s", vfy_wp_targets[i],
                 i ? "notitle" : "title 'targets 1e-2, 1e-3, 1e-4'");

@@ -152,8 +152,8 @@ void vfy_wp_prediction_free(vfy_wp_prediction *pred);
  * Err, Err_model, label (labels[i] of point i); then the predictions) and
  * out_dir/<name>.gp: Err against CPU seconds, log-log, each series with its
  * model dotted, the targets as grey lines, the predicted cheapest points as
- * open circles labelled below left, the axes extended to leave room for the
- * labels at the edges; rendered to <name>.png when gnuplot is installed.  Both files start with
+ * open markers (a circle, a square, a triangle) each named in the key, the
+ * axes extended to leave room for the points' labels at the edges; rendered to <name>.png when gnuplot is installed.  Both files start with
  * the comment lines (the provenance).  Returns 0 or -1. */
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
                              const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
