@@ -153,8 +153,9 @@ void vfy_wp_prediction_free(vfy_wp_prediction *pred);
  * out_dir/<name>.gp: Err against CPU seconds, log-log, each series with its
  * model dotted, the targets as grey lines, the predicted cheapest points as
  * open markers (a circle, a square, a triangle) each named in the key, the
- * axes extended to leave room for the points' labels at the edges; rendered to <name>.png when gnuplot is installed.  Both files start with
- * the comment lines (the provenance).  Returns 0 or -1. */
+ * axes extended to leave room for the points' labels at the edges; rendered
+ * to <name>.png when gnuplot is installed.  Both files start with the
+ * comment lines (the provenance).  Returns 0 or -1. */
 int vfy_write_work_precision(const vfy_options *o, const char *name, const char *title,
                              const char *comment, const char *ylabel, const vfy_wp_series *series, size_t nseries,
                              const double *cpu, const double *err, const double *model,
