@@ -315,6 +315,7 @@ static void test_bad_input_names_file_line_and_key(void **state)
     refused(12, "derived = no.key=Emax", "t.case: [case] derived: 'no.key=Emax'");
     /* The empty name: found by fuzz_case, it read past the registry's names. */
     refused(12, "derived = scene.t_end=", "t.case: [case] derived: 'scene.t_end='");
+    refused(12, "derived = scene.t_end=Emax:g", "t.case: [case] derived: 'scene.t_end=Emax:g'");
     char long_line[260];
     memset(long_line, 'x', sizeof long_line - 1);
     long_line[sizeof long_line - 1] = '\0';

@@ -30,8 +30,6 @@
 #include <string.h>
 
 #include "figure.h"
-#include "references.h"
-#include "scene_ini.h"
 #include "text.h"
 
 #define MAX_FILE_BYTES (1u << 20)
@@ -937,36 +935,6 @@ static int finish_sweep(parse_ctx *c, vfy_sweep *sweep, const sweep_builder *b)
     return keys != NULL;
 }
 
-/* Whether each word of [case] derived is KEY=NAME[:FORMAT], KEY a scene key
- * and NAME a value reference or a [metric] of the file (driver.h); else a
- * message: a name that is neither would set nothing. */
-static int derived_ok(parse_ctx *c, const char *words)
-{
-    for (const char *w = words + strspn(words, " "); *w; w += strspn(w, " ")) {
-        const size_t len = strcspn(w, " ");
-        char word[200];
-        snprintf(word, sizeof word, "%.*s", (int)len, w);
-        char *eq = strchr(word, '='), *colon = eq ? strchr(eq, ':') : NULL;
-        if (colon != NULL)
-            *colon = '\0';
-        int known = 0;
-        if (eq != NULL) {
-            *eq = '\0';
-            const vfy_reference *ref = vfy_reference_find(eq + 1);
-            known = ref != NULL && ref->kind == VFY_REF_VALUE;
-            for (size_t i = 0; i < c->metrics.n && !known; i++)
-                known = strcmp(((const vfy_metric *)c->metrics.v[i])->name, eq + 1) == 0;
-        }
-        if (eq == NULL || vfy_scene_key_class(word) == VFY_KEY_UNKNOWN || !known
-            || (colon != NULL && colon[1] != '%'))
-            return fail(c, SIM_EINVAL, NULL, "[case] derived: '%.*s' (allowed "
-                        "KEY=NAME[:FORMAT], NAME a value reference or a [metric] of the file)",
-                        (int)len, w);
-        w += len;
-    }
-    return 1;
-}
-
 /* Whether figure g's keys go together (case_file.h); else a message. */
 static int figure_ok(parse_ctx *c, const vfy_figure_spec *g)
 {
@@ -1031,8 +999,6 @@ static int finish(parse_ctx *c)
     at_origin(c, -1);
     if (f->c.suite == NULL || f->c.summary == NULL)
         return fail(c, SIM_EINVAL, NULL, "[case] needs suite and summary");
-    if (f->d.derived != NULL && !derived_ok(c, f->d.derived))
-        return 0;
     for (size_t i = 0; i < c->metrics.n + c->case_metrics.n; i++) {
         const int own_rows = i < c->metrics.n;
         const vfy_metric *m = own_rows ? c->metrics.v[i] : c->case_metrics.v[i - c->metrics.n];
@@ -1066,6 +1032,13 @@ static int finish(parse_ctx *c)
     d->case_checks = records(c, &c->case_checks, sizeof *d->case_checks);
     d->figures = records(c, &c->figures, sizeof *d->figures);
     d->paper_columns = records(c, &c->paper_columns, sizeof *d->paper_columns);
+    const char *bad;
+    size_t badlen;
+    if (!c->failed && !vfy_derived_check(d, &bad, &badlen)) {   /* a name that sets nothing */
+        at_origin(c, -1);
+        return fail(c, SIM_EINVAL, NULL, "[case] derived: '%.*s' (allowed KEY=NAME[:FORMAT], "
+                    "NAME a value reference or a [metric] of the file)", (int)badlen, bad);
+    }
     return !c->failed && finish_sweep(c, &d->paper_rows, &c->paper_rows)
            && finish_sweep(c, &d->quick_rows, &c->quick_rows);
 }

@@ -885,14 +885,62 @@ static sim_status observe_only(const char *names, sim_scene *solver, char *msg, 
     return SIM_OK;
 }
 
+/* The row metric of d named `name`, or NULL. */
+static const vfy_metric *derived_metric(const vfy_case_desc *d, const char *name)
+{
+    for (const vfy_metric *m = d->metrics; m != NULL && m->name != NULL; m++)
+        if (strcmp(m->name, name) == 0)
+            return m;
+    return NULL;
+}
+
 /* A derived setting's value (vfy_case_desc.derived): the row metric named
  * `name`, before the run, else the value reference at the row's scene. */
 static double derived_value(const vfy_case_run *run, const vfy_row *row, const char *name)
 {
-    for (const vfy_metric *m = run->d->metrics; m != NULL && m->name != NULL; m++)
-        if (strcmp(m->name, name) == 0)
-            return m->fn(run, row, m);
-    return vfy_reference_value(name, &row->scene);
+    const vfy_metric *m = derived_metric(run->d, name);
+    return m != NULL ? m->fn(run, row, m) : vfy_reference_value(name, &row->scene);
+}
+
+/* One word of vfy_case_desc.derived, "KEY=NAME[:FORMAT]", copied into word:
+ * split in place into the key (word itself), *name and *format (NULL
+ * without one); 0, or -1 when it has no '=' or a format that is not
+ * printf's. */
+static int derived_split(char *word, char **name, char **format)
+{
+    char *eq = strchr(word, '=');
+    if (eq == NULL)
+        return -1;
+    *eq = '\0';
+    *name = eq + 1;
+    char *colon = strchr(*name, ':');
+    *format = colon != NULL ? colon + 1 : NULL;
+    if (colon != NULL)
+        *colon = '\0';
+    return colon != NULL && colon[1] != '%' ? -1 : 0;
+}
+
+int vfy_derived_check(const vfy_case_desc *d, const char **bad, size_t *badlen)
+{
+    const char *words = d->derived != NULL ? d->derived : "";
+    for (const char *w = words + strspn(words, " "); *w; w += strspn(w, " ")) {
+        const size_t len = strcspn(w, " ");
+        char word[200], *name, *format;
+        snprintf(word, sizeof word, "%.*s", (int)len, w);
+        const vfy_reference *ref = NULL;
+        const int ok = len < sizeof word && derived_split(word, &name, &format) == 0
+                       && vfy_scene_key_class(word) != VFY_KEY_UNKNOWN
+                       && (derived_metric(d, name) != NULL
+                           || ((ref = vfy_reference_find(name)) != NULL
+                               && ref->kind == VFY_REF_VALUE));
+        if (!ok) {
+            *bad = w;
+            *badlen = len;
+            return 0;
+        }
+        w += len;
+    }
+    return 1;
 }
 
 /* The description's settings derived from value references or metrics
@@ -904,18 +952,14 @@ static int referenced_sets(const vfy_case_run *run, const char *words, const vfy
     int rc = 0;
     for (const char *p = words + strspn(words, " "); *p && rc == 0; p += strspn(p, " ")) {
         const size_t len = strcspn(p, " ");
-        char *word = vfy_aprintf("%.*s", (int)len, p);
-        char *eq = word ? strchr(word, '=') : NULL, *colon = eq ? strchr(eq, ':') : NULL;
+        char *word = vfy_aprintf("%.*s", (int)len, p), *name, *format;
         if (word == NULL)
             rc = -1;
-        else if (eq != NULL) {   /* a description without '=' is caught by its test */
-            *eq = '\0';
-            if (colon != NULL)
-                *colon = '\0';
-            const double v = derived_value(run, row, eq + 1);
+        else if (derived_split(word, &name, &format) == 0) {   /* else refused at load */
+            const double v = derived_value(run, row, name);
             if (!isnan(v)) {
                 char value[64];
-                snprintf(value, sizeof value, colon ? colon + 1 : "%.17g", v);
+                snprintf(value, sizeof value, format ? format : "%.17g", v);
                 rc = vfy_text_printf(out, "%s=%s;", word, value);
             }
         }

@@ -525,6 +525,12 @@ size_t vfy_variant_count(const vfy_case_desc *d);
  * buf, "bK: $batch=K-1"), or NULL for a case without variants. */
 const char *vfy_variant_text(const vfy_case_desc *d, size_t k, char *buf, size_t len);
 
+/* Whether every word of d->derived is KEY=NAME[:FORMAT]: KEY a scene key,
+ * NAME a row metric of d or a value reference (references.h), FORMAT a
+ * printf one; else 0, with the first word that is not at *bad (*badlen
+ * characters). The case file loader refuses a description this fails. */
+int vfy_derived_check(const vfy_case_desc *d, const char **bad, size_t *badlen);
+
 /* Run a case: fill the report; SIM_OK when it ran (whatever the verdicts),
  * or an error with msg (a bad scene, I/O) when it could not. */
 sim_status vfy_run_described(const vfy_case *c, const vfy_options *o, vfy_report *r, char *msg,

@@ -505,7 +505,7 @@ int vfy_write_work_precision(const vfy_options *o, const char *name, const char 
     for (size_t k = 0; k < pred->count; k++)
         fprintf(f, ", '%s' index %zu every ::%zu::%zu using 1:2 with points pt %d ps 2.2 lw 2 "
                    "lc rgb 'black' title 'predicted cheapest (model), %s'",
-                data, nseries, k, k, pred_pt[k % VFY_WP_TARGETS],
+                data, nseries, k, k, pred_pt[k],
                 gp_text(pred->label[k] ? pred->label[k] : ""));
     for (size_t i = 0; i < VFY_WP_TARGETS; i++)
         fprintf(f, ", %g with lines dt 2 lc rgb 'gray50' %s", vfy_wp_targets[i],
